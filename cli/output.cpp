@@ -1,0 +1,65 @@
+#include "cli/output.hpp"
+
+#include "cli/usage_error.hpp"
+#include "theory/decimal_enclosure.hpp"
+#include "theory/precision.hpp"
+
+#include <cstdio>
+
+namespace anisocert::cli {
+
+mpfr_prec_t OutputOptions::precision() const { return theory::working_precision(digits); }
+
+void add_output_options(CLI::App& command, OutputOptions& options) {
+  options.digits = theory::default_digits;
+  command.add_flag("--json", options.json, "Machine-readable JSON on standard output");
+  command.add_option("--digits", options.digits, "Significant decimal digits of each interval endpoint")
+      ->check(CLI::Range(10, 10000))
+      ->capture_default_str();
+}
+
+Rational parse_option(const std::string& name, const std::string& text) {
+  try {
+    return parse_rational(text);
+  } catch (const NumberSyntaxError& e) {
+    throw UsageError(name + ": " + e.what());
+  }
+}
+
+Json enclosure_json(const theory::Interval& x, int digits) {
+  theory::DecimalEnclosure d = theory::to_decimal(x, digits);
+  return Json{{"lo", d.lo}, {"hi", d.hi}};
+}
+
+Json enclosure_json(const std::optional<theory::Interval>& x, int digits) {
+  return x ? enclosure_json(*x, digits) : Json(nullptr);
+}
+
+std::string enclosure_text(const theory::Interval& x, int digits, std::size_t width) {
+  std::string s = theory::certified_digits(theory::to_decimal(x, digits));
+  // Count code points, not bytes: the ellipsis is three bytes.
+  if (s.size() > width) {
+    if (s.ends_with("…")) s.erase(s.size() - 3);
+    s = s.substr(0, width - 1) + "…";
+  }
+  return s;
+}
+
+ConditionReport report_conditions(const std::vector<Condition>& conditions) {
+  ConditionReport r;
+  for (const Condition& c : conditions) {
+    r.conditions[c.key] = c.holds;
+    if (!c.holds) r.failing.push_back(c.key);
+    r.text += "    " + c.statement + ": " + (c.holds ? "holds" : "FAILS") + "\n";
+  }
+  return r;
+}
+
+void emit(const std::string& text) {
+  std::fwrite(text.data(), 1, text.size(), stdout);
+  std::fflush(stdout);
+}
+
+std::string render(const Json& j) { return j.dump(2) + "\n"; }
+
+}  // namespace anisocert::cli

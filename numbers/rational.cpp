@@ -1,0 +1,113 @@
+#include "numbers/rational.hpp"
+
+#include <cctype>
+
+namespace anisocert {
+namespace {
+
+bool all_digits(std::string_view s) {
+  for (char c : s)
+    if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+  return true;
+}
+
+// Base-10 digits only: boost's string constructor would read a leading 0 as octal.
+Integer decimal_integer(const std::string& digits) {
+  Integer z;
+  mpz_set_str(z.backend().data(), digits.c_str(), 10);
+  return z;
+}
+
+[[noreturn]] void reject(std::string_view text, const std::string& why) {
+  throw NumberSyntaxError("\"" + std::string(text) + "\" is not an exact number: " + why);
+}
+
+Integer parse_integer(std::string_view whole, std::string_view digits_with_sign) {
+  std::string_view d = digits_with_sign;
+  bool negative = false;
+  if (!d.empty() && (d.front() == '+' || d.front() == '-')) {
+    negative = d.front() == '-';
+    d.remove_prefix(1);
+  }
+  if (d.empty() || !all_digits(d)) reject(whole, "expected an integer, got \"" + std::string(digits_with_sign) + "\"");
+  Integer z = decimal_integer(std::string(d));
+  return negative ? Integer(-z) : z;
+}
+
+Integer power_of_ten(long e) {
+  Integer p = 1;
+  Integer base = 10;
+  for (unsigned long k = static_cast<unsigned long>(e); k != 0; k >>= 1) {
+    if (k & 1) p *= base;
+    base *= base;
+  }
+  return p;
+}
+
+Rational parse_decimal(std::string_view text) {
+  std::string_view s = text;
+  bool negative = false;
+  if (!s.empty() && (s.front() == '+' || s.front() == '-')) {
+    negative = s.front() == '-';
+    s.remove_prefix(1);
+  }
+  long exponent = 0;
+  if (auto e = s.find_first_of("eE"); e != std::string_view::npos) {
+    std::string_view exp_text = s.substr(e + 1);
+    s = s.substr(0, e);
+    std::string_view exp_digits = exp_text;
+    if (!exp_digits.empty() && (exp_digits.front() == '+' || exp_digits.front() == '-')) exp_digits.remove_prefix(1);
+    if (exp_digits.empty() || !all_digits(exp_digits)) reject(text, "malformed exponent");
+    if (exp_digits.size() > 6) reject(text, "exponent too large");
+    exponent = std::stol(std::string(exp_text));
+  }
+  std::string_view int_part = s, frac_part;
+  if (auto dot = s.find('.'); dot != std::string_view::npos) {
+    int_part = s.substr(0, dot);
+    frac_part = s.substr(dot + 1);
+  }
+  if (int_part.empty() && frac_part.empty()) reject(text, "no digits");
+  if (!all_digits(int_part) || !all_digits(frac_part)) reject(text, "unexpected character");
+  exponent -= static_cast<long>(frac_part.size());
+  if (exponent > max_decimal_exponent || exponent < -max_decimal_exponent)
+    reject(text, "decimal exponent outside +-" + std::to_string(max_decimal_exponent));
+  std::string digits = std::string(int_part) + std::string(frac_part);
+  Integer mantissa = decimal_integer(digits.empty() ? std::string("0") : digits);
+  if (negative) mantissa = -mantissa;
+  if (exponent >= 0) return Rational(mantissa * power_of_ten(exponent));
+  return Rational(mantissa, power_of_ten(-exponent));
+}
+
+}  // namespace
+
+Rational parse_rational(std::string_view text) {
+  if (text.empty()) reject(text, "empty");
+  if (auto slash = text.find('/'); slash != std::string_view::npos) {
+    Integer num = parse_integer(text, text.substr(0, slash));
+    Integer den = parse_integer(text, text.substr(slash + 1));
+    if (den == 0) reject(text, "zero denominator");
+    return Rational(num, den);
+  }
+  return parse_decimal(text);
+}
+
+std::string to_exact_string(const Rational& q) {
+  Integer num = boost::multiprecision::numerator(q);
+  Integer den = boost::multiprecision::denominator(q);
+  // den = 2^a 5^b  <=>  q has a terminating decimal expansion with max(a, b) digits.
+  Integer rest = den;
+  unsigned twos = 0, fives = 0;
+  while (rest % 2 == 0) { rest /= 2; ++twos; }
+  while (rest % 5 == 0) { rest /= 5; ++fives; }
+  if (rest != 1) return num.str() + "/" + den.str();
+  unsigned digits = std::max(twos, fives);
+  Integer scaled = abs(num) * power_of_ten(digits) / den;  // exact: den divides 10^digits
+  std::string s = scaled.str();
+  if (digits > 0) {
+    if (s.size() <= digits) s.insert(0, digits + 1 - s.size(), '0');
+    s.insert(s.size() - digits, ".");
+  }
+  return (num < 0 ? "-" : "") + s;
+}
+
+}  // namespace anisocert

@@ -1,0 +1,34 @@
+#pragma once
+// The one exact rational type of the project and its exact text forms
+// (DESIGN.md § Numbers and exactness: "Decimal strings and fractions are parsed exactly").
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace anisocert {
+
+using Rational = boost::multiprecision::mpq_rational;
+using Integer = boost::multiprecision::mpz_int;
+
+// Thrown by parse_rational; what() names the offending text and what is wrong with it.
+struct NumberSyntaxError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// Parses, exactly, one of
+//   integer   "-12", "+7"
+//   decimal   "12.5", ".5", "3.", optionally with an exponent "1.25e-3", "4E2"
+//   fraction  "-7/3" (integer numerator and a non-zero integer denominator)
+// No surrounding blanks, no "inf"/"nan", no hexadecimal. Decimal exponents are limited to
+// |e| <= max_decimal_exponent so that a hostile "1e999999999" cannot exhaust memory.
+Rational parse_rational(std::string_view text);
+inline constexpr long max_decimal_exponent = 100000;
+
+// The canonical exact text of q: a terminating decimal when the reduced denominator is
+// 2^a 5^b ("12.5", "-3", "0.001"), otherwise the reduced fraction "p/q".
+std::string to_exact_string(const Rational& q);
+
+}  // namespace anisocert

@@ -1,0 +1,46 @@
+// BWY §4 conditions at hand-checked rational points, including exact boundaries.
+
+#include "theory/bwy_section4.hpp"
+
+#include <gtest/gtest.h>
+
+using anisocert::parse_rational;
+using anisocert::Rational;
+using namespace anisocert::theory;
+
+TEST(BWY_S42, IsotropicCaseSatisfiesEverything) {
+  // G = 1: every (G² − 1) factor vanishes; G⁴(G²+1) = 2 <= B² = 9/4.
+  BwyConditions c = bwy_s42_conditions(Rational(3, 2), Rational(1));
+  EXPECT_TRUE(c.all());
+  BwyInterdistanceFactors f = bwy_s42_factors(Rational(3, 2), Rational(1), 200);
+  EXPECT_FALSE(f.violator.has_value());  // d_min / 0: no bound from that term
+  EXPECT_TRUE(f.lfs.contains(Rational(1)));
+  // B / (G² √(G²+1)) = (3/2)/√2; its square is 9/8.
+  EXPECT_TRUE(sqr(f.shape).contains(Rational(9, 8)));
+}
+
+TEST(BWY_S42, ShapeConditionFailsBelowSqrt2) {
+  // G = 1, B = 1.4: G⁴(G²+1) = 2 > 1.96.
+  BwyConditions c = bwy_s42_conditions(parse_rational("1.4"), Rational(1));
+  EXPECT_FALSE(c.shape_factor);
+  EXPECT_TRUE(c.lemma2 && c.violator_factor && c.angle_bound);
+}
+
+TEST(BWY_S42, AngleConditionIsStrictAtItsExactBoundary) {
+  // (G² − 1) B² = (25/16 − 1)(16/9) = 1 exactly for B = 4/3, G = 5/4.
+  EXPECT_FALSE(bwy_s42_conditions(Rational(4, 3), Rational(5, 4)).angle_bound);
+  EXPECT_TRUE(bwy_s42_conditions(Rational(4, 3) - Rational(1, 1000000000), Rational(5, 4)).angle_bound);
+}
+
+TEST(BWY_S42, Lemma2FailsForVisibleDistortion) {
+  // G = 1.1, B = 1.5: (0.21)(4.41)(29.16)(5.0625) ≈ 136.7 > 1.
+  EXPECT_FALSE(bwy_s42_conditions(parse_rational("1.5"), parse_rational("1.1")).lemma2);
+  // G = 1.0009, B = 1.5: (0.00180081)(4.00360081)(25.03601296)(5.0625) ≈ 0.914 <= 1.
+  EXPECT_TRUE(bwy_s42_conditions(parse_rational("1.5"), parse_rational("1.0009")).all());
+}
+
+TEST(BWY_L2, GammaMaxNeedsBAboveOne) {
+  EXPECT_THROW(bwy_lemma2_gamma_max(Rational(1), 128), std::invalid_argument);
+  EXPECT_THROW(bwy_s42_conditions(Rational(1), Rational(1)), std::invalid_argument);
+  EXPECT_THROW(bwy_s42_conditions(Rational(2), Rational(99, 100)), std::invalid_argument);
+}

@@ -1,0 +1,96 @@
+// LS Theorem 11 against closed forms and against the digits printed in the paper.
+
+#include "theory/decimal_enclosure.hpp"
+#include "theory/ls_theorem11.hpp"
+
+#include <gtest/gtest.h>
+
+using anisocert::parse_rational;
+using anisocert::Rational;
+using namespace anisocert::theory;
+
+namespace {
+const mpfr_prec_t prec = 256;
+
+Rational ten_to_minus(int k) { return Rational(1, boost::multiprecision::pow(anisocert::Integer{10}, k)); }
+
+bool overlap(const Interval& a, const Interval& b) { return !certainly_less(a, b) && !certainly_less(b, a); }
+
+// Both enclose the same number to at least `digits` significant digits.
+void expect_same_value(const Interval& a, const Interval& b, int digits) {
+  EXPECT_TRUE(overlap(a, b));
+  EXPECT_GE(common_significant_digits(to_decimal(a, digits + 5)), digits);
+  EXPECT_GE(common_significant_digits(to_decimal(b, digits + 5)), digits);
+}
+
+Interval golden_ratio() { return (1 + sqrt(Interval(Rational(5), prec))) / 2; }
+}  // namespace
+
+TEST(LS_T11, GammaAtZeroIsFourthRootOfGoldenRatio) {
+  // θ = 0: γ⁸ − γ⁴ − 1 = 0, so γ⁴ = φ = (1 + √5)/2 (closed form).
+  Interval gamma = ls_t11_gamma(Rational(0), prec);
+  expect_same_value(gamma, sqrt(sqrt(golden_ratio())), 60);
+  // Second engine: Python's decimal module at 60 digits, (((1+5**.5)/2)**.5)**.5.
+  Rational python = parse_rational("1.12783848556168226026483548317704245843646833542365576729005");
+  EXPECT_TRUE(gamma.inside(python - ten_to_minus(57), python + ten_to_minus(57)));
+}
+
+TEST(LS_T11, AgreesWithTheDigitsPrintedInThePaper) {
+  // LS §10: "If θbound = 0°, γ ≐ 1.1278 ... If θbound = 10°, γ ≐ 1.0629", "about 20.7°",
+  // "This angle is less than 79°".
+  EXPECT_TRUE(ls_t11_gamma(Rational(0), prec).inside(parse_rational("1.12775"), parse_rational("1.12785")));
+  EXPECT_TRUE(ls_t11_gamma(Rational(10), prec).inside(parse_rational("1.06285"), parse_rational("1.06295")));
+  EXPECT_TRUE(ls_t11_theta_max_deg(prec).inside(parse_rational("20.65"), parse_rational("20.75")));
+  Interval angle0 = ls_t11_segment_angle_deg(ls_t11_gamma(Rational(0), prec));
+  EXPECT_TRUE(angle0.inside(Rational(78), Rational(79)));
+}
+
+TEST(LS_T11, ThetaMaxIsArctanOfOneOverSqrt7) {
+  // sin²θ = 1/8 ⇔ tan θ = (1/√8)/√(7/8) = 1/√7 (closed form, a different function of MPFI).
+  Interval by_atan = degrees(atan(1 / sqrt(Interval(Rational(7), prec))));
+  expect_same_value(ls_t11_theta_max_deg(prec), by_atan, 60);
+}
+
+TEST(LS_T11, SegmentAngleAtZeroIsArccosOfOneMinusHalfPhi) {
+  // cos(2x) = 1 − 2 sin²x with sin x = γ²/2 and γ⁴ = φ gives 2·arcsin(γ²/2) = arccos(1 − φ/2).
+  Interval closed = degrees(acos(1 - golden_ratio() / 2));
+  expect_same_value(ls_t11_segment_angle_deg(ls_t11_gamma(Rational(0), prec)), closed, 60);
+}
+
+TEST(LS_T11, DistanceFactorAtZeroFromGoldenRatio) {
+  // γ² = √φ: 1/((γ⁵+γ³)√(γ²+1)) = 1/(γ³ (γ²+1)^(3/2)) with γ³ = φ^(3/4).
+  Interval g2 = sqrt(golden_ratio());
+  Interval closed = 1 / (g2 * sqrt(g2) * (g2 + 1) * sqrt(g2 + 1));
+  expect_same_value(ls_t11_distance_factor(ls_t11_gamma(Rational(0), prec)), closed, 60);
+}
+
+TEST(LS_T11, AdmissibilityIsDecidedExactlyEvenAtHundredsOfDigits) {
+  EXPECT_TRUE(ls_t11_theta_admissible(Rational(0)));
+  EXPECT_FALSE(ls_t11_theta_admissible(-ten_to_minus(30)));
+  EXPECT_TRUE(ls_t11_theta_admissible(parse_rational("20.7")));
+  EXPECT_FALSE(ls_t11_theta_admissible(parse_rational("20.705")));
+  EXPECT_FALSE(ls_t11_theta_admissible(Rational(90)));
+  // θ_max rounded down / up to 300 digits: needs ~1000 bits, beyond the first try of 128.
+  DecimalEnclosure d = to_decimal(ls_t11_theta_max_deg(1200), 300);
+  EXPECT_TRUE(ls_t11_theta_admissible(parse_rational(d.lo)));
+  EXPECT_FALSE(ls_t11_theta_admissible(parse_rational(d.hi)));
+}
+
+TEST(LS_T11, GammaNearThetaMaxIsCertifiedAboveOne) {
+  DecimalEnclosure d = to_decimal(ls_t11_theta_max_deg(1200), 300);
+  Rational theta = parse_rational(d.lo);
+  Interval gamma = ls_t11_gamma(theta, prec);
+  EXPECT_TRUE(mpfr_cmp_ui(gamma.lower(), 1) > 0);
+  DecimalEnclosure g = to_decimal(gamma, 40);
+  EXPECT_TRUE(ls_t11_gamma_bracket_verified(theta, parse_rational(g.lo), parse_rational(g.hi), gamma.precision()));
+}
+
+TEST(LS_T11, BracketCheckRejectsWrongBrackets) {
+  Interval gamma = ls_t11_gamma(Rational(10), prec);
+  DecimalEnclosure g = to_decimal(gamma, 40);
+  Rational lo = parse_rational(g.lo), hi = parse_rational(g.hi);
+  EXPECT_TRUE(ls_t11_gamma_bracket_verified(Rational(10), lo, hi, prec));
+  EXPECT_FALSE(ls_t11_gamma_bracket_verified(Rational(10), hi, lo, prec));               // reversed
+  EXPECT_FALSE(ls_t11_gamma_bracket_verified(Rational(11), lo, hi, prec));               // another θ
+  EXPECT_FALSE(ls_t11_gamma_bracket_verified(Rational(10), Rational(6, 5), Rational(13, 10), prec));
+}
