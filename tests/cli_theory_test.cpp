@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -19,7 +20,8 @@ struct Outcome {
 };
 
 Outcome run(const std::string& args) {
-  const std::string err_file = ::testing::TempDir() + "anisocert_stderr.txt";
+  // One file per process: CTest runs the tests of this file in parallel processes.
+  const std::string err_file = ::testing::TempDir() + "anisocert_stderr_" + std::to_string(getpid()) + ".txt";
   const std::string command = std::string(ANISOCERT_BIN) + " " + args + " 2>" + err_file;
   FILE* pipe = popen(command.c_str(), "r");
   Outcome r{-1, "", ""};
