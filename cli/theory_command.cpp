@@ -95,8 +95,8 @@ void add_theory_command(CLI::App& app, int& exit_code) {
       "theory",
       "Certified constants of the papers. Without a subcommand: LS Theorem 11 (γ(θ_bound), the angle between\n"
       "adjoining segments, the minimal-distance factor, θ_bound's upper limit) and the LS Lemma factors at γ.");
-  theory->add_option("--theta", options->thetas,
-                     "θ_bound in degrees, an exact decimal or fraction (repeatable); default 0 5 10 15 20");
+  CLI::Option* theta = theory->add_option(
+      "--theta", options->thetas, "θ_bound in degrees, an exact decimal or fraction (repeatable); default 0 5 10 15 20");
   add_output_options(*theory, options->output);
   theory->callback([theory, options, &exit_code] {
     if (!theory->get_subcommands().empty()) return;  // a subcommand ran
@@ -117,6 +117,7 @@ void add_theory_command(CLI::App& app, int& exit_code) {
   add_theory_chi_command(*theory, exit_code);
   add_theory_bwy_command(*theory, exit_code);
   add_theory_lu_command(*theory, exit_code);
+  for (CLI::App* sub : theory->get_subcommands(std::function<bool(CLI::App*)>{})) sub->excludes(theta);  // table only
 }
 
 }  // namespace anisocert::cli

@@ -34,6 +34,7 @@ RC_GTEST_PROP(BWY_L2, GammaMaxSeparatesTheExactDecision, ()) {
   const DecimalEnclosure d = to_decimal(bwy_lemma2_gamma_max(B, prec), 60);
   const Rational lo = parse_rational(d.lo), hi = parse_rational(d.hi);
   RC_ASSERT(lo > 1);
+  RC_ASSERT(bwy_lemma2_gamma_max_bracket_verified(B, lo, hi));
   RC_ASSERT(bwy_lemma2_lhs(lo, B) <= 1);
   RC_ASSERT(bwy_lemma2_lhs(Rational(hi + ten_to_minus(70)), B) > 1);
   RC_ASSERT(bwy_s42_conditions(B, lo).lemma2);

@@ -111,6 +111,7 @@ TEST(Cli, BadArgumentsGiveOneLineAndExitTwo) {
   expect_bad_input("theory bwy --B 1", "--B");
   expect_bad_input("theory bwy --B 2 --G 0.5", "--G");
   expect_bad_input("theory lu --rho0 3 --gamma0 1 --delta 0.1 --beta 3", "gamma0");
+  expect_bad_input("theory --theta 5 chi --beta 1 --gamma 1", "--theta");
 }
 
 TEST(Cli, HelpEverywhere) {

@@ -14,6 +14,10 @@ Interval bwy_lemma2_gamma_max(const Rational& B, mpfr_prec_t prec) {
                              prec);
 }
 
+bool bwy_lemma2_gamma_max_bracket_verified(const Rational& B, const Rational& lo, const Rational& hi) {
+  return 1 <= lo && lo <= hi && bwy_lemma2_lhs(lo, B) <= 1 && bwy_lemma2_lhs(hi, B) >= 1;
+}
+
 BwyConditions bwy_s42_conditions(const Rational& B, const Rational& G) {
   if (!(B > 1) || !(G >= 1)) throw std::invalid_argument("BWY §4 needs B > 1 and G >= 1");
   const Rational G2 = G * G, G4 = G2 * G2;

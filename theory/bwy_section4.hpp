@@ -21,6 +21,10 @@ T bwy_lemma2_lhs(const T& gamma, const T& B) {
 // γ = 1), −1 at γ = 1 after subtracting 1 and positive at γ = 2, so the root is unique.
 Interval bwy_lemma2_gamma_max(const Rational& B, mpfr_prec_t prec);
 
+// The check a reader can repeat on printed rationals lo <= hi, exactly: the condition holds at
+// lo and its lhs is >= 1 at hi, so γ_max ∈ [lo, hi] (the lhs is increasing for γ >= 1).
+bool bwy_lemma2_gamma_max_bracket_verified(const Rational& B, const Rational& lo, const Rational& hi);
+
 // The certified decision for given rationals B > 1, G >= 1 (each exact).
 struct BwyConditions {
   bool lemma2;            // (G² − 1)(1 + G)²(1 + 4G)² B⁴ <= 1          (Lemma 2, §4.2)
