@@ -14,7 +14,7 @@ void add_output_options(CLI::App& command, OutputOptions& options) {
   options.digits = theory::default_digits;
   command.add_flag("--json", options.json, "Machine-readable JSON on standard output");
   command.add_option("--digits", options.digits, "Significant decimal digits of each interval endpoint")
-      ->check(CLI::Range(10, 10000))
+      ->check(CLI::Range(10, 2000))
       ->capture_default_str();
 }
 
