@@ -4,6 +4,7 @@
 #include "theory/decimal_enclosure.hpp"
 #include "theory/precision.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace anisocert::cli {
@@ -37,12 +38,13 @@ Json enclosure_json(const std::optional<theory::Interval>& x, int digits) {
 
 std::string enclosure_text(const theory::Interval& x, int digits, std::size_t width) {
   std::string s = theory::certified_digits(theory::to_decimal(x, digits));
-  // Count code points, not bytes: the ellipsis is three bytes.
-  if (s.size() > width) {
-    if (s.ends_with("…")) s.erase(s.size() - 3);
-    s = s.substr(0, width - 1) + "…";
-  }
-  return s;
+  const bool truncated = s.ends_with("…");
+  if (truncated) s.erase(s.size() - std::string("…").size());
+  // Shorten to `width` characters (all ASCII now), never into the integer part.
+  const std::size_t dot = s.find('.');
+  const std::size_t keep = std::max(width - 1, dot == std::string::npos ? s.size() : dot);
+  if (s.size() > keep) return s.substr(0, keep) + "…";
+  return truncated ? s + "…" : s;
 }
 
 ConditionReport report_conditions(const std::vector<Condition>& conditions) {

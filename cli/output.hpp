@@ -31,7 +31,8 @@ Rational parse_option(const std::string& name, const std::string& text);
 Json enclosure_json(const theory::Interval& x, int digits);
 Json enclosure_json(const std::optional<theory::Interval>& x, int digits);  // null when absent
 
-// The certified leading digits of x for tables, at most `width` characters.
+// The certified leading digits of x for tables: at most `width` characters after which a
+// trailing … marks truncation, but never cut inside the integer part.
 std::string enclosure_text(const theory::Interval& x, int digits, std::size_t width = 24);
 
 // One decided condition of a theorem: its JSON key, its statement, and whether it holds.

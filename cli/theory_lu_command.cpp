@@ -32,16 +32,18 @@ int run_lu(const LuOptions& o) {
       {"lemma43", "Lemma 4.3: (1−δ)³ρ₀ > 2γ₀³", c.lemma43},
       {"lemma44", "Lemma 4.4: (1−δ)³β > 2γ₀³", c.lemma44},
   });
-  const std::string not_checked =
+  const std::vector<std::string> not_checked = {
       "K(rho0, beta) max(f(gamma0), g(gamma0), h(gamma0)) beta^2 < (4/3) pi delta^2: the paper gives no closed "
-      "form for K, f, g, h";
+      "form for K, f, g, h",
+      "the angle at each boundary edge, for the metric of any point of it, is > 90 degrees: a property of the "
+      "domain and the metric field"};
   std::ostringstream text;
   text << "LU Theorem 4.5 (locally uniform anisotropic meshing) for ρ₀ = " << to_exact_string(p.rho0)
        << ", γ₀ = " << to_exact_string(p.gamma0) << ", δ = " << to_exact_string(p.delta)
        << ", β = " << to_exact_string(p.beta) << " (decided exactly):\n"
        << r.text;
-  text << "  not checked: " << not_checked << "\n"
-       << "  verdict: " << (c.all() ? "all decidable conditions hold" : "some condition fails") << "\n";
+  for (const std::string& n : not_checked) text << "  not checked: " << n << "\n";
+  text << "  verdict: " << (c.all() ? "all decidable conditions hold" : "some condition fails") << "\n";
   Json j{{"rho0", to_exact_string(p.rho0)},
          {"gamma0", to_exact_string(p.gamma0)},
          {"delta", to_exact_string(p.delta)},
@@ -49,7 +51,7 @@ int run_lu(const LuOptions& o) {
          {"LU_T45_conditions", r.conditions},
          {"holds", c.all()},
          {"failing", r.failing},
-         {"not_checked", Json::array({not_checked})}};
+         {"not_checked", not_checked}};
   emit(o.output.json ? render(j) : text.str());
   return c.all() ? 0 : 1;
 }

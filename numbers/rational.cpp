@@ -1,6 +1,7 @@
 #include "numbers/rational.hpp"
 
 #include <cctype>
+#include <cmath>
 
 namespace anisocert {
 namespace {
@@ -89,6 +90,12 @@ Rational parse_rational(std::string_view text) {
     return Rational(num, den);
   }
   return parse_decimal(text);
+}
+
+Rational rational_from_double(double x) {
+  if (std::isnan(x)) throw NumberSyntaxError("NaN is not an exact number");
+  if (std::isinf(x)) throw NumberSyntaxError(std::string(x > 0 ? "+" : "-") + "infinity is not an exact number");
+  return Rational(x);  // GMP's mpq_set_d: exact for finite doubles
 }
 
 std::string to_exact_string(const Rational& q) {

@@ -27,6 +27,10 @@ struct NumberSyntaxError : std::invalid_argument {
 Rational parse_rational(std::string_view text);
 inline constexpr long max_decimal_exponent = 100000;
 
+// The rational a binary double denotes, exactly (0.1 gives 3602879701896397/36028797018963968).
+// Throws NumberSyntaxError for NaN and infinities, naming the value.
+Rational rational_from_double(double x);
+
 // The canonical exact text of q: a terminating decimal when the reduced denominator is
 // 2^a 5^b ("12.5", "-3", "0.001"), otherwise the reduced fraction "p/q".
 std::string to_exact_string(const Rational& q);

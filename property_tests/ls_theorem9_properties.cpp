@@ -52,11 +52,8 @@ RC_GTEST_PROP(LS_T9, ChiIsPositiveExactlyBelowTheLemma5Bound, ()) {
   const BetaGamma bg = *beta_gamma();
   RC_TAG(bg.kind);
   RC_PRE(ls_t9_beta_in_range(bg.beta) && ls_t9_gamma_in_range(bg.gamma));
+  RC_PRE(bg.gamma > 1);  // Lemma 5's factor needs γ > 1 (at γ = 1, χ = 1/(2β) > 0 trivially)
   const Rational chi = ls_chi(bg.beta, bg.gamma);
-  if (bg.gamma == 1) {
-    RC_ASSERT(chi > 0);
-    return;
-  }
   if (bg.kind == "chi_zero") RC_ASSERT(chi == 0);
   for (mpfr_prec_t p = 128; p <= 4096; p *= 2) {
     const Interval bound = ls_lemma5_factor(Interval(bg.gamma, p));
@@ -73,8 +70,10 @@ RC_GTEST_PROP(LS_T9, ChiIsPositiveExactlyBelowTheLemma5Bound, ()) {
 }
 
 // Every triangle has an angle <= 60° and one >= 60°, so a bound valid for all its angles
-// must satisfy arcsin(χ/γ²) <= 60° <= 2·arccos(χ/γ²); and measuring from p instead of the
-// vertices can only weaken Theorem 9's bound: arcsin(χ/γ²) <= arcsin χ (γ >= 1).
+// must satisfy arcsin(χ/γ²) <= 60° <= 2·arccos(χ/γ²); measuring from p instead of the
+// vertices can only weaken Theorem 9's bound: arcsin(χ/γ²) <= arcsin χ (γ >= 1); and the
+// upper bound is what the lower one leaves of 180° to the third angle: 2·arccos(c) =
+// 180° − 2·arcsin(c), computed here through acos and asin separately.
 RC_GTEST_PROP(LS_C10, AngleBoundsAreConsistent, ()) {
   const BetaGamma bg = *beta_gamma();
   RC_TAG(bg.kind);
@@ -91,4 +90,5 @@ RC_GTEST_PROP(LS_C10, AngleBoundsAreConsistent, ()) {
   RC_ASSERT(certainly_less(sixty, c10_max));
   RC_ASSERT(!certainly_less(t9, c10_min));
   if (bg.gamma == 1) RC_ASSERT(!certainly_less(c10_min, t9));  // equal when γ = 1
+  RC_ASSERT((c10_max + 2 * c10_min).contains(Rational(180)));
 }

@@ -46,7 +46,7 @@ RC_GTEST_PROP(LU_T45, ConditionsImplyTheTheoremsWeakerOnes, ()) {
   // γ₀ > 1 ⇒ 2γ₀³ > 2, so Lemmas 4.3/4.4's conditions imply (1−δ)³ρ₀ > 2 and (1−δ)³β > 2.
   if (c.lemma43) RC_ASSERT(c.delta_rho0);
   if (c.lemma44) RC_ASSERT(c.delta_beta);
-  if (c.delta_rho0) RC_ASSERT(c.rho0_above_2 || t.p.delta < 0);  // (1−δ)³ <= 1 for δ > 0
+  if (c.delta_rho0) RC_ASSERT(c.rho0_above_2);  // (1−δ)³ <= 1 for δ > 0
   if (t.kind == "lemma43_boundary") {
     RC_ASSERT(!c.lemma43);  // strict inequality at equality
     LuParameters above = t.p;

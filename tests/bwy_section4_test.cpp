@@ -39,6 +39,25 @@ TEST(BWY_S42, Lemma2FailsForVisibleDistortion) {
   EXPECT_TRUE(bwy_s42_conditions(parse_rational("1.5"), parse_rational("1.0009")).all());
 }
 
+TEST(BWY_L2, ExponentsArePinned) {
+  // (2² − 1)(1 + 2)²(1 + 8)² 2⁴ = 3 · 9 · 81 · 16 = 34992 (by hand).
+  EXPECT_EQ(bwy_lemma2_lhs(Rational(2), Rational(2)), Rational(34992));
+  // γ_max by a second engine (mpmath findroot at 50 digits, run by the reviewer of this code):
+  // B = 2: 1.000312197735630952220936…, B = 3/2: 1.000984645169814234945220…
+  EXPECT_TRUE(bwy_lemma2_gamma_max(Rational(2), 256)
+                  .inside(parse_rational("1.0003121977356309522209"), parse_rational("1.0003121977356309522210")));
+  EXPECT_TRUE(bwy_lemma2_gamma_max(Rational(3, 2), 256)
+                  .inside(parse_rational("1.0009846451698142349452"), parse_rational("1.0009846451698142349453")));
+}
+
+TEST(BWY_S42, ViolatorFactorJustAboveOneIsDefined) {
+  // G = 1 + 10⁻⁸⁰: G⁴ − 1 > 0 exactly, though 256-bit intervals of G⁴ reach 1 (review finding).
+  const Rational G = 1 + Rational(1, boost::multiprecision::pow(anisocert::Integer{10}, 80));
+  BwyInterdistanceFactors f = bwy_s42_factors(Rational(2), G, 256);
+  ASSERT_TRUE(f.violator.has_value());
+  EXPECT_TRUE(f.violator->certainly_positive());
+}
+
 TEST(BWY_L2, GammaMaxNeedsBAboveOne) {
   EXPECT_THROW(bwy_lemma2_gamma_max(Rational(1), 128), std::invalid_argument);
   EXPECT_THROW(bwy_s42_conditions(Rational(1), Rational(1)), std::invalid_argument);

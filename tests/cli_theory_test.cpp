@@ -90,6 +90,18 @@ TEST(Cli, OneThetaGivesOneObjectParsedExactly) {
   EXPECT_EQ(Json::parse(two.out)[0]["theta_deg"], "1/3");
 }
 
+TEST(Cli, ThetaWithinTenToMinusHundredOfThetaMax) {
+  // Review finding: the printed bracket was re-checked at the default precision although γ
+  // needed more there; P(1) ≈ −5·10⁻¹⁰² at this θ.
+  Json j = Json::parse(run("theory --theta 0 --json --digits 130").out);
+  std::string theta_max = j["theta_max_deg"]["lo"].get<std::string>();
+  std::string theta = theta_max.substr(0, theta_max.find('.') + 101);  // truncated: below θ_max
+  Outcome r = run("theory --json --theta " + theta);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(Json::parse(r.out)["theta_deg"], theta);
+  EXPECT_EQ(run("theory --theta " + theta_max.substr(0, theta_max.find('.') + 100) + "9").exit_code, 2);
+}
+
 TEST(Cli, TableIsReadable) {
   Outcome r = run("theory");
   ASSERT_EQ(r.exit_code, 0);

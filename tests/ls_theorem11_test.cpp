@@ -76,6 +76,14 @@ TEST(LS_T11, AdmissibilityIsDecidedExactlyEvenAtHundredsOfDigits) {
   EXPECT_FALSE(ls_t11_theta_admissible(parse_rational(d.hi)));
 }
 
+TEST(LS_T11, GammaRefusesInadmissibleTheta) {
+  // θ = 170° also has P(1) < 0, and θ < 0 breaks the uniqueness argument (review finding).
+  EXPECT_THROW(ls_t11_gamma(Rational(170), prec), std::invalid_argument);
+  EXPECT_THROW(ls_t11_gamma(Rational(-10), prec), std::invalid_argument);
+  EXPECT_THROW(ls_t11_gamma(Rational(21), prec), std::invalid_argument);
+  EXPECT_FALSE(ls_t11_gamma_bracket_verified(Rational(170), Rational(1), Rational(2), prec));
+}
+
 TEST(LS_T11, GammaNearThetaMaxIsCertifiedAboveOne) {
   DecimalEnclosure d = to_decimal(ls_t11_theta_max_deg(1200), 300);
   Rational theta = parse_rational(d.lo);

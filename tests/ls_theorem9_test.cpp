@@ -13,6 +13,11 @@ using namespace anisocert::theory;
 namespace {
 const mpfr_prec_t prec = 200;
 Interval I(const Rational& q) { return Interval(q, prec); }
+// x encloses q and is narrow: within q ± 10⁻⁵⁰ (200 bits give about 60 digits).
+bool tight(const Interval& x, const Rational& q) {
+  const Rational eps(1, boost::multiprecision::pow(anisocert::Integer{10}, 50));
+  return x.contains(q) && x.inside(q - eps, q + eps);
+}
 }  // namespace
 
 TEST(LS_T9, ChiClosedForms) {
@@ -35,20 +40,27 @@ TEST(LS_T9, RangesAreDecidedExactly) {
 TEST(LS_T9, AngleBoundsAtGammaOneAreThirtyAndHundredTwenty) {
   // β = 1, γ = 1: χ = 1/2, arcsin χ = 30°, and Corollary 10 gives [30°, 2·arccos(1/2) = 120°].
   Interval chi = I(Rational(1, 2)), one = I(Rational(1));
-  EXPECT_TRUE(ls_t9_min_angle_deg(chi).contains(Rational(30)));
-  EXPECT_TRUE(ls_c10_min_angle_deg(chi, one).contains(Rational(30)));
-  EXPECT_TRUE(ls_c10_max_angle_deg(chi, one).contains(Rational(120)));
+  EXPECT_TRUE(tight(ls_t9_min_angle_deg(chi), Rational(30)));
+  EXPECT_TRUE(tight(ls_c10_min_angle_deg(chi, one), Rational(30)));
+  EXPECT_TRUE(tight(ls_c10_max_angle_deg(chi, one), Rational(120)));
   EXPECT_THROW(ls_t9_min_angle_deg(I(Rational(0))), std::domain_error);
+}
+
+TEST(LS_C10, BoundsAtChiOverGammaSquaredOneHalf) {
+  // χ = 25/32, γ = 5/4: χ/γ² = (25/32)/(25/16) = 1/2, so [arcsin(1/2), 2·arccos(1/2)] = [30°, 120°].
+  Interval chi = I(Rational(25, 32)), gamma = I(Rational(5, 4));
+  EXPECT_TRUE(tight(ls_c10_min_angle_deg(chi, gamma), Rational(30)));
+  EXPECT_TRUE(tight(ls_c10_max_angle_deg(chi, gamma), Rational(120)));
 }
 
 TEST(LS_Lemmas, FactorsAtRationalClosedForms) {
   // γ = 5/4: γ² − 1 = 9/16, so Lemma 5's 1/√(γ²−1) = 4/3; γ³ + γ = 125/64 + 80/64 = 205/64.
-  EXPECT_TRUE(ls_lemma5_factor(I(Rational(5, 4))).contains(Rational(4, 3)));
-  EXPECT_TRUE(ls_lemma14_factor(I(Rational(5, 4))).contains(Rational(64, 205)));
+  EXPECT_TRUE(tight(ls_lemma5_factor(I(Rational(5, 4))), Rational(4, 3)));
+  EXPECT_TRUE(tight(ls_lemma14_factor(I(Rational(5, 4))), Rational(64, 205)));
   // γ = 3/4: √(γ²+1) = 5/4, γ² = 9/16, γ³ = 27/64, γ⁴ = 81/256, γ⁵ = 243/1024.
-  EXPECT_TRUE(ls_lemma18_factor(I(Rational(3, 4))).contains(Rational(45, 64)));
-  EXPECT_TRUE(ls_lemma21_site_factor(I(Rational(3, 4))).contains(Rational(15, 16)));
-  EXPECT_TRUE(ls_lemma21_bdr_factor(I(Rational(3, 4))).contains(Rational(256, 225)));
-  EXPECT_TRUE(ls_lemma23_factor(I(Rational(3, 4))).contains(Rational(4096, 3375)));
+  EXPECT_TRUE(tight(ls_lemma18_factor(I(Rational(3, 4))), Rational(45, 64)));
+  EXPECT_TRUE(tight(ls_lemma21_site_factor(I(Rational(3, 4))), Rational(15, 16)));
+  EXPECT_TRUE(tight(ls_lemma21_bdr_factor(I(Rational(3, 4))), Rational(256, 225)));
+  EXPECT_TRUE(tight(ls_lemma23_factor(I(Rational(3, 4))), Rational(4096, 3375)));
   EXPECT_THROW(ls_lemma5_factor(I(Rational(1))), std::domain_error);
 }

@@ -45,6 +45,13 @@ TEST(DecimalEnclosure, CertifiedDigitsAreACommonTruncation) {
   EXPECT_EQ(certified_digits({"-0.1", "0.1"}), "?");
   EXPECT_EQ(certified_digits({"1.25", "1.25"}), "1.25");
   EXPECT_EQ(certified_digits({"123.4", "125.1"}), "?");
+  // Whole numbers of different lengths share a prefix but not a magnitude (review finding).
+  EXPECT_EQ(certified_digits({"1", "12"}), "?");
+  EXPECT_EQ(certified_digits({"10", "100"}), "?");
+  EXPECT_EQ(certified_digits({"10", "19"}), "?");
+  EXPECT_EQ(certified_digits({"12.5", "12.7"}), "12…");
+  EXPECT_EQ(common_significant_digits({"1.5", "15"}), 0);
+  EXPECT_EQ(common_significant_digits({"10", "100"}), 0);
   EXPECT_EQ(common_significant_digits({"0.0031415", "0.0031416"}), 4);
   EXPECT_EQ(common_significant_digits({"78.98984", "78.98985"}), 6);
 }

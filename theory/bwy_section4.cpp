@@ -36,7 +36,8 @@ BwyInterdistanceFactors bwy_s42_factors(const Rational& B, const Rational& G, mp
   Interval g(G, prec), b(B, prec);
   Interval g2 = sqr(g);
   std::optional<Interval> violator;
-  if (G > 1) violator = 1 / (g2 * sqrt(sqr(g2) - 1));
+  // G⁴ − 1 exactly: an interval G⁴ − 1 could reach 0 for G just above 1.
+  if (G > 1) violator = 1 / (g2 * sqrt(Interval(Rational(G * G * G * G - 1), prec)));
   return BwyInterdistanceFactors{
       .violator = violator,
       .shape = b / (g2 * sqrt(g2 + 1)),

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace anisocert::theory {
@@ -43,25 +44,43 @@ DecimalEnclosure to_decimal(const Interval& x, int digits) {
   return {positional(x.lower(), digits, MPFR_RNDD), positional(x.upper(), digits, MPFR_RNDU)};
 }
 
-std::string certified_digits(const DecimalEnclosure& e) {
-  // A common prefix of two positional decimals of the same sign and integer-part length is a
-  // truncation of every number between them.
-  size_t k = 0;
+namespace {
+
+// Length of the integer part (with its sign) of a positional decimal.
+std::size_t integer_part_length(const std::string& s) {
+  const std::size_t dot = s.find('.');
+  return dot == std::string::npos ? s.size() : dot;
+}
+
+// Length of the common prefix of lo and hi when both have the same sign and integer-part
+// length (so that a common prefix is a truncation of every number between them), else none.
+std::optional<std::size_t> comparable_prefix(const DecimalEnclosure& e) {
+  if (integer_part_length(e.lo) != integer_part_length(e.hi) || (e.lo[0] == '-') != (e.hi[0] == '-'))
+    return std::nullopt;
+  std::size_t k = 0;
   while (k < e.lo.size() && k < e.hi.size() && e.lo[k] == e.hi[k]) ++k;
-  std::string p = e.lo.substr(0, k);
-  bool same_integer_part = e.lo.find('.') == e.hi.find('.') || e.lo == e.hi;
-  if (!same_integer_part || p.empty() || p == "-") return "?";
-  if (k == e.lo.size() && k == e.hi.size()) return p;  // exact
+  return k;
+}
+
+}  // namespace
+
+std::string certified_digits(const DecimalEnclosure& e) {
+  if (e.lo == e.hi) return e.lo;  // exact
+  const std::optional<std::size_t> k = comparable_prefix(e);
+  // The prefix must cover the whole integer part, or the magnitude would be lost.
+  if (!k || *k < integer_part_length(e.lo)) return "?";
+  std::string p = e.lo.substr(0, *k);
   if (p.back() == '.') p.pop_back();
-  if (p.find('.') == std::string::npos && p.size() < e.lo.substr(0, e.lo.find('.')).size()) return "?";
   return p + "…";
 }
 
 int common_significant_digits(const DecimalEnclosure& e) {
+  const std::optional<std::size_t> k = comparable_prefix(e);
+  if (!k) return 0;
   int count = 0;
   bool started = false;
-  for (size_t k = 0; k < e.lo.size() && k < e.hi.size() && e.lo[k] == e.hi[k]; ++k) {
-    char c = e.lo[k];
+  for (std::size_t i = 0; i < *k; ++i) {
+    const char c = e.lo[i];
     if (c == '-' || c == '.') continue;
     if (c != '0') started = true;
     if (started) ++count;

@@ -39,6 +39,9 @@ bool ls_t11_theta_admissible(const Rational& theta_deg) {
 }
 
 Interval ls_t11_gamma(const Rational& theta_deg, mpfr_prec_t prec) {
+  // The argument below needs sin θ >= 0 and θ < θ_max (θ = 170° also has P(1) < 0).
+  if (!ls_t11_theta_admissible(theta_deg))
+    throw std::invalid_argument("ls_t11_gamma: θ = " + to_exact_string(theta_deg) + " is not admissible");
   // For γ >= 1 and sin θ >= 0, P'(γ) = 8γ⁷ − 4γ³ + 2 sin θ (4γ³ sqrt(γ²+1) + γ⁵ / sqrt(γ²+1)) > 0,
   // so P is strictly increasing on [1, ∞); P(1) = 2 sqrt 2 sin θ − 1 < 0 exactly when θ < θ_max,
   // and P(2) = 239 + 32 sqrt 5 sin θ > 0. Hence the root > 1 is unique and lies in (1, 2).
@@ -48,11 +51,12 @@ Interval ls_t11_gamma(const Rational& theta_deg, mpfr_prec_t prec) {
     auto P = [&s](const Interval& g) { return ls_t11_polynomial(g, s); };
     if (brackets_sign_change(P, Rational(1), Rational(2), p)) return enclose_sign_change(P, Rational(1), Rational(2), p);
   }
-  throw std::invalid_argument("ls_t11_gamma: θ = " + to_exact_string(theta_deg) + " is not admissible");
+  throw std::runtime_error("ls_t11_gamma: P(1) < 0 not certified within 2^21 bits for θ = " + to_exact_string(theta_deg));
 }
 
 bool ls_t11_gamma_bracket_verified(const Rational& theta_deg, const Rational& lo, const Rational& hi,
                                    mpfr_prec_t prec) {
+  if (!ls_t11_theta_admissible(theta_deg)) return false;
   Interval s = ls_t11_sin_theta(theta_deg, prec);
   return lo >= 1 && brackets_sign_change([&s](const Interval& g) { return ls_t11_polynomial(g, s); }, lo, hi, prec);
 }

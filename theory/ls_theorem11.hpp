@@ -21,12 +21,14 @@ Interval ls_t11_theta_max_deg(mpfr_prec_t prec);
 // 2^20 bits of precision cannot separate it from the bound.
 bool ls_t11_theta_admissible(const Rational& theta_deg);
 
-// γ(θ): the unique real root > 1 of P. Precondition: ls_t11_theta_admissible(θ).
+// γ(θ): the unique real root > 1 of P. Throws std::invalid_argument unless
+// ls_t11_theta_admissible(θ).
 // The result is an enclosure [lo, hi] with P(lo) certainly < 0 < P(hi) certainly.
 Interval ls_t11_gamma(const Rational& theta_deg, mpfr_prec_t prec);
 
 // The check a reader can repeat on printed rationals lo < hi: P(lo) < 0 < P(hi), evaluated
-// with outward rounding, which proves γ(θ) ∈ (lo, hi) (P is increasing on [1, ∞)).
+// with outward rounding, which proves γ(θ) ∈ (lo, hi) (P is increasing on [1, ∞)); false for
+// an inadmissible θ.
 bool ls_t11_gamma_bracket_verified(const Rational& theta_deg, const Rational& lo, const Rational& hi,
                                    mpfr_prec_t prec);
 

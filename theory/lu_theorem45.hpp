@@ -19,8 +19,10 @@ struct LuConditions {
   bool delta_beta;         // (1 − δ)³ β > 2              (Theorem 4.5)
   bool lemma43;            // (1 − δ)³ ρ₀ > 2 γ₀³         (Lemma 4.3, Theorem 4.5)
   bool lemma44;            // (1 − δ)³ β > 2 γ₀³          (Lemma 4.4, Theorem 4.5)
-  // Not decided: Theorem 4.5's K(ρ₀, β) max(f(γ₀), g(γ₀), h(γ₀)) β² < (4/3) π δ², since the
-  // paper gives no closed form for K, f, g, h (Lemmas 3.11–3.15 only bound them).
+  // Not decided here: Theorem 4.5's K(ρ₀, β) max(f(γ₀), g(γ₀), h(γ₀)) β² < (4/3) π δ², since the
+  // paper gives no closed form for K, f, g, h (Lemmas 3.11–3.15 only bound them), and its
+  // boundary-angle condition (> 90° at each boundary edge), a property of the domain and field.
+  // all() is "every condition decided here holds", not "Theorem 4.5 applies".
   bool all() const { return rho0_above_2 && delta_rho0 && delta_beta && lemma43 && lemma44; }
 };
 
