@@ -10,8 +10,10 @@
 
 namespace anisocert {
 
-using Rational = boost::multiprecision::mpq_rational;
-using Integer = boost::multiprecision::mpz_int;
+// Expression templates off: every operation yields a number, so generic code (the predicates'
+// kernels, one template for double, intervals and rationals) deduces plain types.
+using Rational = boost::multiprecision::number<boost::multiprecision::gmp_rational, boost::multiprecision::et_off>;
+using Integer = boost::multiprecision::number<boost::multiprecision::gmp_int, boost::multiprecision::et_off>;
 
 // Thrown by parse_rational; what() names the offending text and what is wrong with it.
 struct NumberSyntaxError : std::invalid_argument {

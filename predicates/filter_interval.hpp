@@ -1,0 +1,60 @@
+#pragma once
+// The interval type of the filters: [lo, hi] of doubles, each operation computed with
+// round-to-nearest and then widened by one ulp outward (std::nextafter). Round-to-nearest is
+// within half an ulp of the exact result (also under gradual underflow, where the error is at
+// most half the smallest subnormal), so the widened interval contains every exact result.
+// Overflow gives infinite endpoints, which only makes the interval undecided.
+
+#include "predicates/sign.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace anisocert::predicates {
+
+struct FilterInterval {
+  double lo, hi;
+
+  FilterInterval() : lo(0), hi(0) {}
+  FilterInterval(double x) : lo(x), hi(x) {}  // NOLINT: a double is an exact point
+  FilterInterval(double l, double h) : lo(l), hi(h) {}
+  // A double interval around the rational q: mpq_get_d truncates (error < 1 ulp toward 0),
+  // and widening by one ulp on both sides covers that.
+  static FilterInterval around(const Rational& q) {
+    const double d = q.convert_to<double>();
+    return widen(d, d);
+  }
+
+  static FilterInterval widen(double l, double h) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {std::nextafter(l, -inf), std::nextafter(h, inf)};
+  }
+
+  // The sign, when every point of the interval has it; nothing when it contains 0 or is NaN.
+  std::optional<Sign> sign() const {
+    if (lo > 0) return Sign::positive;
+    if (hi < 0) return Sign::negative;
+    if (lo == 0 && hi == 0) return Sign::zero;
+    return std::nullopt;
+  }
+
+  friend FilterInterval operator+(const FilterInterval& a, const FilterInterval& b) {
+    return widen(a.lo + b.lo, a.hi + b.hi);
+  }
+  friend FilterInterval operator-(const FilterInterval& a, const FilterInterval& b) {
+    return widen(a.lo - b.hi, a.hi - b.lo);
+  }
+  friend FilterInterval operator-(const FilterInterval& a) { return {-a.hi, -a.lo}; }
+  friend FilterInterval operator*(const FilterInterval& a, const FilterInterval& b) {
+    const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+    if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4)) {  // 0 · ∞ after an overflow
+      constexpr double inf = std::numeric_limits<double>::infinity();
+      return {-inf, inf};
+    }
+    return widen(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}));
+  }
+};
+
+}  // namespace anisocert::predicates

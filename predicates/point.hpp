@@ -1,0 +1,41 @@
+#pragma once
+// Points and symmetric matrices over a scalar type S: double (a double denotes the rational it
+// is) or Rational. Predicates accept either; constructions are exact (Rational).
+
+namespace anisocert::predicates {
+
+template <class S>
+struct Point2 {
+  S x, y;
+};
+
+template <class S>
+struct Point3 {
+  S x, y, z;
+};
+
+// [m11 m12; m12 m22], the DESIGN.md order [m11, m12, m22].
+template <class S>
+struct Sym2 {
+  S m11, m12, m22;
+};
+
+// [m11 m12 m13; m12 m22 m23; m13 m23 m33].
+template <class S>
+struct Sym3 {
+  S m11, m12, m13, m22, m23, m33;
+};
+
+// (dx, dy) M (dx, dy)ᵀ, the squared length of (dx, dy) measured by M (LS §2: d_p(a, b)²).
+template <class T>
+T quadratic_form(const T& m11, const T& m12, const T& m22, const T& dx, const T& dy) {
+  return dx * (m11 * dx + m12 * dy) + dy * (m12 * dx + m22 * dy);
+}
+
+// (ax, ay) M (bx, by)ᵀ, the M-inner product.
+template <class T>
+T bilinear_form(const T& m11, const T& m12, const T& m22, const T& ax, const T& ay, const T& bx, const T& by) {
+  return ax * (m11 * bx + m12 * by) + ay * (m12 * bx + m22 * by);
+}
+
+}  // namespace anisocert::predicates

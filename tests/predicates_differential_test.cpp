@@ -1,0 +1,239 @@
+// Filtered against exact, in the manner of CGAL's Kernel_checker: every kernel, on random
+// inputs over a wide range of magnitudes, on exactly degenerate inputs (representable as
+// doubles, so the double path sees them exactly) and on inputs a few ulps away.
+// Zero disagreements allowed.
+
+#include "predicates/angle.hpp"
+#include "predicates/bisector.hpp"
+#include "predicates/distortion.hpp"
+#include "predicates/encroachment.hpp"
+#include "predicates/incircle.hpp"
+#include "predicates/length_compare.hpp"
+#include "predicates/orientation.hpp"
+#include "predicates/sqrt_sign.hpp"
+#include "predicates/wedge.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using anisocert::Rational;
+using namespace anisocert::predicates;
+
+namespace {
+
+template <class K>
+std::array<Rational, K::arity> exact_inputs(const std::array<double, K::arity>& x) {
+  std::array<Rational, K::arity> q;
+  for (std::size_t i = 0; i < K::arity; ++i) q[i] = Rational(x[i]);
+  return q;
+}
+
+// The double path, the rational path and the plain exact evaluation agree; returns the sign.
+template <class K>
+Sign checked(const std::array<double, K::arity>& x) {
+  const auto q = exact_inputs<K>(x);
+  const Sign exact = exact_sign<K>(q);
+  EXPECT_EQ(filtered_sign<K>(x), exact) << K::name;
+  EXPECT_EQ(filtered_sign<K>(q), exact) << K::name;
+  return exact;
+}
+
+struct Random {
+  std::mt19937_64 rng{20261122};
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
+  // A coordinate of magnitude about 2^e, e in [−70, 70]: inside and outside the static range.
+  double coordinate(int e) { return std::ldexp(uniform(-1, 1), e); }
+  // A symmetric positive definite metric with entries about 2^e.
+  std::array<double, 3> metric(int e) {
+    const double a = std::ldexp(uniform(0.1, 1), e), c = std::ldexp(uniform(0.1, 1), e);
+    return {a, uniform(-0.99, 0.99) * std::sqrt(a * c), c};
+  }
+  template <std::size_t N>
+  std::array<double, N> inputs(const std::array<int, N>& groups) {
+    const int ec = integer(-70, 70), em = integer(-70, 70), es = integer(-70, 70);
+    std::array<double, N> x{};
+    for (std::size_t i = 0; i < N; ++i) {
+      if (groups[i] == 0) x[i] = coordinate(ec);
+      if (groups[i] == 2) x[i] = std::ldexp(uniform(0, 1), es);
+    }
+    // Metric entries come in (m11, m12, m22) triples in every kernel.
+    for (std::size_t i = 0; i + 2 < N; ++i)
+      if (groups[i] == 1 && groups[i + 1] == 1 && groups[i + 2] == 1 && x[i] == 0) {
+        auto m = metric(em);
+        x[i] = m[0], x[i + 1] = m[1], x[i + 2] = m[2];
+        i += 2;
+      }
+    return x;
+  }
+  // Moves one input by 1..4 ulps.
+  template <std::size_t N>
+  std::array<double, N> nudged(std::array<double, N> x) {
+    const std::size_t i = static_cast<std::size_t>(integer(0, N - 1));
+    const double toward = integer(0, 1) ? INFINITY : -INFINITY;
+    for (int k = integer(1, 4); k > 0; --k) x[i] = std::nextafter(x[i], toward);
+    return x;
+  }
+};
+
+// F unimodular (det 1): F⁻¹ is an integer matrix, so points c + F⁻¹·(integer vector of
+// length 5) are integers, exactly on the M-circle of radius 5 around c for M = FᵀF.
+struct Unimodular {
+  long f11, f12, f21, f22;  // det = f11 f22 − f12 f21 = 1
+  std::array<double, 3> metric() const {
+    return {double(f11 * f11 + f21 * f21), double(f11 * f12 + f21 * f22), double(f12 * f12 + f22 * f22)};
+  }
+  // c + F⁻¹ (x, y), F⁻¹ = [f22 −f12; −f21 f11]
+  std::array<double, 2> at(std::array<double, 2> c, long x, long y) const {
+    return {c[0] + double(f22 * x - f12 * y), c[1] + double(-f21 * x + f11 * y)};
+  }
+};
+const Unimodular shears[] = {{1, 0, 0, 1}, {1, 1, 0, 1}, {2, 1, 1, 1}, {1, -3, 0, 1}, {3, 2, 4, 3}, {5, 7, 2, 3}};
+const long circle5[][2] = {{5, 0}, {3, 4}, {0, 5}, {-4, 3}, {-5, 0}, {-3, -4}, {4, -3}, {0, -5}};
+
+}  // namespace
+
+TEST(FilteredVsExact, RandomInputsAcrossMagnitudes) {
+  Random r;
+  for (int t = 0; t < 3000; ++t) {
+    checked<OrientationKernel>(r.inputs(OrientationKernel::groups));
+    checked<SideOfBisectorKernel>(r.inputs(SideOfBisectorKernel::groups));
+    checked<MetricDotKernel>(r.inputs(MetricDotKernel::groups));
+    checked<InCircleKernel>(r.inputs(InCircleKernel::groups));
+    checked<ScaledLengthCompareKernel>(r.inputs(ScaledLengthCompareKernel::groups));
+    checked<AngleCosKernel>(r.inputs(AngleCosKernel::groups));
+    checked<AngleSinKernel>(r.inputs(AngleSinKernel::groups));
+    checked<ScaledDifferenceDiagonalKernel>(r.inputs(ScaledDifferenceDiagonalKernel::groups));
+    checked<ScaledDifferenceDeterminantKernel>(r.inputs(ScaledDifferenceDeterminantKernel::groups));
+  }
+}
+
+TEST(FilteredVsExact, ExactlyDegenerateAndNearlyDegenerate) {
+  Random r;
+  int zeros = 0;
+  for (int t = 0; t < 400; ++t) {
+    const Unimodular& F = shears[t % 6];
+    const Unimodular& G = shears[(t / 6) % 6];
+    const std::array<double, 2> c{double(r.integer(-1000, 1000)), double(r.integer(-1000, 1000))};
+    const long k = r.integer(1, 50);
+    const auto* p1 = circle5[r.integer(0, 7)];
+    const auto* p2 = circle5[r.integer(0, 7)];
+    const auto a = F.at(c, k * p1[0], k * p1[1]), b = G.at(c, k * p2[0], k * p2[1]);
+    const auto M = F.metric(), N = G.metric();
+    std::vector<std::pair<const char*, Sign>> results;
+    // Collinear: c, a, and c + 3(a − c).
+    const std::array<double, 6> collinear{c[0], c[1], a[0], a[1], c[0] + 3 * (a[0] - c[0]), c[1] + 3 * (a[1] - c[1])};
+    // c is on the bisector of a (metric M) and b (metric N): d_M(a, c) = d_N(b, c) = 5k.
+    const std::array<double, 12> bisector{c[0], c[1], a[0], a[1], M[0], M[1], M[2], b[0], b[1], N[0], N[1], N[2]};
+    // On a wedge line: q = a + s·J·M(b − a), J the quarter turn, so (q − a)ᵀM(b − a) = 0.
+    const double gx = M[0] * (b[0] - a[0]) + M[1] * (b[1] - a[1]), gy = M[1] * (b[0] - a[0]) + M[2] * (b[1] - a[1]);
+    const std::array<double, 9> wedge_line{a[0] - gy, a[1] + gx, a[0], a[1], b[0], b[1], M[0], M[1], M[2]};
+    // Four points on one M-circle around c.
+    std::array<double, 8> circle{};
+    for (int i = 0; i < 4; ++i) {
+      const auto p = F.at(c, k * circle5[2 * i][0], k * circle5[2 * i][1]);
+      circle[2 * i] = p[0], circle[2 * i + 1] = p[1];
+    }
+    const std::array<double, 11> cocircular{circle[0], circle[1], circle[2], circle[3], circle[4], circle[5],
+                                            circle[6], circle[7], M[0], M[1], M[2]};
+    // On the diametral M-circle of the segment from c + F⁻¹(5k, 0) to c − F⁻¹(5k, 0).
+    const auto e1 = F.at(c, 5 * k, 0), e2 = F.at(c, -5 * k, 0), on = F.at(c, 3 * k, 4 * k);
+    const std::array<double, 9> diametral{e1[0], e1[1], on[0], on[1], e2[0], e2[1], M[0], M[1], M[2]};
+    // Equal lengths: d_M(c, a)² = 1 · d_M(c, F.at(c, 0, 5k))².
+    const auto a2 = F.at(c, 0, 5 * k);
+    const std::array<double, 15> equal_lengths{1,    c[0], c[1], a[0], a[1], M[0], M[1], M[2],
+                                               c[0], c[1], a2[0], a2[1], M[0], M[1], M[2]};
+    // A right angle at c measured by M: cos = 0 against k = 0, and sin² = 1.
+    const auto right = F.at(c, 0, 5 * k), base = F.at(c, 5 * k, 0);
+    const std::array<double, 10> right_cos{base[0], base[1], c[0], c[1], right[0], right[1], M[0], M[1], M[2], 0};
+    const std::array<double, 10> right_sin{base[0], base[1], c[0], c[1], right[0], right[1], M[0], M[1], M[2], 1};
+    // Equal metrics, γ² = 1: g·P − Q = 0.
+    const std::array<double, 7> equal_metrics{1, M[0], M[1], M[2], M[0], M[1], M[2]};
+
+    zeros += checked<OrientationKernel>(collinear) == Sign::zero;
+    zeros += checked<SideOfBisectorKernel>(bisector) == Sign::zero;
+    zeros += checked<MetricDotKernel>(wedge_line) == Sign::zero;
+    zeros += checked<InCircleKernel>(cocircular) == Sign::zero;
+    zeros += checked<MetricDotKernel>(diametral) == Sign::zero;
+    zeros += checked<ScaledLengthCompareKernel>(equal_lengths) == Sign::zero;
+    zeros += checked<AngleCosKernel>(right_cos) == Sign::zero;
+    zeros += checked<AngleSinKernel>(right_sin) == Sign::zero;
+    zeros += checked<ScaledDifferenceDeterminantKernel>(equal_metrics) == Sign::zero;
+    for (int n = 0; n < 3; ++n) {
+      checked<OrientationKernel>(r.nudged(collinear));
+      checked<SideOfBisectorKernel>(r.nudged(bisector));
+      checked<MetricDotKernel>(r.nudged(wedge_line));
+      checked<InCircleKernel>(r.nudged(cocircular));
+      checked<MetricDotKernel>(r.nudged(diametral));
+      checked<ScaledLengthCompareKernel>(r.nudged(equal_lengths));
+      checked<AngleCosKernel>(r.nudged(right_cos));
+      checked<AngleSinKernel>(r.nudged(right_sin));
+      checked<ScaledDifferenceDeterminantKernel>(r.nudged(equal_metrics));
+    }
+  }
+  EXPECT_EQ(zeros, 400 * 9);  // every constructed degeneracy is exactly degenerate
+}
+
+TEST(FilteredVsExact, StaticFilterDecidesRandomInputs) {
+  // A filter that always fell through would be correct but useless: on random inputs in the
+  // static range, the static stage must decide nearly every call.
+  Random r;
+  filter_stats() = {};
+  for (int t = 0; t < 10000; ++t) {
+    std::array<double, 12> x{};
+    for (std::size_t i = 0; i < 12; ++i) x[i] = r.uniform(-1, 1);
+    auto m1 = r.metric(0), m2 = r.metric(0);
+    x[4] = m1[0], x[5] = m1[1], x[6] = m1[2], x[9] = m2[0], x[10] = m2[1], x[11] = m2[2];
+    filtered_sign<SideOfBisectorKernel>(x);
+  }
+  EXPECT_LT(filter_stats().interval_stage, 100u);  // < 1%
+}
+
+// Kettner, Mehlhorn, Pion, Schirra, Yap, "Classroom examples of robustness problems in
+// geometric computations": orientation(p, q, r) for p = (0.5 + x·2⁻⁵³, 0.5 + y·2⁻⁵³),
+// q = (12, 12), r = (24, 24). Exactly: (12 − px)(24 − py) − (12 − py)(24 − px) = 12(y − x)·2⁻⁵³
+// (expand, the products cancel), so the expected sign is sign(y − x): a closed form.
+TEST(ClassroomExamples, OrientationGridOf256x256) {
+  int naive_wrong = 0;
+  for (int x = 0; x < 256; ++x)
+    for (int y = 0; y < 256; ++y) {
+      const Point2<double> p{0.5 + std::ldexp(x, -53), 0.5 + std::ldexp(y, -53)}, q{12, 12}, r{24, 24};
+      const Sign expected = y > x ? Sign::positive : y < x ? Sign::negative : Sign::zero;
+      ASSERT_EQ(orientation(p, q, r), expected) << x << "," << y;
+      const double naive = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+      naive_wrong += (naive > 0 ? Sign::positive : naive < 0 ? Sign::negative : Sign::zero) != expected;
+    }
+  EXPECT_GT(naive_wrong, 0);  // the fixture does defeat plain double evaluation
+}
+
+TEST(AngleAgainstBound, AgreesWithTheSquareRootForm) {
+  // sign(cos θ − k) = sign(uᵀMw − k·√(uᵀMu · wᵀMw)), evaluated by sign_of_root_sum.
+  Random r;
+  for (int t = 0; t < 2000; ++t) {
+    const Point2<Rational> a{r.integer(-9, 9), r.integer(-9, 9)}, b{r.integer(-9, 9), r.integer(-9, 9)},
+        c{r.integer(-9, 9), r.integer(-9, 9)};
+    if ((a.x == b.x && a.y == b.y) || (c.x == b.x && c.y == b.y)) continue;
+    const Sym2<Rational> M{r.integer(1, 9), r.integer(-2, 2), r.integer(1, 9)};
+    if (M.m11 * M.m22 <= M.m12 * M.m12) continue;  // positive definite metrics only
+    const Rational k(r.integer(-5, 5), 5);  // includes cos = ±1, 0, 3/5, 4/5 exactly
+    const Rational dot = bilinear_form(M.m11, M.m12, M.m22, a.x - b.x, a.y - b.y, c.x - b.x, c.y - b.y);
+    const Rational uu = quadratic_form(M.m11, M.m12, M.m22, a.x - b.x, a.y - b.y);
+    const Rational ww = quadratic_form(M.m11, M.m12, M.m22, c.x - b.x, c.y - b.y);
+    EXPECT_EQ(compare_angle_cos(a, b, c, M, k), sign_of_root_sum(dot, -k, uu * ww));
+    // θ >= arcsin s ⇔ θ >= 90° or sin²θ >= s², sin²θ = 1 − dot²/(uu ww).
+    const Rational s2 = k * k;
+    EXPECT_EQ(angle_at_least_arcsin(a, b, c, M, s2), dot <= 0 || uu * ww - dot * dot >= s2 * uu * ww);
+  }
+}
+
+TEST(SqrtSign, HandCheckedCases) {
+  // 1 + √2 − √5 = 1 + 1.41421 − 2.23607 > 0; 3 − √2 − √3 < 0 (3 − 3.146); 2√2 − √8 = 0.
+  EXPECT_EQ(sign_of_root_sum(1, 1, 2, -1, 5), Sign::positive);
+  EXPECT_EQ(sign_of_root_sum(3, -1, 2, -1, 3), Sign::negative);
+  EXPECT_EQ(sign_of_root_sum(0, 2, 2, -1, 8), Sign::zero);
+  EXPECT_EQ(sign_of_root_sum(-3, 1, 9), Sign::zero);
+  EXPECT_EQ(sign_of_root_sum(5, -2, 6), Sign::positive);  // 25 > 24
+  EXPECT_EQ(sign_of_root_sum(5, 1, 0, -1, 25), Sign::zero);
+}
