@@ -237,3 +237,15 @@ TEST(SqrtSign, HandCheckedCases) {
   EXPECT_EQ(sign_of_root_sum(5, -2, 6), Sign::positive);  // 25 > 24
   EXPECT_EQ(sign_of_root_sum(5, 1, 0, -1, 25), Sign::zero);
 }
+
+TEST(BadInput, NonFiniteInputsAreNamed) {
+  const Point2<double> a{0, 0}, b{1, NAN}, c{2, 2};
+  try {
+    orientation(a, b, c);
+    FAIL();
+  } catch (const NonFiniteInput& e) {
+    EXPECT_NE(std::string(e.what()).find("b.y"), std::string::npos) << e.what();
+  }
+  const Sym2<double> M{1, 0, INFINITY};
+  EXPECT_THROW(side_of_bisector(a, c, M, b, M), NonFiniteInput);
+}
