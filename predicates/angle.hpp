@@ -11,7 +11,7 @@ namespace anisocert::predicates {
 
 // (uᵀMw, uᵀMu · wᵀMw) for u = a − b, w = c − b from the inputs a, b, c, M at x[0..8].
 template <class T, std::size_t N>
-std::pair<T, T> angle_dot_and_norms(const std::array<T, N>& x) {
+constexpr std::pair<T, T> angle_dot_and_norms(const std::array<T, N>& x) {
   const T ux = x[0] - x[2], uy = x[1] - x[3], wx = x[4] - x[2], wy = x[5] - x[3];
   return {bilinear_form(x[6], x[7], x[8], ux, uy, wx, wy),
           T(quadratic_form(x[6], x[7], x[8], ux, uy) * quadratic_form(x[6], x[7], x[8], wx, wy))};
@@ -28,7 +28,7 @@ struct AngleCosKernel {
   static constexpr auto groups = angle_groups;
   static constexpr auto inputs = angle_inputs;
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     const auto [dot, norms] = angle_dot_and_norms(x);
     return dot * dot - x[9] * x[9] * norms;
   }
@@ -41,7 +41,7 @@ struct AngleSinKernel {
   static constexpr auto groups = angle_groups;
   static constexpr auto inputs = angle_inputs;
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     const auto [dot, norms] = angle_dot_and_norms(x);
     return dot * dot - norms + x[9] * norms;
   }

@@ -17,7 +17,7 @@ struct SideOfBisectorKernel {
                                                          "Mv.m11", "Mv.m12", "Mv.m22", "w.x",
                                                          "w.y",    "Mw.m11", "Mw.m12", "Mw.m22"};
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     return quadratic_form(x[4], x[5], x[6], T(x[0] - x[2]), T(x[1] - x[3])) -
            quadratic_form(x[9], x[10], x[11], T(x[0] - x[7]), T(x[1] - x[8]));
   }

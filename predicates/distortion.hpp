@@ -18,7 +18,7 @@ struct ScaledDifferenceDiagonalKernel {
   static constexpr std::array<int, arity> groups{2, 1, 1};
   static constexpr std::array<const char*, arity> inputs{"gamma2", "P.mii", "Q.mii"};
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     return x[0] * x[1] - x[2];
   }
 };
@@ -29,7 +29,7 @@ struct ScaledDifferenceDeterminantKernel {
   static constexpr std::array<const char*, arity> inputs{"gamma2", "P.m11", "P.m12", "P.m22",
                                                          "Q.m11",  "Q.m12", "Q.m22"};
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     const T a = x[0] * x[1] - x[4], b = x[0] * x[2] - x[5], c = x[0] * x[3] - x[6];
     return a * c - b * b;
   }

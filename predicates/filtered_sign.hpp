@@ -15,10 +15,12 @@
 #include "predicates/filter_interval.hpp"
 #include "predicates/sign.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace anisocert::predicates {
 
@@ -27,29 +29,68 @@ struct NonFiniteInput : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-// How far the calls of this thread went (for benchmarks; never read by a predicate).
+// How many calls of this thread went past the static stage (for benchmarks; never read by a
+// predicate).
 struct FilterStats {
-  unsigned long long calls = 0, interval_stage = 0, exact_stage = 0;
+  unsigned long long interval_stage = 0, exact_stage = 0;
 };
-FilterStats& filter_stats();
+inline thread_local FilterStats filter_stats_of_thread;
+inline FilterStats& filter_stats() { return filter_stats_of_thread; }
 
+// The static bound of kernel K, Σ_k err_k Π_g max_g^{deg_kg}, from ErrorModel at compile time;
+// each err_k is multiplied by (1 + 2⁻⁴⁰), which covers the rounding of the compile-time
+// evaluation and of evaluating this sum in double (a few dozen operations, each <= 2⁻⁵³
+// relative); 2⁻⁶⁰⁰ is added for every underflow error under the range guard (error_model.hpp).
 template <class K>
-const ErrorModel& static_error_model() {
-  static const ErrorModel model = [] {
-    std::array<ErrorModel, K::arity> leaves;
-    for (std::size_t i = 0; i < K::arity; ++i) leaves[i] = ErrorModel::leaf(K::groups[i]);
-    return K::template eval<ErrorModel>(leaves);
-  }();
-  return model;
+inline constexpr ErrorModel static_error_model = [] {
+  std::array<ErrorModel, K::arity> leaves{};
+  for (std::size_t i = 0; i < K::arity; ++i) leaves[i] = ErrorModel::leaf(K::groups[i]);
+  return K::template eval<ErrorModel>(leaves);
+}();
+
+template <int n>
+[[gnu::always_inline]] inline double power_of(double x) {
+  if constexpr (n == 0) {
+    return 1;
+  } else {
+    return x * power_of<n - 1>(x);
+  }
 }
 
-// Σ_k err_k Π_g max_g^{deg_kg} · (1 + 2⁻⁴⁰) + 2⁻⁶⁰⁰: the factor covers the rounding of this
-// double computation itself (a few dozen operations, each <= 2⁻⁵³ relative), the constant
-// every underflow error under the range guard (see error_model.hpp).
-double static_error_bound(const ErrorModel& model, const std::array<double, magnitude_groups>& max);
+template <class K, int k = 0>
+[[gnu::always_inline]] inline double static_error_bound(const std::array<double, magnitude_groups>& max) {
+  constexpr const ErrorModel& model = static_error_model<K>;
+  if constexpr (k == 0) {
+    return 0x1p-600 + static_error_bound<K, 1>(max);
+  } else if constexpr (k > model.size()) {
+    return 0;
+  } else {
+    constexpr ErrorModel::Monomial t = model[k - 1];
+    constexpr double err = t.err * (1 + 0x1p-40);
+    const double term = err * power_of<t.degree[0]>(max[0]) * power_of<t.degree[1]>(max[1]) *
+                        power_of<t.degree[2]>(max[2]);
+    return term + static_error_bound<K, k + 1>(max);
+  }
+}
 
-// The range guard: each group's max is 0 or in [2⁻⁵⁰, 2⁵⁰].
-bool in_static_range(const std::array<double, magnitude_groups>& max);
+template <class K>
+constexpr bool uses_group(int g) {
+  for (int x : K::groups)
+    if (x == g) return true;
+  return false;
+}
+
+// The range guard: the max of each group the kernel uses is 0 or in [2⁻⁵⁰, 2⁵⁰].
+template <class K>
+[[gnu::always_inline]] inline bool in_static_range(const std::array<double, magnitude_groups>& max) {
+  bool ok = true;
+  [&]<int... g>(std::integer_sequence<int, g...>) {
+    ((ok &= !uses_group<K>(g) || (max[g] <= 0x1p50 && (max[g] >= 0x1p-50 || max[g] == 0))), ...);
+  }(std::make_integer_sequence<int, magnitude_groups>{});
+  return ok;
+}
+
+[[noreturn]] void throw_non_finite(const char* predicate, const char* input, double value);
 
 template <class K>
 Sign exact_sign(const std::array<Rational, K::arity>& x) {
@@ -63,23 +104,51 @@ Sign interval_then_exact(const std::array<FilterInterval, K::arity>& xi, const a
   return exact_sign<K>(exact_inputs());
 }
 
-// The sign of K at double inputs, each taken as the rational it denotes.
+// The max of |x_i| per magnitude group, unrolled at compile time (the group of each input is a
+// constant, so every max stays in a register). A NaN input is skipped by the max but makes the
+// double value NaN, which fails both comparisons below; an infinite one fails the range guard.
+// Either way the call leaves the static stage, and the slow path rejects it.
+// Indices of the inputs of group g, in order.
+template <class K, int g>
+constexpr auto group_indices() {
+  constexpr std::size_t n = [] {
+    std::size_t c = 0;
+    for (int x : K::groups) c += x == g;
+    return c;
+  }();
+  std::array<std::size_t, n> idx{};
+  std::size_t c = 0;
+  for (std::size_t i = 0; i < K::arity; ++i)
+    if (K::groups[i] == g) idx[c++] = i;
+  return idx;
+}
+
+// max |x_i| over idx[lo, hi), as a balanced tree (independent maxima run in parallel).
+template <auto idx, std::size_t lo, std::size_t hi, std::size_t N>
+[[gnu::always_inline]] inline double tree_max(const std::array<double, N>& x) {
+  if constexpr (hi - lo == 0) {
+    return 0;
+  } else if constexpr (hi - lo == 1) {
+    return std::fabs(x[idx[lo]]);
+  } else {
+    constexpr std::size_t mid = lo + (hi - lo) / 2;
+    return std::max(tree_max<idx, lo, mid>(x), tree_max<idx, mid, hi>(x));
+  }
+}
+
 template <class K>
-Sign filtered_sign(const std::array<double, K::arity>& x) {
-  ++filter_stats().calls;
-  std::array<double, magnitude_groups> max{};
-  for (std::size_t i = 0; i < K::arity; ++i) {
-    if (!std::isfinite(x[i]))
-      throw NonFiniteInput(std::string(K::name) + ": input " + K::inputs[i] + " = " + std::to_string(x[i]) +
-                           " is not a finite number");
-    max[K::groups[i]] = std::fmax(max[K::groups[i]], std::fabs(x[i]));
-  }
-  if (in_static_range(max)) {
-    const double value = K::template eval<double>(x);
-    const double bound = static_error_bound(static_error_model<K>(), max);
-    if (value > bound) return Sign::positive;
-    if (value < -bound) return Sign::negative;
-  }
+[[gnu::always_inline]] inline std::array<double, magnitude_groups> group_maxima(const std::array<double, K::arity>& x) {
+  constexpr auto i0 = group_indices<K, 0>();
+  constexpr auto i1 = group_indices<K, 1>();
+  constexpr auto i2 = group_indices<K, 2>();
+  return {tree_max<i0, 0, i0.size()>(x), tree_max<i1, 0, i1.size()>(x), tree_max<i2, 0, i2.size()>(x)};
+}
+
+// The interval and exact stages, out of line: rare, and large.
+template <class K>
+[[gnu::noinline]] Sign filtered_sign_slow(const std::array<double, K::arity>& x) {
+  for (std::size_t i = 0; i < K::arity; ++i)
+    if (!std::isfinite(x[i])) throw_non_finite(K::name, K::inputs[i], x[i]);
   ++filter_stats().interval_stage;
   std::array<FilterInterval, K::arity> xi;
   for (std::size_t i = 0; i < K::arity; ++i) xi[i] = FilterInterval(x[i]);
@@ -90,10 +159,23 @@ Sign filtered_sign(const std::array<double, K::arity>& x) {
   });
 }
 
+// The sign of K at double inputs, each taken as the rational it denotes. Throws
+// NonFiniteInput for a NaN or an infinity.
+template <class K>
+[[gnu::always_inline]] inline Sign filtered_sign(const std::array<double, K::arity>& x) {
+  const std::array<double, magnitude_groups> max = group_maxima<K>(x);
+  if (in_static_range<K>(max)) [[likely]] {
+    const double value = K::template eval<double>(x);
+    const double bound = static_error_bound<K>(max);
+    if (value > bound) return Sign::positive;
+    if (value < -bound) return Sign::negative;
+  }
+  return filtered_sign_slow<K>(x);
+}
+
 // The sign of K at rational inputs: an interval enclosure first, exact when it cannot decide.
 template <class K>
 Sign filtered_sign(const std::array<Rational, K::arity>& q) {
-  ++filter_stats().calls;
   ++filter_stats().interval_stage;
   std::array<FilterInterval, K::arity> xi;
   for (std::size_t i = 0; i < K::arity; ++i) xi[i] = FilterInterval::around(q[i]);

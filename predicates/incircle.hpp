@@ -18,7 +18,7 @@ struct InCircleKernel {
   static constexpr std::array<const char*, arity> inputs{"a.x", "a.y", "b.x", "b.y",   "c.x",  "c.y",
                                                          "d.x", "d.y", "M.m11", "M.m12", "M.m22"};
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     const T adx = x[0] - x[6], ady = x[1] - x[7], bdx = x[2] - x[6], bdy = x[3] - x[7], cdx = x[4] - x[6],
             cdy = x[5] - x[7];
     const T alift = quadratic_form(x[8], x[9], x[10], adx, ady);

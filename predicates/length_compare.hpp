@@ -18,7 +18,7 @@ struct ScaledLengthCompareKernel {
                                                          "M1.m11", "M1.m12", "M1.m22", "c.x", "c.y",
                                                          "d.x",    "d.y",    "M2.m11", "M2.m12", "M2.m22"};
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     return x[0] * quadratic_form(x[5], x[6], x[7], T(x[3] - x[1]), T(x[4] - x[2])) -
            quadratic_form(x[12], x[13], x[14], T(x[10] - x[8]), T(x[11] - x[9]));
   }

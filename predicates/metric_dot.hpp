@@ -17,7 +17,7 @@ struct MetricDotKernel {
   static constexpr std::array<const char*, arity> inputs{"p.x", "p.y", "o.x", "o.y", "r.x",
                                                          "r.y", "M.m11", "M.m12", "M.m22"};
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     return bilinear_form(x[6], x[7], x[8], T(x[0] - x[2]), T(x[1] - x[3]), T(x[4] - x[2]), T(x[5] - x[3]));
   }
 };

@@ -14,7 +14,7 @@ struct OrientationKernel {
   static constexpr std::array<int, arity> groups{0, 0, 0, 0, 0, 0};
   static constexpr std::array<const char*, arity> inputs{"a.x", "a.y", "b.x", "b.y", "c.x", "c.y"};
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     return (x[2] - x[0]) * (x[5] - x[1]) - (x[3] - x[1]) * (x[4] - x[0]);
   }
 };

@@ -28,13 +28,13 @@ struct Sym3 {
 
 // (dx, dy) M (dx, dy)ᵀ, the squared length of (dx, dy) measured by M (LS §2: d_p(a, b)²).
 template <class T>
-T quadratic_form(const T& m11, const T& m12, const T& m22, const T& dx, const T& dy) {
+constexpr T quadratic_form(const T& m11, const T& m12, const T& m22, const T& dx, const T& dy) {
   return dx * (m11 * dx + m12 * dy) + dy * (m12 * dx + m22 * dy);
 }
 
 // (ax, ay) M (bx, by)ᵀ, the M-inner product.
 template <class T>
-T bilinear_form(const T& m11, const T& m12, const T& m22, const T& ax, const T& ay, const T& bx, const T& by) {
+constexpr T bilinear_form(const T& m11, const T& m12, const T& m22, const T& ax, const T& ay, const T& bx, const T& by) {
   return ax * (m11 * bx + m12 * by) + ay * (m12 * bx + m22 * by);
 }
 
