@@ -66,6 +66,8 @@ template <class K, int k = 0>
     return 0;
   } else {
     constexpr ErrorModel::Monomial t = model[k - 1];
+    static_assert(t.degree[0] + t.degree[1] + t.degree[2] <= 8,
+                  "the range guard's underflow and overflow argument assumes total degree <= 8");
     constexpr double err = t.err * (1 + 0x1p-40);
     const double term = err * power_of<t.degree[0]>(max[0]) * power_of<t.degree[1]>(max[1]) *
                         power_of<t.degree[2]>(max[2]);

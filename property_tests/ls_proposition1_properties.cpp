@@ -64,6 +64,20 @@ RC_GTEST_PROP(LS_P1, TauIsSubmultiplicative, ()) {
   RC_ASSERT(tau_at_most(p.M, q.M, Rational(tau2_above(p.M, a.M) * tau2_above(a.M, q.M))));
 }
 
+// compare_tau (sums of square roots, exact) agrees with the certified enclosures of τ² wherever
+// those are disjoint, and says τ(p, q) > τ(p, p) = 1 for distinct metrics.
+RC_GTEST_PROP(LS_P1, TauComparisonAgreesWithEnclosures, ()) {
+  const auto [p, q] = *metric_pair();
+  const auto [a, b] = *metric_pair();
+  RC_TAG(p.kind + "/" + a.kind);
+  const Sign s = compare_tau(p.M, q.M, a.M, b.M);
+  const anisocert::theory::Interval t1 = tau_squared_enclosure(p.M, q.M, prec), t2 = tau_squared_enclosure(a.M, b.M, prec);
+  if (certainly_less(t1, t2)) RC_ASSERT(s == Sign::negative);
+  if (certainly_less(t2, t1)) RC_ASSERT(s == Sign::positive);
+  if (s == Sign::zero) RC_ASSERT(!certainly_less(t1, t2) && !certainly_less(t2, t1));
+  RC_ASSERT(compare_tau(p.M, q.M, p.M, p.M) == (p.kind == "equal" ? Sign::zero : compare_tau_squared(p.M, q.M, Rational(1))));
+}
+
 // BWY Definition 2.1: γ(p, q) = max(‖F_q F_p⁻¹‖₂, ‖F_p F_q⁻¹‖₂), so γ(p, q) <= γ ⇔ γ² I − AᵀA ⪰ 0
 // for A = F_q F_p⁻¹ and for A = F_p F_q⁻¹: computed from the frames F, not from the metrics.
 RC_GTEST_PROP(BWY_D21, DistortionFromFramesAgreesWithMetrics, ()) {

@@ -11,6 +11,7 @@
 #include "predicates/angle.hpp"
 #include "predicates/orientation.hpp"
 #include "predicates/distortion.hpp"
+#include "predicates/length_compare.hpp"
 #include "predicates/wedge.hpp"
 #include "property_tests/generators/metrics.hpp"
 
@@ -75,6 +76,8 @@ RC_GTEST_PROP(LS_T9, ChiPositiveMakesTheVertexWedgedAndBoundsAngles, ()) {
       if (i != j) l2 = std::min(l2, d2(c.M[i], c.v[i], c.v[j]));
   Rational beta = sqrt_above(c.r * c.r / l2);
   if (2 * beta * beta < 1) beta = Rational(7072, 10000);
+  RC_ASSERT(radius_edge_at_most(Rational(beta * beta), c.q, c.v, c.M));  // r/ℓ <= β, the predicate agrees
+  RC_ASSERT(!radius_edge_at_most(Rational(c.r * c.r / l2 * (1 - ten_to_minus(20))), c.q, c.v, c.M));
   Rational g = 1;  // γ²
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j) g = std::max(g, rational_above(tau_squared_enclosure(c.M[i], c.M[j], prec)));

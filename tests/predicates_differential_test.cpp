@@ -228,6 +228,31 @@ TEST(AngleAgainstBound, AgreesWithTheSquareRootForm) {
   }
 }
 
+TEST(Encroachment, DiametralCircleOfTheMetric) {
+  // M = diag(4, 1): the diametral M-circle of a = (−1, 0), b = (1, 0) is 4x² + y² = 4 (centre 0,
+  // M-radius 2), so (0, 2) is on it, (0, 1) inside, (0, 3) and (1, 1) outside: (a − p)ᵀM(b − p).
+  const Sym2<Rational> M{4, 0, 1};
+  const Point2<Rational> a{-1, 0}, b{1, 0};
+  EXPECT_FALSE(encroaches(Point2<Rational>{0, 2}, a, b, M));  // (−1,−2)M(1,−2) = −4 + 4 = 0
+  EXPECT_TRUE(encroaches(Point2<Rational>{0, 1}, a, b, M));   // −4 + 1 < 0
+  EXPECT_FALSE(encroaches(Point2<Rational>{0, 3}, a, b, M));  // −4 + 9 > 0
+  EXPECT_FALSE(encroaches(Point2<Rational>{1, 1}, a, b, M));  // (−2,−1)M(0,−1) = 1 > 0
+}
+
+TEST(RadiusEdge, RightIsoscelesTriangleHasRatioOneOverSqrt2) {
+  // q = 0, v = (1, 0), (0, 1), (−1, 0) with M = I: r = 1, ℓ = √2, r/ℓ = 1/√2: B² = 1/2 exactly.
+  const Sym2<Rational> I{1, 0, 1};
+  const std::array<Point2<Rational>, 3> v{Point2<Rational>{1, 0}, Point2<Rational>{0, 1}, Point2<Rational>{-1, 0}};
+  const Point2<Rational> q{0, 0};
+  EXPECT_TRUE(radius_edge_at_most(Rational(1, 2), q, v, {I, I, I}));
+  EXPECT_FALSE(radius_edge_at_most(Rational(1, 2) - Rational(1, 1000000000), q, v, {I, I, I}));
+  // The same with doubles (0.5 is exact).
+  const Sym2<double> Id{1, 0, 1};
+  const std::array<Point2<double>, 3> vd{Point2<double>{1, 0}, Point2<double>{0, 1}, Point2<double>{-1, 0}};
+  EXPECT_TRUE(radius_edge_at_most(0.5, Point2<double>{0, 0}, vd, {Id, Id, Id}));
+  EXPECT_FALSE(radius_edge_at_most(std::nextafter(0.5, 0.0), Point2<double>{0, 0}, vd, {Id, Id, Id}));
+}
+
 TEST(SqrtSign, HandCheckedCases) {
   // 1 + √2 − √5 = 1 + 1.41421 − 2.23607 > 0; 3 − √2 − √3 < 0 (3 − 3.146); 2√2 − √8 = 0.
   EXPECT_EQ(sign_of_root_sum(1, 1, 2, -1, 5), Sign::positive);
