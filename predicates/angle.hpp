@@ -51,6 +51,7 @@ struct AngleSinKernel {
 // k >= 0: cos θ > k ⇔ uᵀMw > 0 and (uᵀMw)² > k²|u|²|w|²; k < 0 symmetrically.
 template <class S>
 Sign compare_angle_cos(const Point2<S>& a, const Point2<S>& b, const Point2<S>& c, const Sym2<S>& M, const S& k) {
+  require_finite<S>("angle against cos bound", {{"k", k}});  // its sign is read before any kernel
   const Sign dot = metric_dot_sign(a, b, c, M);
   const Sign ks = k > 0 ? Sign::positive : k < 0 ? Sign::negative : Sign::zero;
   if (dot != ks) return static_cast<int>(dot) > static_cast<int>(ks) ? Sign::positive : Sign::negative;
@@ -65,6 +66,7 @@ Sign compare_angle_cos(const Point2<S>& a, const Point2<S>& b, const Point2<S>& 
 template <class S>
 bool angle_at_least_arcsin(const Point2<S>& a, const Point2<S>& b, const Point2<S>& c, const Sym2<S>& M,
                            const S& sin2) {
+  require_finite<S>("angle against sin² bound", {{"sin2", sin2}});  // the obtuse case never reads it
   if (metric_dot_sign(a, b, c, M) != Sign::positive) return true;  // θ >= 90°
   return filtered_sign<AngleSinKernel>(std::array<S, 10>{a.x, a.y, b.x, b.y, c.x, c.y, M.m11, M.m12, M.m22, sin2}) !=
          Sign::positive;

@@ -1,10 +1,12 @@
 #include "predicates/distortion.hpp"
 
+#include "predicates/metric.hpp"
 #include "predicates/sqrt_sign.hpp"
 
 namespace anisocert::predicates {
 
 TauSquared tau_squared(const Sym2<Rational>& P, const Sym2<Rational>& Q) {
+  Metric2{P}, Metric2{Q};  // throws NotPositiveDefinite, naming the entry
   const Rational A = P.m11 * P.m22 - P.m12 * P.m12, C = Q.m11 * Q.m22 - Q.m12 * Q.m12;
   const Rational B = P.m11 * Q.m22 + P.m22 * Q.m11 - 2 * P.m12 * Q.m12;
   return {B, B * B - 4 * A * C, 2 * (A < C ? A : C)};

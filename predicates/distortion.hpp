@@ -38,6 +38,8 @@ struct ScaledDifferenceDeterminantKernel {
 // g·P − Q ⪰ 0 (a 2×2 symmetric matrix is PSD iff its diagonal and determinant are >= 0).
 template <class S>
 bool scaled_difference_psd(const S& g, const Sym2<S>& P, const Sym2<S>& Q) {
+  require_finite<S>("distortion", {{"gamma2", g}, {"P.m11", P.m11}, {"P.m12", P.m12}, {"P.m22", P.m22},
+                                {"Q.m11", Q.m11}, {"Q.m12", Q.m12}, {"Q.m22", Q.m22}});
   return filtered_sign<ScaledDifferenceDiagonalKernel>(std::array<S, 3>{g, P.m11, Q.m11}) != Sign::negative &&
          filtered_sign<ScaledDifferenceDiagonalKernel>(std::array<S, 3>{g, P.m22, Q.m22}) != Sign::negative &&
          filtered_sign<ScaledDifferenceDeterminantKernel>(
@@ -51,7 +53,10 @@ bool tau_at_most(const Sym2<S>& Mp, const Sym2<S>& Mq, const S& gamma2) {
 }
 
 // τ² as (B + √D) / m, D = B² − 4AC >= 0, m = 2 min(A, C) > 0: exact data of the quadratic
-// irrational.
+// irrational. The functions below need positive definite metrics and throw
+// NotPositiveDefinite otherwise. (The double/rational sign predicates of this layer accept any
+// symmetric matrices: they return the exact sign of their polynomial, and checking that a
+// metric is positive definite is the job of whoever builds it, e.g. Metric2.)
 struct TauSquared {
   Rational B, D, m;
 };

@@ -20,8 +20,9 @@ struct FilterInterval {
   FilterInterval() : lo(0), hi(0) {}
   FilterInterval(double x) : lo(x), hi(x) {}  // NOLINT: a double is an exact point
   FilterInterval(double l, double h) : lo(l), hi(h) {}
-  // A double interval around the rational q: mpq_get_d truncates (error < 1 ulp toward 0),
-  // and widening by one ulp on both sides covers that.
+  // A double interval around the rational q. Boost 1.74 converts gmp_rational to double by
+  // rounding to nearest at 53 bits (twice below 2⁻¹⁰²², still within one subnormal step);
+  // overflow gives ±∞ and underflow 0. Widening by one ulp on both sides covers every case.
   static FilterInterval around(const Rational& q) {
     const double d = q.convert_to<double>();
     return widen(d, d);

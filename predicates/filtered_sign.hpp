@@ -20,6 +20,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <initializer_list>
+#include <type_traits>
 #include <utility>
 
 namespace anisocert::predicates {
@@ -93,6 +95,15 @@ template <class K>
 }
 
 [[noreturn]] void throw_non_finite(const char* predicate, const char* input, double value);
+
+// For predicates that combine several kernels and may decide before every input reached a
+// kernel: rejects a NaN or an infinity among double inputs up front (no-op for rationals).
+template <class S>
+void require_finite(const char* predicate, std::initializer_list<std::pair<const char*, S>> inputs) {
+  if constexpr (std::is_same_v<S, double>)
+    for (const auto& [name, value] : inputs)
+      if (!std::isfinite(value)) throw_non_finite(predicate, name, value);
+}
 
 template <class K>
 Sign exact_sign(const std::array<Rational, K::arity>& x) {

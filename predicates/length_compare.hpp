@@ -34,10 +34,15 @@ Sign compare_scaled_lengths(const S& s, const Point2<S>& a, const Point2<S>& b, 
 
 // Radius-edge ratio r/ℓ <= B for a Voronoi vertex q of the sites v₀, v₁, v₂ (LS Theorem 9,
 // BWY §4): r = d_{v₀}(q), ℓ = min over pairs of d(vᵢ, vⱼ) = min(d_{vᵢ}(vⱼ), d_{vⱼ}(vᵢ)); so
-// r/ℓ <= B ⇔ B²·d_{vᵢ}(vⱼ)² >= r² for all six ordered pairs. B2 = B².
+// r/ℓ <= B ⇔ B²·d_{vᵢ}(vⱼ)² >= r² for all six ordered pairs. B2 = B². q must be the vertex
+// (d_{vᵢ}(q) equal for the three sites); r is measured from v₀.
 template <class S>
 bool radius_edge_at_most(const S& B2, const Point2<S>& q, const std::array<Point2<S>, 3>& v,
                          const std::array<Sym2<S>, 3>& M) {
+  require_finite<S>("radius-edge ratio", {{"B2", B2}, {"q.x", q.x}, {"q.y", q.y}});
+  for (int i = 0; i < 3; ++i)
+    require_finite<S>("radius-edge ratio", {{"v.x", v[i].x}, {"v.y", v[i].y}, {"M.m11", M[i].m11}, {"M.m12", M[i].m12},
+                                         {"M.m22", M[i].m22}});
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       if (i != j && compare_scaled_lengths(B2, v[i], v[j], M[i], v[0], q, M[0]) == Sign::negative) return false;

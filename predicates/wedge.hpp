@@ -9,9 +9,10 @@ struct WedgePosition {
   Sign toward_w;  // sign((q − v)ᵀ M_v (w − v)); <= 0: q is outside, on v's side
   Sign toward_v;  // sign((q − w)ᵀ M_w (v − w)); <= 0: q is outside, on w's side
   bool inside() const { return toward_w == Sign::positive && toward_v == Sign::positive; }
+  // Outside on v's side: the M_v-angle at v between q and w is at least 90°.
+  bool on_v_side() const { return toward_w != Sign::positive; }
   // "Outside wedge(v, w) on the side of w" (LS Lemma 5): the M_w-angle at w between q and v
   // is at least 90°.
-  bool on_v_side() const { return toward_w != Sign::positive; }
   bool on_w_side() const { return toward_v != Sign::positive; }
 };
 

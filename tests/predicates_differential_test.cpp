@@ -9,6 +9,7 @@
 #include "predicates/encroachment.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/length_compare.hpp"
+#include "predicates/metric.hpp"
 #include "predicates/orientation.hpp"
 #include "predicates/sqrt_sign.hpp"
 #include "predicates/wedge.hpp"
@@ -59,12 +60,17 @@ struct Random {
       if (groups[i] == 0) x[i] = coordinate(ec);
       if (groups[i] == 2) x[i] = std::ldexp(uniform(0, 1), es);
     }
-    // Metric entries come in (m11, m12, m22) triples in every kernel.
-    for (std::size_t i = 0; i + 2 < N; ++i)
-      if (groups[i] == 1 && groups[i + 1] == 1 && groups[i + 2] == 1 && x[i] == 0) {
-        auto m = metric(em);
-        x[i] = m[0], x[i + 1] = m[1], x[i + 2] = m[2];
-        i += 2;
+    // Metric entries come in (m11, m12, m22) triples, except the single entries of the
+    // distortion's diagonal kernel.
+    for (std::size_t i = 0; i < N; ++i)
+      if (groups[i] == 1 && x[i] == 0) {
+        if (i + 2 < N && groups[i + 1] == 1 && groups[i + 2] == 1) {
+          auto m = metric(em);
+          x[i] = m[0], x[i + 1] = m[1], x[i + 2] = m[2];
+          i += 2;
+        } else {
+          x[i] = std::ldexp(uniform(0.1, 1), em);
+        }
       }
     return x;
   }
@@ -149,8 +155,9 @@ TEST(FilteredVsExact, ExactlyDegenerateAndNearlyDegenerate) {
     const auto right = F.at(c, 0, 5 * k), base = F.at(c, 5 * k, 0);
     const std::array<double, 10> right_cos{base[0], base[1], c[0], c[1], right[0], right[1], M[0], M[1], M[2], 0};
     const std::array<double, 10> right_sin{base[0], base[1], c[0], c[1], right[0], right[1], M[0], M[1], M[2], 1};
-    // Equal metrics, γ² = 1: g·P − Q = 0.
+    // Equal metrics, γ² = 1: g·P − Q = 0; and g·p11 = q11 with g = 2.
     const std::array<double, 7> equal_metrics{1, M[0], M[1], M[2], M[0], M[1], M[2]};
+    const std::array<double, 3> equal_diagonal{2, M[0], 2 * M[0]};
 
     zeros += checked<OrientationKernel>(collinear) == Sign::zero;
     zeros += checked<SideOfBisectorKernel>(bisector) == Sign::zero;
@@ -161,7 +168,9 @@ TEST(FilteredVsExact, ExactlyDegenerateAndNearlyDegenerate) {
     zeros += checked<AngleCosKernel>(right_cos) == Sign::zero;
     zeros += checked<AngleSinKernel>(right_sin) == Sign::zero;
     zeros += checked<ScaledDifferenceDeterminantKernel>(equal_metrics) == Sign::zero;
+    zeros += checked<ScaledDifferenceDiagonalKernel>(equal_diagonal) == Sign::zero;
     for (int n = 0; n < 3; ++n) {
+      checked<ScaledDifferenceDiagonalKernel>(r.nudged(equal_diagonal));
       checked<OrientationKernel>(r.nudged(collinear));
       checked<SideOfBisectorKernel>(r.nudged(bisector));
       checked<MetricDotKernel>(r.nudged(wedge_line));
@@ -173,7 +182,63 @@ TEST(FilteredVsExact, ExactlyDegenerateAndNearlyDegenerate) {
       checked<ScaledDifferenceDeterminantKernel>(r.nudged(equal_metrics));
     }
   }
-  EXPECT_EQ(zeros, 400 * 9);  // every constructed degeneracy is exactly degenerate
+  EXPECT_EQ(zeros, 400 * 10);  // every constructed degeneracy is exactly degenerate
+}
+
+TEST(FilteredVsExact, MixedMagnitudesAndTheEdgesOfTheStaticRange) {
+  // Review finding: exercise the underflow allowance (tiny coordinates beside a group max of
+  // about 1), group maxima exactly at 2^±50 and just outside, and subnormal inputs.
+  Random r;
+  const double edges[] = {0x1p50, 0x1p-50, std::nextafter(0x1p50, INFINITY), std::nextafter(0x1p-50, 0.0), 1.0};
+  for (int t = 0; t < 3000; ++t) {
+    std::array<double, 11> x = r.inputs(InCircleKernel::groups);
+    std::array<double, 12> y = r.inputs(SideOfBisectorKernel::groups);
+    for (std::size_t i = 0; i < 8; ++i)  // some coordinates tiny, even subnormal
+      if (r.integer(0, 2) == 0) x[i] = std::ldexp(r.uniform(-1, 1), r.integer(-1074, -300));
+    x[r.integer(0, 7)] = edges[r.integer(0, 4)] * (r.integer(0, 1) ? 1 : -1);
+    y[r.integer(0, 3)] = std::ldexp(r.uniform(-1, 1), r.integer(-1074, -900));
+    y[4] = edges[r.integer(0, 4)];
+    checked<InCircleKernel>(x);
+    checked<SideOfBisectorKernel>(y);
+    // Points nearly coincident at tiny scale: differences are subnormal, products underflow.
+    const double base = std::ldexp(1.0, r.integer(-1074, -1000));
+    checked<OrientationKernel>({base, 0, 2 * base, base, 3 * base, std::nextafter(2 * base, 1.0)});
+  }
+}
+
+TEST(FilterInterval, EnclosesRationalsBeyondTheDoubleRange) {
+  using anisocert::Integer;
+  const Integer big = boost::multiprecision::pow(Integer{10}, 400);
+  for (const Rational& q : {Rational(big), Rational(-big), Rational(1) / Rational(big), Rational(-1) / Rational(big),
+                            Rational(3) / Rational(boost::multiprecision::pow(Integer{2}, 1075)),
+                            Rational(1, 3), Rational(0)}) {
+    const FilterInterval i = FilterInterval::around(q);
+    EXPECT_TRUE(std::isinf(i.lo) || Rational(i.lo) <= q) << q;
+    EXPECT_TRUE(std::isinf(i.hi) || Rational(i.hi) >= q) << q;
+    if (std::isinf(i.lo)) {
+      EXPECT_LT(i.lo, 0);
+    }
+    if (std::isinf(i.hi)) {
+      EXPECT_GT(i.hi, 0);
+    }
+  }
+}
+
+TEST(BadInput, EarlyDecisionsStillRejectNonFiniteInputs) {
+  // Review finding: a wrapper that decides from its first kernel must not answer for a NaN in
+  // an input it did not read yet.
+  const Point2<double> a{1, 0}, b{0, 0}, c{1, 1}, o{-1, 0.5};
+  const Sym2<double> I{1, 0, 1};
+  EXPECT_THROW(compare_angle_cos(a, b, c, I, double(NAN)), NonFiniteInput);
+  EXPECT_THROW(angle_at_least_arcsin(o, b, a, I, double(NAN)), NonFiniteInput);  // obtuse: sin2 unread
+  EXPECT_THROW(radius_edge_at_most(0.1, b, {a, Point2<double>{0, 1}, Point2<double>{NAN, 0}}, {I, I, I}),
+               NonFiniteInput);
+  EXPECT_THROW(tau_at_most(Sym2<double>{1, 0, 1}, Sym2<double>{4, NAN, 1}, 1.0), NonFiniteInput);
+  // τ of matrices that are not positive definite is refused, not answered.
+  EXPECT_THROW(compare_tau_squared(Sym2<Rational>{0, 0, 0}, Sym2<Rational>{1, 0, 1}, Rational(2)), NotPositiveDefinite);
+  EXPECT_THROW(compare_tau(Sym2<Rational>{1, 0, -1}, Sym2<Rational>{1, 0, 1}, Sym2<Rational>{1, 0, 1},
+                           Sym2<Rational>{1, 0, 1}),
+               NotPositiveDefinite);
 }
 
 TEST(FilteredVsExact, StaticFilterDecidesRandomInputs) {

@@ -30,12 +30,13 @@ struct Tagged {
   std::string kind;
 };
 
-// Picks one of several generators by an index that never shrinks, so that shrinking a
-// counterexample stays inside its class.
+// Picks one of several generators, uniformly at every test size, by an index that never
+// shrinks, so that shrinking a counterexample stays inside its class.
 template <class T>
 rc::Gen<T> one_of_classes(std::vector<rc::Gen<T>> gens) {
   const int n = static_cast<int>(gens.size());
-  return rc::gen::mapcat(rc::gen::noShrink(rc::gen::inRange(0, n)), [gens](int i) { return gens[i]; });
+  return rc::gen::mapcat(rc::gen::noShrink(rc::gen::resize(rc::kNominalSize, rc::gen::inRange(0, n))),
+                         [gens](int i) { return gens[i]; });
 }
 
 // A rational point on the unit circle, ((m²−n²), 2mn)/(m²+n²) with signs and order varied.
