@@ -21,31 +21,30 @@ inline constexpr std::array<const char*, 10> angle_inputs{"a.x", "a.y", "b.x",  
                                                            "c.y", "M.m11", "M.m12", "M.m22", "bound"};
 inline constexpr std::array<int, 10> angle_groups{0, 0, 0, 0, 0, 0, 1, 1, 1, 2};
 
-// P = (uᵀMw)² − k² (uᵀMu)(wᵀMw): sign(cos²θ − k²). Degree 4 / 2 / 2 (coordinates, metric, k).
-struct AngleCosKernel {
-  static constexpr const char* name = "angle against cos bound";
-  static constexpr std::size_t arity = 10;
-  static constexpr auto groups = angle_groups;
-  static constexpr auto inputs = angle_inputs;
-  template <class T>
-  static constexpr T eval(const std::array<T, arity>& x) {
-    const auto [dot, norms] = angle_dot_and_norms(x);
-    return dot * dot - x[9] * x[9] * norms;
-  }
-};
+// The bound on θ: a cos k, or a sin² s².
+enum class AngleBound { cos, sin2 };
 
-// P = (uᵀMw)² − (1 − s²)(uᵀMu)(wᵀMw): sign(cos²θ − (1 − s²)) = sign(s² − sin²θ).
-struct AngleSinKernel {
-  static constexpr const char* name = "angle against sin² bound";
+// P = (uᵀMw)² − K · (uᵀMu)(wᵀMw), degree 4 / 2 / 2 (coordinates, metric, bound), with
+//   K = k²      (AngleBound::cos):  sign(cos²θ − k²);
+//   K = 1 − s²  (AngleBound::sin2): sign(cos²θ − (1 − s²)) = sign(s² − sin²θ).
+template <AngleBound bound>
+struct AngleKernel {
+  static constexpr const char* name = bound == AngleBound::cos ? "angle against cos bound" : "angle against sin² bound";
   static constexpr std::size_t arity = 10;
   static constexpr auto groups = angle_groups;
   static constexpr auto inputs = angle_inputs;
   template <class T>
   static constexpr T eval(const std::array<T, arity>& x) {
     const auto [dot, norms] = angle_dot_and_norms(x);
-    return dot * dot - norms + x[9] * norms;
+    if constexpr (bound == AngleBound::cos) {
+      return dot * dot - x[9] * x[9] * norms;
+    } else {
+      return dot * dot - norms + x[9] * norms;
+    }
   }
 };
+using AngleCosKernel = AngleKernel<AngleBound::cos>;
+using AngleSinKernel = AngleKernel<AngleBound::sin2>;
 
 // sign(cos θ − k) for a rational (or double) k in [−1, 1], θ = ∠abc measured by M, a ≠ b ≠ c.
 // k >= 0: cos θ > k ⇔ uᵀMw > 0 and (uᵀMw)² > k²|u|²|w|²; k < 0 symmetrically.

@@ -15,13 +15,6 @@ using namespace anisocert::predicates;
 using namespace anisocert::gen;
 using anisocert::gen::ten_to_minus;
 
-namespace {
-const mpfr_prec_t prec = 200;
-Rational tau2_above(const Sym2<Rational>& P, const Sym2<Rational>& Q) {
-  return rational_above(tau_squared_enclosure(P, Q, prec));
-}
-}  // namespace
-
 // LS Lemma 5: q on the bisector of v and w, outside wedge(v, w) on w's side, τ(v, w) <= γ ⇒
 // d_v(q) = d_w(q) >= d_w(v)/√(γ² − 1), i.e. (γ² − 1)·d_v(q)² >= d_w(v)².
 RC_GTEST_PROP(LS_L5, FarFromTheSitesOutsideTheWedge, ()) {

@@ -15,10 +15,6 @@ using namespace anisocert::gen;
 
 namespace {
 const mpfr_prec_t prec = 200;
-
-Rational tau2_above(const Sym2<Rational>& P, const Sym2<Rational>& Q) {
-  return rational_above(tau_squared_enclosure(P, Q, prec));
-}
 }  // namespace
 
 RC_GTEST_PROP(LS_P1, TauIsAtLeastOneSymmetricAndExactlyOneForEqualMetrics, ()) {

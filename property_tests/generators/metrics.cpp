@@ -1,5 +1,6 @@
 #include "property_tests/generators/metrics.hpp"
 
+#include "predicates/distortion.hpp"
 #include "theory/decimal_enclosure.hpp"
 
 namespace anisocert::gen {
@@ -93,6 +94,10 @@ Point2<Rational> at_distance(const Point2<Rational>& q, const Frame& F, const Ra
 
 Rational d2(const Sym2<Rational>& M, const Point2<Rational>& a, const Point2<Rational>& b) {
   return predicates::quadratic_form(M.m11, M.m12, M.m22, Rational(b.x - a.x), Rational(b.y - a.y));
+}
+
+Rational tau2_above(const Sym2<Rational>& P, const Sym2<Rational>& Q) {
+  return rational_above(predicates::tau_squared_enclosure(P, Q, 200));
 }
 
 Rational rational_above(const theory::Interval& x) { return parse_rational(theory::to_decimal(x, 30).hi); }
