@@ -1,0 +1,32 @@
+#include "oracle/bivariate.hpp"
+
+#include <algorithm>
+
+namespace anisocert::oracle {
+
+Bivariate& Bivariate::add(int i, int j, const Rational& c) {
+  Rational& t = terms[{i, j}];
+  t += c;
+  if (t == 0) terms.erase({i, j});
+  return *this;
+}
+
+int Bivariate::degree_x() const {
+  int d = -1;
+  for (const auto& [ij, c] : terms) d = std::max(d, ij.first);
+  return d;
+}
+
+int Bivariate::degree_y() const {
+  int d = -1;
+  for (const auto& [ij, c] : terms) d = std::max(d, ij.second);
+  return d;
+}
+
+Bivariate Conic::polynomial() const {
+  Bivariate p;
+  p.add(2, 0, a).add(1, 1, b).add(0, 2, c).add(1, 0, d).add(0, 1, e).add(0, 0, f);
+  return p;
+}
+
+}  // namespace anisocert::oracle
