@@ -1,0 +1,135 @@
+// Exact conic-conic intersection against closed forms (each expected point worked out by
+// hand in the comment), and exact signs at the intersection points, including the trap that
+// CGAL 5.5's Algebraic_kernel_d_2::Sign_at_2 falls into (DESIGN.md § Numbers).
+
+#include "oracle/conic_intersection.hpp"
+
+#include <gtest/gtest.h>
+
+using anisocert::parse_rational;
+using anisocert::Rational;
+using namespace anisocert::oracle;
+
+namespace {
+
+ConicIntersection run(const Conic& A, const Conic& B) { return intersect(A, B); }
+
+void expect_point(const IntersectionPoint& p, const char* x, const char* y, int m, int digits = 25) {
+  EXPECT_EQ(p.point.x_decimal(digits), x);
+  EXPECT_EQ(p.point.y_decimal(digits), y);
+  EXPECT_EQ(p.multiplicity, m);
+}
+
+Bivariate x_minus_y() { return Bivariate{}.add(1, 0, 1).add(0, 1, -1); }
+
+}  // namespace
+
+TEST(ConicIntersection, FourRealPoints) {
+  // x² + y² = 1 and x² + 4y² = 2: 3y² = 1, x² = 2/3: (±√(2/3), ±1/√3).
+  const auto r = run({1, 0, 1, 0, 0, -1}, {1, 0, 4, 0, 0, -2});
+  ASSERT_FALSE(r.shared_component);
+  ASSERT_EQ(r.points.size(), 4u);
+  // √(2/3) = 0.81649658092772603273242802…, 1/√3 = 0.57735026918962576450914878… (25 digits, trailing 0 dropped)
+  expect_point(r.points[0], "-0.816496580927726032732428", "-0.5773502691896257645091488", 1);
+  expect_point(r.points[3], "0.816496580927726032732428", "0.5773502691896257645091488", 1);
+}
+
+TEST(ConicIntersection, TwoTangencies) {
+  // x² + y² = 1 and x² + 4y² = 1 touch at (±1, 0), each of multiplicity 2.
+  const auto r = run({1, 0, 1, 0, 0, -1}, {1, 0, 4, 0, 0, -1});
+  ASSERT_EQ(r.points.size(), 2u);
+  expect_point(r.points[0], "-1", "0", 2);
+  expect_point(r.points[1], "1", "0", 2);
+  // Externally tangent circles x² + y² = 1 and (x − 2)² + y² = 1 at (1, 0).
+  const auto t = run({1, 0, 1, 0, 0, -1}, {1, 0, 1, -4, 0, 3});
+  ASSERT_EQ(t.points.size(), 1u);
+  expect_point(t.points[0], "1", "0", 2);
+}
+
+TEST(ConicIntersection, NoRealPointAndIdenticalConics) {
+  EXPECT_TRUE(run({1, 0, 1, 0, 0, -1}, {1, 0, 1, 0, 0, -4}).points.empty());  // concentric circles
+  EXPECT_TRUE(run({1, 0, 1, 0, 0, 1}, {1, 0, -1, 0, 0, -1}).points.empty());  // an empty conic
+  const auto same = run({1, 0, 1, 0, 0, -1}, {2, 0, 2, 0, 0, -2});            // proportional: identical
+  EXPECT_TRUE(same.shared_component);
+  EXPECT_TRUE(same.points.empty());
+}
+
+TEST(ConicIntersection, LinePairComponents) {
+  // x² − y² = (x − y)(x + y) and xy: only the origin, where both are singular: multiplicity 4.
+  const auto r = run({1, 0, -1, 0, 0, 0}, {0, 1, 0, 0, 0, 0});
+  ASSERT_EQ(r.points.size(), 1u);
+  expect_point(r.points[0], "0", "0", 4);
+  // x(y − 1) and y(x − 1): (0, 0) and (1, 1), transversal.
+  const auto s = run({0, 1, 0, -1, 0, 0}, {0, 1, 0, 0, -1, 0});
+  ASSERT_EQ(s.points.size(), 2u);
+  expect_point(s.points[0], "0", "0", 1);
+  expect_point(s.points[1], "1", "1", 1);
+  // x(y − 1) and x²: the line x = 0 is shared.
+  EXPECT_TRUE(run({0, 1, 0, -1, 0, 0}, {1, 0, 0, 0, 0, 0}).shared_component);
+  // (x − 1)(x − 2) and y² − 1: the four points (1, ±1), (2, ±1).
+  const auto g = run({1, 0, 0, -3, 0, 2}, {0, 0, 1, 0, 0, -1});
+  ASSERT_EQ(g.points.size(), 4u);
+  expect_point(g.points[1], "1", "1", 1);
+  expect_point(g.points[2], "2", "-1", 1);
+}
+
+TEST(ConicIntersection, LineTangentToHyperbola) {
+  const auto r = run({1, 0, -1, 0, 0, -1}, {0, 0, 0, 1, 0, -1});  // x² − y² = 1 and x = 1
+  ASSERT_EQ(r.points.size(), 1u);
+  expect_point(r.points[0], "1", "0", 2);
+}
+
+TEST(ConicIntersection, RejectsTheZeroConic) {
+  EXPECT_THROW(run({0, 0, 0, 0, 0, 0}, {1, 0, 1, 0, 0, -1}), std::invalid_argument);
+  EXPECT_TRUE(run({0, 0, 0, 0, 0, 5}, {1, 0, 1, 0, 0, -1}).points.empty());  // 5 = 0: no point
+}
+
+// Regression of the kind "validating another implementation": CGAL 5.5's
+// Algebraic_kernel_d_2::Sign_at_2(f, r) returns the sign of the canonicalized curve of f and
+// flips it for f = x − y at the intersections of x² + 4y² = 4 and x² − y² = 1. The points are
+// (±√(8/5), ±√(3/5)) (5x² = 8 by elimination), so x − y has the sign of x: √(8/5) > √(3/5).
+TEST(ConicIntersection, SignAtVertexIsTheTrueSign) {
+  const auto r = run({1, 0, 4, 0, 0, -4}, {1, 0, -1, 0, 0, -1});
+  ASSERT_EQ(r.points.size(), 4u);
+  for (const IntersectionPoint& p : r.points) {
+    const Sign expected = p.point.sign_of(Bivariate{}.add(1, 0, 1)) ;  // sign(x)
+    EXPECT_EQ(p.point.sign_of(x_minus_y()), expected);
+    EXPECT_NE(expected, Sign::zero);
+    // x² = 8/5 exactly: the sign of 5x² − 8 is zero at every point.
+    EXPECT_EQ(p.point.sign_of(Bivariate{}.add(2, 0, 5).add(0, 0, -8)), Sign::zero);
+    EXPECT_EQ(p.point.sign_of(Bivariate{}.add(2, 0, 5).add(0, 0, -7)), Sign::positive);
+  }
+  EXPECT_EQ(r.points[0].point.sign_of(x_minus_y()), Sign::negative);
+  EXPECT_EQ(r.points[3].point.sign_of(x_minus_y()), Sign::positive);
+}
+
+TEST(AlgebraicPoints, SameVertexFromDifferentPairs) {
+  // (1, 1) is on x² + y² = 2, on xy = 1 and on x = y: reached from two different pairs.
+  const auto a = run({1, 0, 1, 0, 0, -2}, {0, 1, 0, 0, 0, -1});  // tangent at (±1, ±1)
+  const auto b = run({1, 0, 1, 0, 0, -2}, {0, 0, 0, 1, -1, 0});  // x = y: (±1, ±1)
+  ASSERT_EQ(a.points.size(), 2u);
+  ASSERT_EQ(b.points.size(), 2u);
+  EXPECT_TRUE(same_point(a.points[1].point, b.points[1].point));
+  EXPECT_FALSE(same_point(a.points[0].point, b.points[1].point));
+  EXPECT_TRUE(same_point(a.points[1].point, AlgebraicPoint::rational(1, 1)));
+  // A sample point of x² + y² = 2 above x = 1 is (1, ±1).
+  const auto sample = AlgebraicPoint::on_conic_at({1, 0, 1, 0, 0, -2}, 1);
+  ASSERT_EQ(sample.size(), 2u);
+  EXPECT_TRUE(same_point(sample[1], a.points[1].point));
+  // Coordinates compare exactly: √(2/3) (from the circle/ellipse pair) against 4/5 and 5/6.
+  const auto c = run({1, 0, 1, 0, 0, -1}, {1, 0, 4, 0, 0, -2});
+  EXPECT_EQ(compare_x(c.points[3].point, AlgebraicPoint::rational(Rational(4, 5), 0)), Sign::positive);
+  EXPECT_EQ(compare_x(c.points[3].point, AlgebraicPoint::rational(Rational(5, 6), 0)), Sign::negative);
+}
+
+TEST(RealAlgebraic, DecimalsAreCorrectlyRounded) {
+  // √2 = 1.41421356237309504880168872420969807856967187537694…
+  const auto r = real_roots(Polynomial(std::vector<Rational>{-2, 0, 1}));
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[1].decimal(30), "1.41421356237309504880168872421");
+  EXPECT_EQ(r[0].decimal(5), "-1.4142");
+  // Exact rational roots, powers of ten and ties: x = 1/10, x = 10, x = 0.125 at 2 digits (even).
+  EXPECT_EQ(real_roots(Polynomial(std::vector<Rational>{Rational(-1, 10), 1}))[0].decimal(10), "0.1");
+  EXPECT_EQ(real_roots(Polynomial(std::vector<Rational>{-100, 0, 1}))[1].decimal(10), "10");
+  EXPECT_EQ(real_roots(Polynomial(std::vector<Rational>{Rational(-1, 8), 1}))[0].decimal(2), "0.12");
+}
