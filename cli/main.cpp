@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = 0;
   anisocert::cli::add_theory_command(app, exit_code);
+  anisocert::cli::add_conics_command(app, exit_code);
   try {
     const auto known = app.get_subcommands([&](CLI::App* s) { return argc > 1 && s->check_name(argv[1]); });
     if (argc > 1 && argv[1][0] != '-' && known.empty())

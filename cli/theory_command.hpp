@@ -14,4 +14,7 @@ void add_theory_chi_command(CLI::App& theory, int& exit_code);
 void add_theory_bwy_command(CLI::App& theory, int& exit_code);
 void add_theory_lu_command(CLI::App& theory, int& exit_code);
 
+// `anisocert conics` (oracle/conic_intersection).
+void add_conics_command(CLI::App& app, int& exit_code);
+
 }  // namespace anisocert::cli

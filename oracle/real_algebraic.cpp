@@ -1,6 +1,7 @@
 #include "oracle/real_algebraic.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace anisocert::oracle {
@@ -161,18 +162,24 @@ void RealAlgebraic::refine_below(const Rational& width) const {
 
 Sign RealAlgebraic::sign_of(const Polynomial& q) const {
   if (q.is_zero()) return Sign::zero;
-  if (is_exact()) return q.sign_at(lo_);
-  // q(α) = 0 ⇔ α is a root of g = gcd(q, p); g divides the square-free p, so [lo, hi] holds at
-  // most one root of g, and holds α's exactly when g changes sign there.
-  const Polynomial g = gcd(q, p_);
-  if (g.degree() >= 1 && brackets_root(g, lo_, hi_)) return Sign::zero;
-  // q(α) ≠ 0: shrink the interval until q's range on it excludes 0.
-  while (true) {
+  const auto decided = [&]() -> std::optional<Sign> {
+    if (is_exact()) return q.sign_at(lo_);
     const auto [a, b] = q.range(lo_, hi_);
     if (a > 0) return Sign::positive;
     if (b < 0) return Sign::negative;
+    return std::nullopt;
+  };
+  // Fast path: the interval value of q on a few refinements of [lo, hi].
+  for (int k = 0; k < fast_refinements; ++k, refine())
+    if (auto s = decided()) return *s;
+  // Exact: q(α) = 0 ⇔ α is a root of g = gcd(q, p); g divides the square-free p, so [lo, hi]
+  // holds at most one root of g, and holds α's exactly when g changes sign there.
+  const Polynomial g = gcd(q, p_);
+  if (g.degree() >= 1 && brackets_root(g, lo_, hi_)) return Sign::zero;
+  // q(α) ≠ 0: refining must end with an interval value that excludes 0.
+  while (true) {
+    if (auto s = decided()) return *s;
     refine();
-    if (is_exact()) return q.sign_at(lo_);
   }
 }
 

@@ -27,8 +27,10 @@ class RealAlgebraic {
   void refine() const;
   void refine_below(const Rational& width) const;
 
-  // sign(q(α)), exact.
+  // sign(q(α)), exact: the interval value of q on up to `fast_refinements` refinements of the
+  // isolating interval first, then the exact zero test (a gcd) and refinement.
   Sign sign_of(const Polynomial& q) const;
+  static constexpr int fast_refinements = 16;
 
   // The value correctly rounded to `digits` significant decimal digits ("0" for zero),
   // positional or, beyond 10^±30, with an exponent "1.25e-40".

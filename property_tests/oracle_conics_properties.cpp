@@ -1,0 +1,116 @@
+// The oracle's exact conic intersection against a second, independent exact engine (FLINT
+// resultants + Calcium qqbar, second_engine/): the same shared-component verdict, the same
+// points (each qqbar point is proved equal to ours: it is a root of our defining polynomial
+// inside our isolating interval), the same multiplicities, order and signs of polynomials.
+
+#include "oracle/conic_intersection.hpp"
+#include "property_tests/generators/rationals.hpp"
+#include "property_tests/second_engine/qqbar_conics.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+
+using anisocert::Rational;
+using namespace anisocert::oracle;
+namespace qq = anisocert::second_engine;
+
+namespace {
+
+struct ConicPair {
+  Conic A, B;
+  std::string kind;
+};
+
+rc::Gen<Rational> small() { return rc::gen::map(rc::gen::inRange(-6, 7), [](int k) { return Rational(k, 2); }); }
+rc::Gen<Conic> conic() {
+  return rc::gen::apply([](Rational a, Rational b, Rational c, Rational d, Rational e, Rational f) { return Conic{a, b, c, d, e, f}; },
+                        small(), small(), small(), small(), small(), small());
+}
+
+// The line through p and q: (y_q − y_p) x − (x_q − x_p) y + (x_q y_p − x_p y_q).
+std::array<Rational, 3> line(std::pair<Rational, Rational> p, std::pair<Rational, Rational> q) {
+  return {q.second - p.second, p.first - q.first, q.first * p.second - p.first * q.second};
+}
+Conic product(const std::array<Rational, 3>& l, const std::array<Rational, 3>& m) {
+  return {l[0] * m[0], l[0] * m[1] + l[1] * m[0], l[1] * m[1], l[0] * m[2] + l[2] * m[0], l[1] * m[2] + l[2] * m[1],
+          l[2] * m[2]};
+}
+Conic combine(const Conic& P, const Rational& s, const Conic& Q) {
+  return {P.a + s * Q.a, P.b + s * Q.b, P.c + s * Q.c, P.d + s * Q.d, P.e + s * Q.e, P.f + s * Q.f};
+}
+
+rc::Gen<std::pair<Rational, Rational>> rpoint() { return rc::gen::pair(small(), small()); }
+
+rc::Gen<ConicPair> conic_pair() {
+  using P = std::pair<Rational, Rational>;
+  return rc::gen::mapcat(rc::gen::noShrink(rc::gen::resize(rc::kNominalSize, rc::gen::inRange(0, 5))), [](int k) -> rc::Gen<ConicPair> {
+    switch (k) {
+      case 0:
+        return rc::gen::apply([](Conic A, Conic B) { return ConicPair{A, B, "random"}; }, conic(), conic());
+      case 1:  // the pencil through four chosen points: L₁L₂ + λ L₃L₄ and L₁L₂ + μ L₃L₄
+        return rc::gen::apply(
+            [](P p1, P p2, P p3, P p4, Rational l, Rational m) {
+              const Conic Q1 = product(line(p1, p2), line(p3, p4)), Q2 = product(line(p1, p3), line(p2, p4));
+              return ConicPair{combine(Q1, l, Q2), combine(Q1, m, Q2), "through four points"};
+            },
+            rpoint(), rpoint(), rpoint(), rpoint(), small(), small());
+      case 2:  // tangent at a chosen point: A through p, B = A + λ T² with T the tangent line at p
+        return rc::gen::apply(
+            [](Conic A, P p, Rational l) {
+              const auto [x, y] = p;
+              A.f -= A(x, y);  // now A(p) = 0
+              const Rational gx = 2 * A.a * x + A.b * y + A.d, gy = A.b * x + 2 * A.c * y + A.e;
+              const std::array<Rational, 3> T{gx, gy, -(gx * x + gy * y)};
+              return ConicPair{A, combine(A, l == 0 ? Rational(1) : l, product(T, T)), "tangent"};
+            },
+            conic(), rpoint(), small());
+      case 3:  // a shared line
+        return rc::gen::apply(
+            [](P p, P q, P r, P s, P t) {
+              const auto L = line(p, q);
+              return ConicPair{product(L, line(r, s)), product(L, line(s, t)), "shared line"};
+            },
+            rpoint(), rpoint(), rpoint(), rpoint(), rpoint());
+      default:  // line pairs meeting at one point, singular for both
+        return rc::gen::apply(
+            [](P o, P p, P q, P r, P s) {
+              return ConicPair{product(line(o, p), line(o, q)), product(line(o, r), line(o, s)), "singular point"};
+            },
+            rpoint(), rpoint(), rpoint(), rpoint(), rpoint());
+    }
+  });
+}
+
+bool degenerate_input(const Conic& C) { return C.polynomial().is_zero(); }
+
+}  // namespace
+
+RC_GTEST_PROP(Oracle, ConicIntersectionAgreesWithQqbar, ()) {
+  const ConicPair c = *conic_pair();
+  RC_PRE(!degenerate_input(c.A) && !degenerate_input(c.B));
+  RC_TAG(c.kind);
+  const ConicIntersection ours = intersect(c.A, c.B);
+  const qq::QIntersection theirs = qq::intersect(c.A, c.B);
+  RC_ASSERT(ours.shared_component == theirs.shared_component);
+  RC_ASSERT(ours.points.size() == theirs.points.size());
+  RC_TAG(std::to_string(ours.points.size()) + " points");
+  for (std::size_t k = 0; k < ours.points.size(); ++k) {
+    const AlgebraicPoint& p = ours.points[k].point;
+    RC_ASSERT(qq::equals(theirs.points[k].x, p.x()));
+    RC_ASSERT(qq::equals(theirs.points[k].y, p.y()));
+    RC_ASSERT(ours.points[k].multiplicity == theirs.points[k].multiplicity);
+    if (ours.points[k].multiplicity > 1) RC_TAG("multiple point");
+    // Signs of the conics themselves (zero), of their sum, and of random quadratics.
+    RC_ASSERT(p.sign_of(c.A.polynomial()) == Sign::zero);
+    const Conic f = *conic();
+    RC_ASSERT(static_cast<int>(p.sign_of(f.polynomial())) == qq::sign_at(f.polynomial(), theirs.points[k]));
+    Bivariate g;  // x − y + r: vanishes at some points of the "through four points" class
+    g.add(1, 0, 1).add(0, 1, -1).add(0, 0, *small());
+    RC_ASSERT(static_cast<int>(p.sign_of(g)) == qq::sign_at(g, theirs.points[k]));
+    for (std::size_t j = 0; j < ours.points.size(); ++j) {
+      RC_ASSERT(static_cast<int>(compare_x(p, ours.points[j].point)) == qq::compare_x(theirs.points[k], theirs.points[j]));
+      RC_ASSERT(static_cast<int>(compare_y(p, ours.points[j].point)) == qq::compare_y(theirs.points[k], theirs.points[j]));
+    }
+  }
+}
