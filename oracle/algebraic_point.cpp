@@ -50,11 +50,14 @@ std::vector<AlgebraicPoint> AlgebraicPoint::on_conic_at(const Conic& C, const Ra
 }
 
 RealAlgebraic AlgebraicPoint::coordinate(const Polynomial& defining, const Polynomial& num, const Polynomial& den) const {
-  while (true) {
+  // Convergence is certain when `defining` vanishes at the coordinate; the bound turns a wrong
+  // defining polynomial (a bug) into an error instead of a hang.
+  for (int step = 0; step < 5000; ++step) {
     if (u_.is_exact()) return RealAlgebraic::rational(num(u_.lo()) / den(u_.lo()));
     const auto d = den.range(u_.lo(), u_.hi());
     if (d.first > 0 || d.second < 0) {
       const auto [lo, hi] = quotient(num.range(u_.lo(), u_.hi()), d);
+      if (lo == hi) return RealAlgebraic::rational(lo);  // the coordinate map is constant here
       // The enclosure holds the coordinate, a root of `defining`; once it holds no other root
       // and its ends are not roots, it isolates it.
       if (lo < hi && defining.sign_at(lo) != Sign::zero && defining.sign_at(hi) != Sign::zero &&
@@ -63,6 +66,7 @@ RealAlgebraic AlgebraicPoint::coordinate(const Polynomial& defining, const Polyn
     }
     u_.refine();
   }
+  throw std::logic_error("AlgebraicPoint: a coordinate does not isolate as a root of its defining polynomial");
 }
 
 const RealAlgebraic& AlgebraicPoint::x() const {

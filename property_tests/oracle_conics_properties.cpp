@@ -82,6 +82,11 @@ rc::Gen<ConicPair> conic_pair() {
   });
 }
 
+std::ostream& operator<<(std::ostream& os, const Conic& C) {
+  return os << "(" << C.a << ", " << C.b << ", " << C.c << ", " << C.d << ", " << C.e << ", " << C.f << ")";
+}
+std::ostream& operator<<(std::ostream& os, const ConicPair& p) { return os << p.kind << ": " << p.A << " " << p.B; }
+
 bool degenerate_input(const Conic& C) { return C.polynomial().is_zero(); }
 
 }  // namespace
