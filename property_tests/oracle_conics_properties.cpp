@@ -119,3 +119,25 @@ RC_GTEST_PROP(Oracle, ConicIntersectionAgreesWithQqbar, ()) {
     }
   }
 }
+
+// The same vertex reached from different pairs: three members of one pencil through four
+// chosen points meet pairwise in the same points, decided equal exactly (and unequal to the
+// others) across pairs.
+RC_GTEST_PROP(Oracle, SameVertexFromDifferentPairsIsEqual, ()) {
+  using P = std::pair<Rational, Rational>;
+  const auto wide = [] { return *rc::gen::pair(anisocert::gen::rational_in(-5, 5), anisocert::gen::rational_in(-5, 5)); };
+  const P p1 = wide(), p2 = wide(), p3 = wide(), p4 = wide();
+  const Rational l = *anisocert::gen::rational_in(-3, 3), m = *anisocert::gen::rational_in(-3, 3),
+                 n = *anisocert::gen::rational_in(-3, 3);
+  RC_PRE(l != m && m != n && l != n);
+  const Conic Q1 = product(line(p1, p2), line(p3, p4)), Q2 = product(line(p1, p3), line(p2, p4));
+  const Conic A = combine(Q1, l, Q2), B = combine(Q1, m, Q2), C = combine(Q1, n, Q2);
+  RC_PRE(!degenerate_input(A) && !degenerate_input(B) && !degenerate_input(C));
+  const ConicIntersection ab = intersect(A, B), ac = intersect(A, C);
+  RC_PRE(!ab.shared_component && !ac.shared_component);
+  RC_ASSERT(ab.points.size() == ac.points.size());
+  RC_TAG(std::to_string(ab.points.size()) + " points");
+  for (std::size_t i = 0; i < ab.points.size(); ++i)
+    for (std::size_t j = 0; j < ac.points.size(); ++j)
+      RC_ASSERT(same_point(ab.points[i].point, ac.points[j].point) == (i == j));
+}

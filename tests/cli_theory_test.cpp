@@ -136,6 +136,28 @@ TEST(Cli, HelpEverywhere) {
   EXPECT_NE(run("theory lu --help").out.find("--gamma0"), std::string::npos);
 }
 
+TEST(Cli, ConicsJsonContract) {
+  // x² + 4y² = 4 and x² − y² = 1: (±√(8/5), ±√(3/5)); √1.6 = 1.2649110640673517327995574177731…
+  Outcome r = run("conics 1 0 4 0 0 -4 1 0 -1 0 0 -1 --json --digits 12");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Json j = Json::parse(r.out);
+  EXPECT_EQ(j["shared_component"], false);
+  ASSERT_EQ(j["points"].size(), 4u);
+  EXPECT_EQ(j["points"][0]["x"], "-1.26491106407");
+  EXPECT_EQ(j["points"][0]["y"], "-0.774596669241");
+  EXPECT_EQ(j["points"][0]["multiplicity"], 1);
+  auto it = j.begin();
+  EXPECT_EQ((it++).key(), "shared_component");
+  EXPECT_EQ(it.key(), "points");
+  // Identical conics (as fractions and decimals): a shared component, no points.
+  Json s = Json::parse(run("conics 1 0 1 0 0 -1 0.5 0 1/2 0 0 -0.5 --json").out);
+  EXPECT_EQ(s["shared_component"], true);
+  EXPECT_TRUE(s["points"].empty());
+  expect_bad_input("conics 1 0 1 0 0 -1 1 0 1", "12 coefficients");
+  expect_bad_input("conics 1 0 1 0 0 x 1 0 1 0 0 1", "A6");
+  expect_bad_input("conics 0 0 0 0 0 0 1 0 1 0 0 -1", "whole plane");
+}
+
 TEST(Cli, VerdictsExitZeroOrOne) {
   Outcome holds = run("theory chi --beta 1 --gamma 1 --json");
   ASSERT_EQ(holds.exit_code, 0);
