@@ -91,8 +91,8 @@ Integer round_even(const Rational& q) {
   return f % 2 == 0 ? f : Integer(f + 1);
 }
 
-std::string format(const Integer& mantissa, long exponent, int digits) {
-  // value = mantissa · 10^exponent, |mantissa| has `digits` (or digits + 1 after rounding up) digits
+std::string format(const Integer& mantissa, long exponent) {
+  // value = mantissa · 10^exponent
   const bool negative = mantissa < 0;
   std::string m = (negative ? Integer(-mantissa) : mantissa).str();
   const long point = static_cast<long>(m.size()) + exponent;  // digits before the decimal point
@@ -116,7 +116,6 @@ std::string format(const Integer& mantissa, long exponent, int digits) {
     s.erase(s.find_last_not_of('0') + 1);
     if (s.back() == '.') s.pop_back();
   }
-  (void)digits;
   return (negative ? "-" : "") + s;
 }
 
@@ -124,7 +123,7 @@ std::string decimal_of_rational(const Rational& q, int digits) {
   if (q == 0) return "0";
   const long e = decade(q);
   const Integer mant = round_even(q * ten_to(digits - 1 - e));
-  return format(mant, e - (digits - 1), digits);
+  return format(mant, e - (digits - 1));
 }
 
 }  // namespace
@@ -192,7 +191,7 @@ std::string RealAlgebraic::decimal(int digits) const {
       const long e = decade(lo_);
       const Rational scale = ten_to(digits - 1 - e);
       const Integer a = round_even(lo_ * scale), b = round_even(hi_ * scale);
-      if (a == b) return format(a, e - (digits - 1), digits);
+      if (a == b) return format(a, e - (digits - 1));
       // A rounding tie inside the interval may be the value itself: test it exactly.
       const Rational tie = (Rational(floor_of(lo_ * scale)) + Rational(1, 2)) / scale;
       if (tie > lo_ && tie < hi_ && p_.sign_at(tie) == Sign::zero) return decimal_of_rational(tie, digits);
