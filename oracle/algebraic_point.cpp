@@ -50,9 +50,16 @@ std::vector<AlgebraicPoint> AlgebraicPoint::on_conic_at(const Conic& C, const Ra
 }
 
 RealAlgebraic AlgebraicPoint::coordinate(const Polynomial& defining, const Polynomial& num, const Polynomial& den) const {
-  // Convergence is certain when `defining` vanishes at the coordinate; the bound turns a wrong
-  // defining polynomial (a bug) into an error instead of a hang.
-  for (int step = 0; step < 5000; ++step) {
+  // Convergence is certain when `defining` vanishes at the coordinate (it does: it is a
+  // resultant in the ideal of the two conics). The number of halvings needed grows like the
+  // bit size of the root separation, bounded by a multiple of the coefficients' bit sizes; the
+  // cap below is far above that and only turns a bug into an error instead of a hang.
+  const std::vector<Polynomial> sturm = sturm_sequence(defining);
+  std::size_t bits = 0;
+  for (const Rational& c : defining.coefficients())
+    bits += boost::multiprecision::numerator(c).str().size() + boost::multiprecision::denominator(c).str().size();
+  const std::size_t cap = 100000 + 100 * bits * static_cast<std::size_t>(defining.degree() + 1);
+  for (std::size_t step = 0; step < cap; ++step) {
     if (u_.is_exact()) return RealAlgebraic::rational(num(u_.lo()) / den(u_.lo()));
     const auto d = den.range(u_.lo(), u_.hi());
     if (d.first > 0 || d.second < 0) {
@@ -61,7 +68,7 @@ RealAlgebraic AlgebraicPoint::coordinate(const Polynomial& defining, const Polyn
       // The enclosure holds the coordinate, a root of `defining`; once it holds no other root
       // and its ends are not roots, it isolates it.
       if (lo < hi && defining.sign_at(lo) != Sign::zero && defining.sign_at(hi) != Sign::zero &&
-          count_roots(defining, lo, hi) == 1)
+          count_roots(sturm, lo, hi) == 1)
         return RealAlgebraic(defining, lo, hi);
     }
     u_.refine();

@@ -31,8 +31,11 @@ struct ConicIntersection {
 // Throws std::invalid_argument if a conic has all six coefficients zero (the whole plane).
 ConicIntersection intersect(const Conic& A, const Conic& B);
 
-// Res_y(A(u − t y, y), B(u − t y, y)) as a polynomial in u, for the formal y-degrees of the
-// sheared conics (the zero polynomial when they share a factor).
+// Res_y(A(u − t y, y), B(u − t y, y)) as a polynomial in u, for the actual y-degrees of the
+// sheared conics: it vanishes at u = x + t y of every common point; it is the zero polynomial
+// when the conics share a factor of positive degree in y (a factor in u alone, e.g. a common
+// vertical line at t = 0, is not detected here; intersect() only uses t where both leading
+// coefficients in y are non-zero constants, so that every common factor has positive y-degree).
 Polynomial sheared_resultant(const Conic& A, const Conic& B, const Rational& t);
 
 }  // namespace anisocert::oracle

@@ -7,7 +7,8 @@
 namespace anisocert::oracle {
 namespace {
 
-// The Sturm sequence p, p', −rem(p, p'), … (LS-independent classic; counts distinct real roots).
+}  // namespace
+
 std::vector<Polynomial> sturm_sequence(const Polynomial& p) {
   std::vector<Polynomial> s{p, p.derivative()};
   while (!s.back().is_zero()) {
@@ -17,6 +18,8 @@ std::vector<Polynomial> sturm_sequence(const Polynomial& p) {
   s.pop_back();
   return s;
 }
+
+namespace {
 
 int sign_variations(const std::vector<Polynomial>& s, const Rational& x) {
   int v = 0;
@@ -73,10 +76,12 @@ Rational ten_to(long k) {
   return k < 0 ? Rational(1) / Rational(p) : Rational(p);
 }
 
-// The decade e with 10^e <= |q| < 10^(e+1), q != 0.
+// The decade e with 10^e <= |q| < 10^(e+1), q != 0: estimated from the digit counts of the
+// numerator and the denominator (off by at most one), then corrected.
 long decade(const Rational& q) {
   const Rational a = q < 0 ? Rational(-q) : q;
-  long e = 0;
+  long e = static_cast<long>(boost::multiprecision::numerator(a).str().size()) -
+           static_cast<long>(boost::multiprecision::denominator(a).str().size());
   while (a >= ten_to(e + 1)) ++e;
   while (a < ten_to(e)) --e;
   return e;
@@ -237,8 +242,8 @@ std::vector<RealAlgebraic> real_roots(const Polynomial& p) {
   return roots;
 }
 
-int count_roots(const Polynomial& squarefree, const Rational& a, const Rational& b) {
-  return roots_in(sturm_sequence(squarefree), a, b);
+int count_roots(const std::vector<Polynomial>& sturm, const Rational& a, const Rational& b) {
+  return roots_in(sturm, a, b);
 }
 
 int multiplicity(const RealAlgebraic& alpha, const Polynomial& p) {

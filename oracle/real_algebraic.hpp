@@ -14,7 +14,9 @@ namespace anisocert::oracle {
 class RealAlgebraic {
  public:
   // The root of the square-free p in [lo, hi], where either lo == hi and p(lo) = 0, or lo < hi,
-  // p(lo)·p(hi) < 0 and p has no other root in [lo, hi]. Checked (throws std::invalid_argument).
+  // p(lo)·p(hi) < 0 and p has no other root in [lo, hi]. The sign conditions are checked (throws
+  // std::invalid_argument); square-freeness and uniqueness are the caller's guarantee (every
+  // caller isolates with Sturm sequences of a square-free part).
   RealAlgebraic(Polynomial squarefree, Rational lo, Rational hi);
   static RealAlgebraic rational(const Rational& q);
 
@@ -47,8 +49,10 @@ Sign compare(const RealAlgebraic& a, const RealAlgebraic& b);
 // The real roots of p (non-zero), each once, increasing, isolated for squarefree_part(p).
 std::vector<RealAlgebraic> real_roots(const Polynomial& p);
 
-// The number of distinct roots of the square-free p in (a, b] (Sturm's theorem).
-int count_roots(const Polynomial& squarefree, const Rational& a, const Rational& b);
+// The Sturm sequence p, p', −rem(p, p'), … of a square-free p, and with it the number of
+// distinct roots of p in (a, b] (Sturm's theorem).
+std::vector<Polynomial> sturm_sequence(const Polynomial& squarefree);
+int count_roots(const std::vector<Polynomial>& sturm, const Rational& a, const Rational& b);
 
 // The multiplicity of α as a root of p (0 if it is not a root).
 int multiplicity(const RealAlgebraic& alpha, const Polynomial& p);

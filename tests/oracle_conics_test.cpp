@@ -133,3 +133,26 @@ TEST(RealAlgebraic, DecimalsAreCorrectlyRounded) {
   EXPECT_EQ(real_roots(Polynomial(std::vector<Rational>{-100, 0, 1}))[1].decimal(10), "10");
   EXPECT_EQ(real_roots(Polynomial(std::vector<Rational>{Rational(-1, 8), 1}))[0].decimal(2), "0.12");
 }
+
+TEST(ConicIntersection, NearlyCoincidentCoordinatesFromAReview) {
+  // A = (x − δy − 1/3)(x − 5), B = (3x − 2y − 1)(x + (δ − 14/3)y + 13/3 − 2δ): common points
+  // (1/3, 0), (1/3 + δ, 1), (5, 2), (5, 7) (by substitution). With δ = 2⁻⁶⁰⁰ the first two x
+  // differ by 2⁻⁶⁰⁰: isolation needs ~600 halvings (a cap of 5000 used to throw near δ = 2⁻⁵¹⁰⁰).
+  const Rational d = Rational(1) / Rational(boost::multiprecision::pow(anisocert::Integer{2}, 600));
+  const Conic A{1, -d, 0, Rational(-16, 3), 5 * d, Rational(5, 3)};
+  const Conic B{3, 3 * d - 16, Rational(28, 3) - 2 * d, 12 - 6 * d, 3 * d - 4, 2 * d - Rational(13, 3)};
+  const auto r = run(A, B);
+  ASSERT_EQ(r.points.size(), 4u);
+  EXPECT_TRUE(same_point(r.points[0].point, AlgebraicPoint::rational(Rational(1, 3), 0)));
+  EXPECT_TRUE(same_point(r.points[1].point, AlgebraicPoint::rational(Rational(1, 3) + d, 1)));
+  EXPECT_EQ(compare_x(r.points[0].point, r.points[1].point), Sign::negative);
+  EXPECT_TRUE(same_point(r.points[3].point, AlgebraicPoint::rational(5, 7)));
+}
+
+TEST(RealAlgebraic, HugeMagnitudesPrintQuickly) {
+  // √(2·10¹⁰⁰⁰⁰) = √2 · 10⁵⁰⁰⁰: the decade is found from digit counts, not by counting.
+  const Rational big(boost::multiprecision::pow(anisocert::Integer{10}, 10000));
+  const auto r = real_roots(Polynomial(std::vector<Rational>{-2 * big, 0, 1}));
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[1].decimal(10), "1.414213562e5000");
+}
