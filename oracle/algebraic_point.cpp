@@ -86,10 +86,6 @@ const RealAlgebraic& AlgebraicPoint::y() const {
   return *y_;
 }
 
-std::pair<std::pair<Rational, Rational>, std::pair<Rational, Rational>> AlgebraicPoint::box() const {
-  return {{x().lo(), x().hi()}, {y().lo(), y().hi()}};
-}
-
 Sign AlgebraicPoint::sign_of(const Bivariate& P) const {
   // P(xn/xd, yn/yd) · xd^dx · yd^dy = Σ c_ij xn^i xd^(dx−i) yn^j yd^(dy−j) =: N(u)
   if (P.is_zero()) return Sign::zero;

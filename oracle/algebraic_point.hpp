@@ -33,8 +33,6 @@ class AlgebraicPoint {
   // Correctly rounded to `digits` significant digits.
   std::string x_decimal(int digits) const { return x().decimal(digits); }
   std::string y_decimal(int digits) const { return y().decimal(digits); }
-  // An enclosure [x_lo, x_hi] × [y_lo, y_hi] with rational ends.
-  std::pair<std::pair<Rational, Rational>, std::pair<Rational, Rational>> box() const;
 
  private:
   RealAlgebraic coordinate(const Polynomial& defining, const Polynomial& num, const Polynomial& den) const;

@@ -9,11 +9,6 @@ struct Point2 {
   S x, y;
 };
 
-template <class S>
-struct Point3 {
-  S x, y, z;
-};
-
 // [m11 m12; m12 m22], the DESIGN.md order [m11, m12, m22].
 template <class S>
 struct Sym2 {
