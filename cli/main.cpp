@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   anisocert::cli::add_theory_command(app, exit_code);
   anisocert::cli::add_conics_command(app, exit_code);
+  anisocert::cli::add_diagram_command(app, exit_code);
+  anisocert::cli::add_demo_command(app, exit_code);
   try {
     const auto known = app.get_subcommands([&](CLI::App* s) { return argc > 1 && s->check_name(argv[1]); });
     if (argc > 1 && argv[1][0] != '-' && known.empty())

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 
 namespace anisocert::cli {
 
@@ -63,5 +64,22 @@ void emit(const std::string& text) {
 }
 
 std::string render(const Json& j) { return j.dump(2) + "\n"; }
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  const std::string temporary = path + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << content;
+    out.flush();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw UsageError("cannot write " + path);
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw UsageError("cannot write " + path);
+  }
+}
 
 }  // namespace anisocert::cli

@@ -52,5 +52,9 @@ ConditionReport report_conditions(const std::vector<Condition>& conditions);
 // Writes all of `text` to standard output at once: nothing is printed half-way.
 void emit(const std::string& text);
 std::string render(const Json& j);
+// Writes `content` to `path` through a temporary file in the same directory and a rename, so
+// that the file is either absent, or complete (DESIGN.md: nothing is written half-way).
+// Throws UsageError naming the path when it cannot be written.
+void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace anisocert::cli

@@ -16,5 +16,8 @@ void add_theory_lu_command(CLI::App& theory, int& exit_code);
 
 // `anisocert conics` (oracle/conic_intersection).
 void add_conics_command(CLI::App& app, int& exit_code);
+// `anisocert diagram IN.json` and `anisocert demo` (diagram_command.cpp).
+void add_diagram_command(CLI::App& app, int& exit_code);
+void add_demo_command(CLI::App& app, int& exit_code);
 
 }  // namespace anisocert::cli

@@ -1,0 +1,155 @@
+// `anisocert diagram IN.json`: the exact anisotropic Voronoi diagram restricted to the domain
+// (oracle/diagram.hpp), its wedges, orphans, dual and Theorem 7 verdict; and `anisocert demo`,
+// the same on a built-in example whose metrics come from an anisotropic shock field.
+#include "cli/output.hpp"
+#include "cli/theory_command.hpp"
+#include "cli/usage_error.hpp"
+#include "io/diagram_json.hpp"
+#include "io/diagram_svg.hpp"
+#include "io/site_set.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+namespace anisocert::cli {
+namespace {
+
+struct DiagramOptions {
+  std::string input;
+  std::string json_path, svg_path;
+  bool quiet = false;
+};
+
+oracle::DiagramInput diagram_input(const io::SiteSet& s) {
+  oracle::DiagramInput in;
+  in.sites = s.sites;
+  for (const auto& m : s.metrics) in.metrics.push_back(m.entries());
+  in.domain = s.domain;
+  return in;
+}
+
+std::string summary(const oracle::Diagram& d, const std::string& name) {
+  const io::DiagramCounts c = io::diagram_counts(d);
+  std::ostringstream o;
+  o << name << ": " << d.input.sites.size() << " sites, domain with " << d.input.domain.size() << " corners\n"
+    << "  Voronoi vertices " << c.voronoi_vertices << ", arcs " << c.arcs << ", faces " << c.faces << ", orphans "
+    << c.orphans << ", wedge violations " << c.wedge_violations << "\n";
+  std::size_t closed = 0, cut = 0, high = 0;
+  for (const auto& a : d.arcs) closed += a.closed ? 1 : 0, cut += a.cut_by_edges.empty() ? 0 : 1;
+  for (const auto& n : d.nodes) high += n.sites.size() > 3 ? 1 : 0;
+  o << "  closed arcs " << closed << ", arcs cut by ∂Ω " << cut << ", vertices of degree > 3 " << high << "\n";
+  for (std::size_t i = 0; i < d.faces.size(); ++i)
+    if (d.faces[i].orphan) o << "  orphan: face " << i << " of site " << d.faces[i].site << "\n";
+  o << "  dual: " << d.dual_triangles.size() << " triangles, " << d.dual_polygons.size() << " polygons; "
+    << (d.dual_check.is_triangulation ? "a triangulation of Ω (checked exactly)" : "not a triangulation of Ω") << "\n";
+  for (std::size_t i = 0; i < d.dual_check.failures.size() && i < 3; ++i) o << "    " << d.dual_check.failures[i] << "\n";
+  if (d.dual_check.failures.size() > 3) o << "    … and " << d.dual_check.failures.size() - 3 << " more\n";
+  o << "  Theorem 7 preconditions: " << (d.theorem7.preconditions_hold ? "hold" : "do not hold") << "\n";
+  for (std::size_t i = 0; i < d.theorem7.reasons.size() && i < 3; ++i) o << "    " << d.theorem7.reasons[i] << "\n";
+  if (d.theorem7.reasons.size() > 3) o << "    … and " << d.theorem7.reasons.size() - 3 << " more\n";
+  if (d.theorem7.preconditions_hold)
+    o << "  Theorem 7 conclusion: " << (d.dual_check.is_triangulation ? "confirmed" : "CONTRADICTED") << "\n";
+  o << "  time: candidates " << d.stats.seconds_candidates << " s, vertices " << d.stats.seconds_vertices << " s, arcs "
+    << d.stats.seconds_arcs << " s, faces " << d.stats.seconds_faces << " s, dual " << d.stats.seconds_dual << " s\n";
+  return o.str();
+}
+
+int run(const oracle::DiagramInput& in, const std::string& name, const DiagramOptions& o) {
+  auto progress = [&](const std::string& line) {
+    if (!o.quiet) std::cerr << "anisocert: " << line << "\n";
+  };
+  oracle::Diagram d;
+  try {
+    d = oracle::compute_diagram(in, progress);
+  } catch (const std::domain_error& e) {  // a degenerate input the oracle declines, named
+    throw UsageError(name + ": " + e.what());
+  }
+  std::string json, svg;
+  if (!o.json_path.empty()) json = io::diagram_json(d).dump(1) + "\n";
+  if (!o.svg_path.empty()) svg = io::diagram_svg(d);
+  if (!o.json_path.empty()) write_file_atomically(o.json_path, json);
+  if (!o.svg_path.empty()) write_file_atomically(o.svg_path, svg);
+  std::string text = summary(d, name);
+  if (!o.svg_path.empty()) text += "  picture: " + o.svg_path + "\n";
+  if (d.theorem7.disagreement) {
+    std::cerr << "anisocert: THEOREM 7 DISAGREEMENT: its preconditions hold but the dual is not a triangulation of Ω.\n"
+                 "This is a bug in the oracle or a counterexample to LS Theorem 7; please report the input.\n";
+    emit(text);
+    return 3;
+  }
+  emit(text);
+  return 0;
+}
+
+// The demo's anisotropic field: the hyperbolic shock f = tanh((2x − sin 5y)/δ); the metric's
+// first eigen-direction is ∇f, with lengths shrinking by up to 10:1 across the shock.
+oracle::DiagramInput demo_input() {
+  oracle::DiagramInput in;
+  in.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  unsigned state = 12345;
+  auto jitter = [&] {  // a fixed linear congruential sequence: the same example every time
+    state = state * 1103515245u + 12345u;
+    return static_cast<int>((state >> 16) % 61) - 30;  // −30 … 30 thousandths
+  };
+  constexpr double delta = 0.25;
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j) {
+      const Rational x = Rational(1000 * (2 * i + 1) / 14 + jitter(), 1000);
+      const Rational y = Rational(1000 * (2 * j + 1) / 14 + jitter(), 1000);
+      const double xd = x.convert_to<double>(), yd = y.convert_to<double>();
+      const double u = (2 * xd - std::sin(5 * yd)) / delta;
+      const double sech2 = 1 / (std::cosh(u) * std::cosh(u));
+      const double gx = 2 * sech2 / delta, gy = -5 * std::cos(5 * yd) * sech2 / delta;
+      const double norm = std::hypot(gx, gy);
+      const double cx = norm > 0 ? gx / norm : 1, cy = norm > 0 ? gy / norm : 0;
+      const double stretch = 1 + 9 * sech2;  // lengths along ∇f shrink by up to 10
+      const double l1 = stretch * stretch, l2 = 1;
+      auto q = [](double v) { return Rational(static_cast<long>(std::lround(v * 100)), 100); };  // exact, 2 decimals
+      in.sites.push_back({x, y});
+      in.metrics.push_back({q(l1 * cx * cx + l2 * cy * cy), q((l1 - l2) * cx * cy), q(l1 * cy * cy + l2 * cx * cx)});
+    }
+  return in;
+}
+
+}  // namespace
+
+void add_diagram_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<DiagramOptions>();
+  CLI::App* c = app.add_subcommand(
+      "diagram",
+      "The exact anisotropic Voronoi diagram (Labelle–Shewchuk) of the sites of IN.json restricted to its domain:\n"
+      "vertices, arcs, faces and orphans, wedges with exact witnesses, the dual and whether it triangulates the\n"
+      "domain, and the Theorem 7 verdict. Prints a summary; exit 0 (the diagram is an answer, not a verdict),\n"
+      "2 for bad input, 3 if Theorem 7's preconditions hold but its conclusion fails (a bug or a counterexample).\n"
+      "Input format: docs/oracle.md (DESIGN.md § Command line and files).");
+  c->add_option("input", o->input, "the site set (JSON)")->required();
+  c->add_option("--json", o->json_path, "write the whole diagram as JSON to this file (fields: docs/oracle.md)");
+  c->add_option("--svg", o->svg_path, "write a picture of the diagram to this file");
+  c->add_flag("--quiet", o->quiet, "no progress lines on standard error");
+  c->callback([o, &exit_code] {
+    io::SiteSet s;
+    try {
+      s = io::read_site_set_file(o->input);
+    } catch (const io::InputError& e) {
+      throw UsageError(e.what());
+    }
+    exit_code = run(diagram_input(s), o->input, *o);
+  });
+}
+
+void add_demo_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<DiagramOptions>();
+  o->svg_path = "anisocert-demo.svg";
+  CLI::App* c = app.add_subcommand(
+      "demo",
+      "The diagram of a built-in example: 49 sites in the unit square whose metrics follow the shock field\n"
+      "f = tanh((2x − sin 5y)/0.25) (first eigen-direction along ∇f, anisotropy up to 10:1). Prints the\n"
+      "summary and writes the picture.");
+  c->add_option("--svg", o->svg_path, "where to write the picture")->capture_default_str();
+  c->add_option("--json", o->json_path, "also write the diagram as JSON to this file");
+  c->add_flag("--quiet", o->quiet, "no progress lines on standard error");
+  c->callback([o, &exit_code] { exit_code = run(demo_input(), "demo", *o); });
+}
+
+}  // namespace anisocert::cli

@@ -1,0 +1,121 @@
+#include "oracle/candidate_subdivision.hpp"
+
+#include "predicates/filter_interval.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+namespace anisocert::oracle {
+
+namespace {
+
+using predicates::FilterInterval;
+
+struct SiteBox {
+  FilterInterval x, y, m11, m12, m22;
+};
+
+// Outward bounds of Q_u on the box [x_lo, x_hi] × [y_lo, y_hi], from the centred form at a
+// double centre c with half-widths h rounded up so that c ± h covers the box.
+std::pair<double, double> distance_bounds(const SiteBox& u, const BoxBounds& b) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double cx = b.x_lo + (b.x_hi - b.x_lo) / 2, cy = b.y_lo + (b.y_hi - b.y_lo) / 2;
+  const double hx = std::nextafter(std::max(b.x_hi - cx, cx - b.x_lo), inf);
+  const double hy = std::nextafter(std::max(b.y_hi - cy, cy - b.y_lo), inf);
+  const FilterInterval dx = FilterInterval(cx) - u.x, dy = FilterInterval(cy) - u.y;
+  const FilterInterval gx = u.m11 * dx + u.m12 * dy, gy = u.m12 * dx + u.m22 * dy;
+  const FilterInterval q = dx * gx + dy * gy;
+  const FilterInterval H(hx), K(hy);
+  const FilterInterval ax(std::max(std::abs(gx.lo), std::abs(gx.hi))), ay(std::max(std::abs(gy.lo), std::abs(gy.hi)));
+  const FilterInterval linear = FilterInterval(2) * (ax * H + ay * K);
+  const FilterInterval m12(std::max(std::abs(u.m12.lo), std::abs(u.m12.hi)));
+  const FilterInterval quadratic = FilterInterval(u.m11.hi) * H * H + FilterInterval(2) * m12 * H * K +
+                                   FilterInterval(u.m22.hi) * K * K;
+  const double lower = (q - linear).lo;
+  const double upper = (q + linear + quadratic).hi;
+  return {std::max(lower, 0.0), upper};
+}
+
+struct Subdivider {
+  std::vector<SiteBox> sites;
+  int max_depth;
+  CandidateSets out;
+  std::map<std::pair<int, int>, BoxBounds> pair_region;
+  std::vector<std::array<int, 3>> triples;
+
+  void record(const std::vector<int>& cand, const BoxBounds& box) {
+    ++out.leaves;
+    for (std::size_t i = 0; i < cand.size(); ++i)
+      for (std::size_t j = i + 1; j < cand.size(); ++j) {
+        const auto key = std::minmax(cand[i], cand[j]);
+        auto [it, fresh] = pair_region.try_emplace({key.first, key.second}, box);
+        if (!fresh) {
+          BoxBounds& b = it->second;
+          b = {std::min(b.x_lo, box.x_lo), std::max(b.x_hi, box.x_hi), std::min(b.y_lo, box.y_lo), std::max(b.y_hi, box.y_hi)};
+        }
+        for (std::size_t k = j + 1; k < cand.size(); ++k) {
+          std::array<int, 3> t{cand[i], cand[j], cand[k]};
+          std::sort(t.begin(), t.end());
+          triples.push_back(t);
+        }
+      }
+  }
+
+  void refine(const std::vector<int>& parent, const BoxBounds& box, int depth) {
+    ++out.boxes;
+    out.max_depth_reached = std::max(out.max_depth_reached, depth);
+    std::vector<std::pair<double, double>> bounds(parent.size());
+    double best_upper = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < parent.size(); ++i) {
+      bounds[i] = distance_bounds(sites[parent[i]], box);
+      best_upper = std::min(best_upper, bounds[i].second);
+    }
+    std::vector<int> cand;
+    for (std::size_t i = 0; i < parent.size(); ++i)
+      if (!(bounds[i].first > best_upper)) cand.push_back(parent[i]);
+    if (cand.size() <= 3 || depth >= max_depth) {
+      record(cand, box);
+      return;
+    }
+    // Children share their split lines exactly, so they cover the box whatever the rounding.
+    const double mx = box.x_lo + (box.x_hi - box.x_lo) / 2, my = box.y_lo + (box.y_hi - box.y_lo) / 2;
+    refine(cand, {box.x_lo, mx, box.y_lo, my}, depth + 1);
+    refine(cand, {mx, box.x_hi, box.y_lo, my}, depth + 1);
+    refine(cand, {box.x_lo, mx, my, box.y_hi}, depth + 1);
+    refine(cand, {mx, box.x_hi, my, box.y_hi}, depth + 1);
+  }
+};
+
+}  // namespace
+
+CandidateSets candidate_sets(const DiagramInput& in, int max_depth) {
+  Subdivider s;
+  s.max_depth = max_depth;
+  for (std::size_t i = 0; i < in.sites.size(); ++i) {
+    const auto& p = in.sites[i];
+    const auto& M = in.metrics[i];
+    s.sites.push_back({FilterInterval::around(p.x), FilterInterval::around(p.y), FilterInterval::around(M.m11),
+                       FilterInterval::around(M.m12), FilterInterval::around(M.m22)});
+  }
+  // The root box: the domain's bounding box, rounded outward.
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  BoxBounds root{inf, -inf, inf, -inf};
+  for (const auto& p : in.domain) {
+    const FilterInterval x = FilterInterval::around(p.x), y = FilterInterval::around(p.y);
+    root = {std::min(root.x_lo, x.lo), std::max(root.x_hi, x.hi), std::min(root.y_lo, y.lo), std::max(root.y_hi, y.hi)};
+  }
+  std::vector<int> all(in.sites.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  s.refine(all, root, 0);
+  std::sort(s.triples.begin(), s.triples.end());
+  s.triples.erase(std::unique(s.triples.begin(), s.triples.end()), s.triples.end());
+  s.out.triples = std::move(s.triples);
+  for (const auto& [pair, box] : s.pair_region) {
+    s.out.pairs.push_back(pair);
+    s.out.pair_region.push_back(box);
+  }
+  return s.out;
+}
+
+}  // namespace anisocert::oracle

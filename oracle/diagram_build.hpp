@@ -1,0 +1,83 @@
+#pragma once
+// Internal to the oracle: the pieces of work compute_diagram is made of, shared by its files.
+#include "oracle/candidate_subdivision.hpp"
+#include "oracle/diagram.hpp"
+#include "predicates/filter_interval.hpp"
+
+#include <map>
+
+namespace anisocert::oracle::build {
+
+// Where a point lies with respect to Ω (closed polygon, sheared coordinates).
+struct DomainPosition {
+  bool inside = false;            // strictly inside
+  std::vector<int> edges;         // the edges containing it (on ∂Ω when non-empty)
+  int corner = -1;
+  bool outside() const { return !inside && edges.empty(); }
+};
+DomainPosition domain_position(const DiagramInput& sheared, const LocatedPoint& p);
+
+// The nearest sites of p, given that site v is among the closest candidates: `closer` is true when
+// some site is strictly closer than v (then `owners` is empty), otherwise `owners` are all sites
+// at v's distance, sorted.
+struct Nearest {
+  bool closer = false;
+  std::vector<int> owners;
+};
+
+class Builder {
+ public:
+  Builder(Diagram& d, const std::function<void(const std::string&)>& progress);
+  void run();
+
+ private:
+  // nodes
+  void add_corners();
+  void find_vertices();
+  int register_node(Node::Kind kind, const LocatedPoint& p, const std::vector<int>& owners);
+  Nearest nearest(const LocatedPoint& p, int v) const;
+  // arcs
+  void build_arcs();
+  void build_arcs_of_pair(int v, int w, const BoxBounds& region);
+  void check_arc_wedges(Arc& arc) const;
+  void check_node_wedges();
+  void build_boundary();
+  int owner_of_edge_point(int edge, const LocatedPoint& a, const LocatedPoint& b) const;
+  // faces (diagram_faces.cpp)
+  void build_half_edges();
+  void build_cycles();
+  void build_faces();
+  // dual (diagram_dual.cpp)
+  void build_dual();
+  void check_triangulation();
+  void check_theorem7();
+
+  Diagram& d_;
+  std::function<void(const std::string&)> progress_;
+  CandidateSets cand_;
+  Rational width_;                                   // box width for located points
+  std::vector<std::array<predicates::FilterInterval, 6>> distance_;  // Q_u as interval conics
+  std::map<std::pair<int, int>, std::vector<int>> nodes_of_pair_;
+  // germs per node, in counter-clockwise order (diagram_faces.cpp)
+  struct Germ {
+    int outgoing = -1, incoming = -1;                // half-edge ids
+    Branch branch;
+    bool right;                                      // leaves the node towards larger x
+    LocatedPoint far;                                // the other end of the first piece
+  };
+  std::vector<std::vector<Germ>> germs_;
+  void sort_germs(int node);
+  friend Location oracle::locate(const Diagram& d, const Point2<Rational>& p);
+};
+
+// Ray casting: whether p (not on the cycle) is inside the closed walk of cycle c.
+bool cycle_contains(const Diagram& d, int c, const LocatedPoint& p);
+// The pieces a half-edge runs along, as (branch, left point, right point), for ray casting.
+struct Span {
+  Branch branch;
+  const LocatedPoint* left;
+  const LocatedPoint* right;
+};
+std::vector<Span> spans_of(const Diagram& d, const HalfEdge& h);
+
+}  // namespace anisocert::oracle::build

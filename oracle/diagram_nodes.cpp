@@ -1,0 +1,117 @@
+// The nodes of D|Ω: the corners of Ω and the Voronoi vertices (LS Definition 1: points of Ω
+// equidistant from three or more sites with no site closer), found exactly as common points of
+// two bisector conics (LS Proposition 2) for every candidate triple of the certified
+// subdivision (candidate_subdivision.hpp: the triples include every vertex's owners).
+#include "oracle/conic_intersection.hpp"
+#include "oracle/diagram_build.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace anisocert::oracle::build {
+
+using predicates::FilterInterval;
+
+DomainPosition domain_position(const DiagramInput& sh, const LocatedPoint& p) {
+  DomainPosition pos;
+  const std::size_t m = sh.domain.size();
+  int crossings = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    const Point2<Rational>& a = sh.domain[k];
+    const Point2<Rational>& b = sh.domain[(k + 1) % m];
+    const Rational& xl = std::min(a.x, b.x);
+    const Rational& xr = std::max(a.x, b.x);
+    const Sign lo = compare_x(p, xl), hi = compare_x(p, xr);
+    if (lo == Sign::negative || hi == Sign::positive) continue;  // outside the edge's x-range
+    const Sign side = Branch{line_conic(a, b), 0}.compare_point(p);
+    if (side == Sign::zero) {
+      pos.edges.push_back(static_cast<int>(k));
+      continue;
+    }
+    if (lo != Sign::negative && hi == Sign::negative && side == Sign::negative) ++crossings;  // [xl, xr), above p
+  }
+  for (int k : pos.edges) {  // a corner lies on two edges
+    const Point2<Rational>& a = sh.domain[k];
+    if (same_point(p, LocatedPoint::rational(a.x, a.y))) pos.corner = k;
+  }
+  pos.inside = pos.edges.empty() && crossings % 2 == 1;
+  return pos;
+}
+
+Builder::Builder(Diagram& d, const std::function<void(const std::string&)>& progress) : d_(d), progress_(progress) {}
+
+Nearest Builder::nearest(const LocatedPoint& p, int v) const {
+  auto value = [&](int u) {
+    const auto& c = distance_[u];
+    return c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.y * p.y + c[3] * p.x + c[4] * p.y + c[5];
+  };
+  const FilterInterval qv = value(v);
+  Nearest out;
+  out.owners.push_back(v);
+  for (int u = 0; u < static_cast<int>(distance_.size()); ++u) {
+    if (u == v) continue;
+    const FilterInterval qu = value(u);
+    if (qu.lo > qv.hi) continue;  // u is strictly farther
+    Sign s = Sign::zero;          // sign(Q_u − Q_v) at p
+    if (qu.hi < qv.lo)
+      s = Sign::negative;
+    else
+      s = p.sign_of(bisector_conic(d_.sheared, u, v));
+    if (s == Sign::negative) return {true, {}};
+    if (s == Sign::zero) out.owners.push_back(u);
+  }
+  std::sort(out.owners.begin(), out.owners.end());
+  return out;
+}
+
+int Builder::register_node(Node::Kind kind, const LocatedPoint& p, const std::vector<int>& owners) {
+  for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
+    Node& n = d_.nodes[i];
+    if (!same_point(n.at, p)) continue;
+    if (static_cast<int>(kind) < static_cast<int>(n.kind)) n.kind = kind;  // voronoi < … < corner
+    return static_cast<int>(i);
+  }
+  const DomainPosition pos = domain_position(d_.sheared, p);
+  Node n{kind, p, owners, pos.edges, pos.corner};
+  d_.nodes.push_back(std::move(n));
+  const int id = static_cast<int>(d_.nodes.size()) - 1;
+  for (std::size_t i = 0; i < owners.size(); ++i)
+    for (std::size_t j = i + 1; j < owners.size(); ++j) nodes_of_pair_[{owners[i], owners[j]}].push_back(id);
+  return id;
+}
+
+void Builder::add_corners() {
+  for (const Point2<Rational>& c : d_.sheared.domain) {
+    const LocatedPoint p = LocatedPoint::rational(c.x, c.y);
+    // The owners of a corner: its nearest sites (the site with the least certified upper bound
+    // is among them unless another is strictly closer, which nearest() reports).
+    int v = 0;
+    for (int u = 1; u < static_cast<int>(distance_.size()); ++u)
+      if (p.sign_of(bisector_conic(d_.sheared, u, v)) == Sign::negative) v = u;
+    register_node(Node::Kind::corner, p, nearest(p, v).owners);
+  }
+}
+
+void Builder::find_vertices() {
+  std::size_t done = 0;
+  for (const auto& t : cand_.triples) {
+    if (progress_ && ++done % 500 == 0)
+      progress_("vertices: " + std::to_string(done) + " of " + std::to_string(cand_.triples.size()) + " candidate triples");
+    const ConicIntersection x =
+        intersect(bisector_conic(d_.sheared, t[0], t[1]), bisector_conic(d_.sheared, t[0], t[2]));
+    if (x.shared_component)
+      throw std::domain_error("sites " + std::to_string(t[0]) + ", " + std::to_string(t[1]) + " and " +
+                              std::to_string(t[2]) +
+                              " are equidistant along a whole curve; such inputs are not supported yet");
+    for (const IntersectionPoint& ip : x.points) {
+      ++d_.stats.candidate_points;
+      const LocatedPoint p(ip.point, width_);
+      const Nearest n = nearest(p, t[0]);
+      if (n.closer) continue;
+      if (domain_position(d_.sheared, p).outside()) continue;
+      register_node(Node::Kind::voronoi, p, n.owners);
+    }
+  }
+}
+
+}  // namespace anisocert::oracle::build
