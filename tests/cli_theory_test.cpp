@@ -1,6 +1,7 @@
 // The `anisocert theory` commands as a user runs them: JSON contract, exit codes, messages.
 
 #include "numbers/rational.hpp"
+#include "tests/cli_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -13,28 +14,6 @@
 #include <sstream>
 
 namespace {
-
-struct Outcome {
-  int exit_code;
-  std::string out, err;
-};
-
-Outcome run(const std::string& args) {
-  // One file per process: CTest runs the tests of this file in parallel processes.
-  const std::string err_file = ::testing::TempDir() + "anisocert_stderr_" + std::to_string(getpid()) + ".txt";
-  const std::string command = std::string(ANISOCERT_BIN) + " " + args + " 2>" + err_file;
-  FILE* pipe = popen(command.c_str(), "r");
-  Outcome r{-1, "", ""};
-  std::array<char, 4096> buf{};
-  for (size_t n; (n = fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.out.append(buf.data(), n);
-  int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_file);
-  std::stringstream ss;
-  ss << e.rdbuf();
-  r.err = ss.str();
-  return r;
-}
 
 using Json = nlohmann::ordered_json;
 

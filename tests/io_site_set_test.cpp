@@ -197,7 +197,7 @@ TEST(SiteSet, NonConvexDomainAcceptsSitesInTheClosedPolygon) {
   EXPECT_EQ(error_of(with_domain({"1 1", "0 0", "\"3/2\" 1", "\"1/2\" \"3/2\"", "\"3/2\" \"1/2\""}, L_shape)),
             "(accepted)");
   // The notch, exactly at its corner (2, 2), and just off the reflex corner into the notch.
-  EXPECT_ERROR(with_domain({"0 0", "\"3/2\" \"3/2\""}, L_shape), "t.json: sites[1] (3/2, 3/2) lies outside the domain");
+  EXPECT_ERROR(with_domain({"0 0", "\"3/2\" \"3/2\""}, L_shape), "t.json: sites[1] (1.5, 1.5) lies outside the domain");
   EXPECT_ERROR(with_domain({"0 0", "2 2"}, L_shape), "t.json: sites[1] (2, 2) lies outside the domain");
   EXPECT_ERROR(with_domain({"0 0", "1.000000000000000000000001 1.000000000000000000000001"}, L_shape),
                "t.json: sites[1] (1.000000000000000000000001, 1.000000000000000000000001) lies outside the domain");

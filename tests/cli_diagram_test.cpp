@@ -1,0 +1,92 @@
+// `anisocert diagram` and `anisocert demo` as a user runs them: the JSON contract of DESIGN.md,
+// exit codes, messages naming the bad site or edge, and no partial output on bad input.
+#include "tests/cli_run.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+namespace {
+
+using Json = nlohmann::json;
+
+std::string write_input(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "anisocert_" + std::to_string(getpid()) + "_" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* kSquare = R"("domain": [["0","0"],["1","0"],["1","1"],["0","1"]])";
+
+TEST(CliDiagram, JsonHasTheDesignFields) {
+  const std::string in = write_input("three.json", std::string(R"({"sites": [
+      {"x": "0.2", "y": "0.2", "metric": ["1","0","1"]},
+      {"x": 0.8, "y": "3/10", "metric": ["2","1/2","1"]},
+      {"x": "0.4", "y": "0.8", "metric": [1, 0, 4]}], )") + kSquare + "}");
+  const std::string out = in + ".out.json", svg = in + ".svg";
+  const Outcome r = run("diagram " + in + " --json " + out + " --svg " + svg + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("Theorem 7 preconditions: do not hold"), std::string::npos) << r.out;
+  std::ifstream f(out);
+  const Json j = Json::parse(f);
+  for (const char* key : {"vertices", "arcs", "faces", "dual", "theorem7", "counts"}) EXPECT_TRUE(j.contains(key)) << key;
+  int voronoi = 0;
+  for (const Json& v : j["vertices"]) {
+    for (const char* key : {"id", "sites", "x", "y", "on_domain_boundary", "wedged"}) EXPECT_TRUE(v.contains(key)) << key;
+    if (v["kind"] == "voronoi") {
+      ++voronoi;
+      EXPECT_EQ(v["sites"], Json({0, 1, 2}));
+    }
+  }
+  EXPECT_EQ(voronoi, 1);
+  EXPECT_EQ(j["counts"]["vertices"], 1);
+  EXPECT_EQ(j["counts"]["faces"], 3);
+  for (const Json& a : j["arcs"])
+    for (const char* key : {"id", "sites", "vertices", "closed", "cut_by_domain", "wedged", "witness"})
+      EXPECT_TRUE(a.contains(key)) << key;
+  ASSERT_EQ(j["dual"]["triangles"].size(), 1u);
+  EXPECT_FALSE(j["dual"]["is_triangulation"]);  // the corners are not sites
+  EXPECT_FALSE(j["theorem7"]["preconditions_hold"]);
+  std::ifstream s(svg);
+  const std::string picture((std::istreambuf_iterator<char>(s)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(picture.rfind("<svg", 0), 0u);
+  EXPECT_NE(picture.find("</svg>"), std::string::npos);
+}
+
+TEST(CliDiagram, BadInputNamesTheProblemAndWritesNothing) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"sites": [{"x": "0.5", "y": "0.5", "metric": ["1","0","1"]},
+                     {"x": "1/2", "y": "0.5", "metric": ["2","0","2"]}], )" + std::string(kSquare) + "}",
+       "coincide"},
+      {R"({"sites": [{"x": "2", "y": "0.5", "metric": ["1","0","1"]}], )" + std::string(kSquare) + "}", "sites[0]"},
+      {R"({"sites": [{"x": "0.5", "y": "0.5", "metric": ["1","2","1"]}], )" + std::string(kSquare) + "}",
+       "sites[0].metric"},
+      {R"({"sites": [{"x": "0.5", "y": "0.5", "metric": ["1","0","1"]}],
+          "domain": [["0","0"],["0","1"],["1","1"],["1","0"]]})",
+       "clockwise"},
+      {R"({"sites": [{"x": "0.5", "y": "0.25", "metric": ["1","0","1"]}],
+          "domain": [["0","0"],["1","1"],["1","0"],["0","1"]]})",
+       "edge"},
+      {"{\"sites\": [}", "invalid JSON"}};
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    SCOPED_TRACE(i);
+    const std::string in = write_input("bad" + std::to_string(i) + ".json", cases[i].first);
+    const std::string out = in + ".out.json";
+    const Outcome r = run("diagram " + in + " --json " + out + " --quiet");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find(cases[i].second), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+  EXPECT_EQ(run("diagram /nonexistent/sites.json").exit_code, 2);
+}
+
+TEST(CliDiagram, DemoWritesItsPicture) {
+  const std::string svg = ::testing::TempDir() + "anisocert_demo_" + std::to_string(getpid()) + ".svg";
+  const Outcome r = run("demo --quiet --svg " + svg);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("49 sites"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(svg));
+}
+
+}  // namespace

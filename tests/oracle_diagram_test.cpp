@@ -1,0 +1,229 @@
+// The exact diagram (oracle/diagram.hpp) against independent methods: closed forms for
+// multiplicatively weighted sites (M = w·I: bisectors are Apollonius circles), brute-force exact
+// sampling (the nearest-site set of a rational point, computed from the definition, must equal
+// the owners of whatever the oracle says contains it), and degenerate fixtures with known answers.
+#include "oracle/diagram.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+namespace {
+
+using anisocert::Rational;
+using namespace anisocert::oracle;
+
+DiagramInput square_input(const Rational& lo, const Rational& hi) {
+  DiagramInput in;
+  in.domain = {{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}};
+  return in;
+}
+
+void add_site(DiagramInput& in, Rational x, Rational y, Rational m11, Rational m12, Rational m22) {
+  in.sites.push_back({x, y});
+  in.metrics.push_back({m11, m12, m22});
+}
+
+// Every point of a (k+1)×(k+1) grid over the domain's bounding box that lies in Ω: the oracle's
+// location must be owned by exactly the exact nearest sites (LS Definition 1).
+void expect_brute_force_agrees(const Diagram& d, int k) {
+  Rational x0 = d.input.domain[0].x, x1 = x0, y0 = d.input.domain[0].y, y1 = y0;
+  for (const auto& p : d.input.domain)
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  int located = 0;
+  for (int i = 0; i <= k; ++i)
+    for (int j = 0; j <= k; ++j) {
+      const Point2<Rational> p{x0 + (x1 - x0) * i / k, y0 + (y1 - y0) * j / k};
+      Location loc;
+      try {
+        loc = locate(d, p);
+      } catch (const std::invalid_argument&) {
+        continue;  // outside a non-convex domain
+      }
+      ++located;
+      EXPECT_EQ(loc.owners, nearest_sites(d.input, p)) << "at (" << p.x << ", " << p.y << "), location kind "
+                                                         << static_cast<int>(loc.kind) << " index " << loc.index;
+    }
+  EXPECT_GT(located, 0);
+}
+
+int count_kind(const Diagram& d, Node::Kind k) {
+  return static_cast<int>(std::count_if(d.nodes.begin(), d.nodes.end(), [&](const Node& n) { return n.kind == k; }));
+}
+
+// Closed form: w_v|p − v|² = w_w|p − w|² is the circle with centre (w_v v − w_w w)/(w_v − w_w) and
+// radius² w_v w_w |v − w|²/(w_v − w_w)²: v = (0,0), w_v = 4, w = (3,0), w_w = 1 gives centre (−1, 0),
+// radius 2, around v. The heavier site's cell is the disc: an island bounded by a closed arc.
+TEST(OracleDiagram, WeightedPairIsAnIslandBoundedByTheApolloniusCircle) {
+  DiagramInput in = square_input(-5, 5);
+  add_site(in, 0, 0, 4, 0, 4);
+  add_site(in, 3, 0, 1, 0, 1);
+  const Diagram d = compute_diagram(in);
+  ASSERT_EQ(d.arcs.size(), 1u);
+  EXPECT_TRUE(d.arcs[0].closed);
+  EXPECT_EQ(count_kind(d, Node::Kind::voronoi), 0);
+  ASSERT_EQ(d.faces.size(), 2u);
+  for (const Face& f : d.faces) EXPECT_FALSE(f.orphan);
+  for (const auto& [x, y] : std::vector<std::pair<int, int>>{{1, 0}, {-3, 0}, {-1, 2}, {-1, -2}}) {
+    const Location loc = locate(d, {x, y});  // the circle's extreme points
+    EXPECT_EQ(loc.kind, Location::Kind::arc) << x << "," << y;
+    EXPECT_EQ(loc.owners, (std::vector<int>{0, 1}));
+  }
+  EXPECT_EQ(locate(d, {Rational(99, 100), 0}).owners, std::vector<int>{0});  // just inside
+  EXPECT_EQ(locate(d, {Rational(101, 100), 0}).owners, std::vector<int>{1});  // just outside
+  expect_brute_force_agrees(d, 20);
+}
+
+// Three weighted sites: circles meeting at vertices, cells bounded by circular arcs.
+TEST(OracleDiagram, WeightedTriplesAgreeWithBruteForce) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coord(1, 19), weight(1, 6);
+  for (int trial = 0; trial < 12; ++trial) {
+    SCOPED_TRACE(trial);
+    DiagramInput in = square_input(0, 1);
+    for (int i = 0; i < 4; ++i) {
+      const Rational w = weight(rng);
+      add_site(in, Rational(coord(rng), 20), Rational(coord(rng), 20), w, 0, w);
+    }
+    std::sort(in.sites.begin(), in.sites.end(), [](auto& a, auto& b) { return std::tie(a.x, a.y) < std::tie(b.x, b.y); });
+    in.sites.erase(std::unique(in.sites.begin(), in.sites.end(),
+                               [](auto& a, auto& b) { return a.x == b.x && a.y == b.y; }),
+                   in.sites.end());
+    in.metrics.resize(in.sites.size());
+    const Diagram d = compute_diagram(in);
+    expect_brute_force_agrees(d, 16);
+  }
+}
+
+// Anisotropic random inputs (metrics with anisotropy up to about 10:1): brute force everywhere.
+TEST(OracleDiagram, AnisotropicInputsAgreeWithBruteForce) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> coord(1, 39), entry(-9, 9), diag(1, 10);
+  for (int trial = 0; trial < 10; ++trial) {
+    SCOPED_TRACE(trial);
+    DiagramInput in = square_input(0, 1);
+    for (int i = 0; i < 6 + trial; ++i) {
+      // M = FᵀF with F = [[a, b], [0, c]] is positive definite for a, c ≠ 0.
+      const Rational a(diag(rng)), b(entry(rng)), c(diag(rng));
+      in.sites.push_back({Rational(coord(rng), 40), Rational(coord(rng), 40)});
+      in.metrics.push_back({a * a, a * b, b * b + c * c});
+    }
+    std::vector<int> keep;
+    for (std::size_t i = 0; i < in.sites.size(); ++i) {
+      bool dup = false;
+      for (int j : keep) dup = dup || (in.sites[j].x == in.sites[i].x && in.sites[j].y == in.sites[i].y);
+      if (!dup) keep.push_back(static_cast<int>(i));
+    }
+    DiagramInput clean = square_input(0, 1);
+    for (int i : keep) clean.sites.push_back(in.sites[i]), clean.metrics.push_back(in.metrics[i]);
+    const Diagram d = compute_diagram(clean);
+    expect_brute_force_agrees(d, 24);
+    // Every site lies in exactly one face of its own cell that is not an orphan (LS Definition 1).
+    for (std::size_t s = 0; s < clean.sites.size(); ++s)
+      EXPECT_EQ(std::count_if(d.faces.begin(), d.faces.end(),
+                              [&](const Face& f) { return f.site == static_cast<int>(s) && !f.orphan; }),
+                1);
+  }
+}
+
+// Degenerate: four cocircular sites (identity metric) at the corners of a diamond domain: one
+// vertex of degree 4 at the centre, its dual a convex quadrilateral, which polygonalizes Ω
+// (LS Theorem 7 with its preconditions met: corners are sites, each cut arc is owned by its edge).
+TEST(OracleDiagram, CocircularSitesGiveOneVertexOfDegreeFour) {
+  DiagramInput in;
+  in.domain = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+  for (const auto& p : in.domain) add_site(in, p.x, p.y, 1, 0, 1);
+  const Diagram d = compute_diagram(in);
+  ASSERT_EQ(count_kind(d, Node::Kind::voronoi), 1);
+  const Location centre = locate(d, {0, 0});
+  ASSERT_EQ(centre.kind, Location::Kind::node);
+  EXPECT_EQ(centre.owners, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_TRUE(d.dual_triangles.empty());
+  ASSERT_EQ(d.dual_polygons.size(), 1u);
+  EXPECT_EQ(d.dual_polygons[0].sites, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_TRUE(d.theorem7.preconditions_hold);
+  EXPECT_TRUE(d.dual_check.is_triangulation);
+  EXPECT_EQ(d.arcs.size(), 4u);
+  expect_brute_force_agrees(d, 16);
+}
+
+// Degenerate: the circumcentre (0, 0) of three sites at distance 1 lies exactly on ∂Ω.
+TEST(OracleDiagram, VertexExactlyOnTheDomainBoundary) {
+  DiagramInput in;
+  in.domain = {{-2, 0}, {2, 0}, {2, 2}, {-2, 2}};
+  add_site(in, Rational(-3, 5), Rational(4, 5), 1, 0, 1);
+  add_site(in, Rational(3, 5), Rational(4, 5), 1, 0, 1);
+  add_site(in, 0, 1, 1, 0, 1);
+  const Diagram d = compute_diagram(in);
+  const Location loc = locate(d, {0, 0});
+  ASSERT_EQ(loc.kind, Location::Kind::node);
+  EXPECT_EQ(loc.owners, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(d.nodes[loc.index].kind, Node::Kind::voronoi);
+  EXPECT_EQ(d.nodes[loc.index].boundary_edges, std::vector<int>{0});
+  expect_brute_force_agrees(d, 16);
+}
+
+// Degenerate: the Apollonius circle (centre (1, 0), radius 2) of v = (0,0), w_v = 4 and
+// w = (−3, 0), w_w = 1 touches the top edge y = 2 of Ω at (1, 2): the arc runs from that point
+// around and back to it, and both cells stay connected.
+TEST(OracleDiagram, ArcTangentToTheDomainBoundary) {
+  DiagramInput in;
+  in.domain = {{-4, -4}, {4, -4}, {4, 2}, {-4, 2}};
+  add_site(in, 0, 0, 4, 0, 4);
+  add_site(in, -3, 0, 1, 0, 1);
+  const Diagram d = compute_diagram(in);
+  const Location touch = locate(d, {1, 2});
+  ASSERT_EQ(touch.kind, Location::Kind::node);
+  EXPECT_EQ(touch.owners, (std::vector<int>{0, 1}));
+  ASSERT_EQ(d.arcs.size(), 1u);
+  EXPECT_FALSE(d.arcs[0].closed);
+  EXPECT_EQ(d.arcs[0].ends[0], d.arcs[0].ends[1]);
+  EXPECT_EQ(d.faces.size(), 2u);
+  for (const Face& f : d.faces) EXPECT_FALSE(f.orphan);
+  expect_brute_force_agrees(d, 24);
+}
+
+// Degenerate: a vertex exactly on a wedge line. v = (−1, 0), M_v = I; w = (−1, 1), M_w = I/2;
+// u = (4/5, −3/5), M_u = I: all at squared distance 1 from (0, 0), and (0 − v)ᵀM_v(w − v) = 0, so
+// the vertex is on the boundary of wedge(v, w), which is open: not wedged (LS Definitions 2–3).
+TEST(OracleDiagram, VertexExactlyOnAWedgeLineIsNotWedged) {
+  DiagramInput in = square_input(-3, 3);
+  add_site(in, -1, 0, 1, 0, 1);
+  add_site(in, -1, 1, Rational(1, 2), 0, Rational(1, 2));
+  add_site(in, Rational(4, 5), Rational(-3, 5), 1, 0, 1);
+  const Diagram d = compute_diagram(in);
+  const Location loc = locate(d, {0, 0});
+  ASSERT_EQ(loc.kind, Location::Kind::node);
+  EXPECT_EQ(loc.owners, (std::vector<int>{0, 1, 2}));
+  EXPECT_FALSE(d.nodes[loc.index].wedged);
+  EXPECT_EQ(d.nodes[loc.index].unwedged_pair, std::make_pair(0, 1));
+  // Tilting M_v to m12 = 1/10 keeps Q_v(0, 0) = 1 and makes (0 − v)ᵀM_v(w − v) = 1/10 > 0; the
+  // other five wedge forms at (0, 0) are 1/2, 1.74, 1.8, 1.7 and 2.4: now the vertex is wedged.
+  in.metrics[0] = {1, Rational(1, 10), 1};
+  const Diagram e = compute_diagram(in);
+  const Location moved = locate(e, {0, 0});
+  ASSERT_EQ(moved.kind, Location::Kind::node);
+  EXPECT_TRUE(e.nodes[moved.index].wedged);
+  expect_brute_force_agrees(d, 18);
+}
+
+// A single site owns Ω; two sites with equal metrics have a straight bisector.
+TEST(OracleDiagram, OneAndTwoSites) {
+  DiagramInput one = square_input(0, 1);
+  add_site(one, Rational(1, 3), Rational(1, 3), 2, 1, 3);
+  const Diagram d1 = compute_diagram(one);
+  EXPECT_EQ(d1.faces.size(), 1u);
+  EXPECT_TRUE(d1.arcs.empty());
+  EXPECT_FALSE(d1.dual_check.is_triangulation);
+  DiagramInput two = square_input(0, 1);
+  add_site(two, Rational(1, 4), Rational(1, 2), 1, 0, 1);
+  add_site(two, Rational(3, 4), Rational(1, 2), 1, 0, 1);
+  const Diagram d2 = compute_diagram(two);
+  ASSERT_EQ(d2.arcs.size(), 1u);
+  EXPECT_EQ(d2.arcs[0].cut_by_edges, (std::vector<int>{0, 2}));
+  EXPECT_EQ(locate(d2, {Rational(1, 2), Rational(1, 3)}).kind, Location::Kind::arc);
+  expect_brute_force_agrees(d2, 8);
+}
+
+}  // namespace
