@@ -21,6 +21,22 @@ Rational Polynomial::operator()(const Rational& x) const {
   return v;
 }
 
+Sign Polynomial::sign_at(const Rational& x) const {
+  if (c_.empty()) return Sign::zero;
+  if (integral_.empty()) {
+    Integer L = 1;
+    for (const Rational& c : c_) L = boost::multiprecision::lcm(L, boost::multiprecision::denominator(c));
+    for (const Rational& c : c_) integral_.push_back(boost::multiprecision::numerator(c) * (L / boost::multiprecision::denominator(c)));
+  }
+  const Integer a = boost::multiprecision::numerator(x), b = boost::multiprecision::denominator(x);
+  Integer v = integral_.back(), power = 1;
+  for (std::size_t i = integral_.size() - 1; i-- > 0;) {
+    power *= b;
+    v = v * a + integral_[i] * power;
+  }
+  return predicates::sign_of(Rational(v));
+}
+
 std::pair<Rational, Rational> Polynomial::range(const Rational& lo, const Rational& hi) const {
   Rational vlo = 0, vhi = 0;
   for (auto it = c_.rbegin(); it != c_.rend(); ++it) {

@@ -27,7 +27,9 @@ class Polynomial {
   const std::vector<Rational>& coefficients() const { return c_; }
 
   Rational operator()(const Rational& x) const;  // Horner, exact
-  Sign sign_at(const Rational& x) const { return predicates::sign_of((*this)(x)); }
+  // sign(p(x)), exact, in integer arithmetic: for x = a/b (b > 0) and p = P/L with P integral
+  // and L > 0, sign p(x) = sign Σ P_i a^i b^(d−i) (no rational normalisation, no gcds).
+  Sign sign_at(const Rational& x) const;
   // Exact enclosure of the values on [lo, hi] (rational interval arithmetic, Horner).
   std::pair<Rational, Rational> range(const Rational& lo, const Rational& hi) const;
 
@@ -43,6 +45,7 @@ class Polynomial {
  private:
   void trim();
   std::vector<Rational> c_;
+  mutable std::vector<Integer> integral_;  // P, computed on first use
 };
 
 // a = q b + r, deg r < deg b; b non-zero.

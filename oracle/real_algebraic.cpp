@@ -147,9 +147,32 @@ RealAlgebraic RealAlgebraic::rational(const Rational& q) {
   return RealAlgebraic(Polynomial(std::vector<Rational>{-q, 1}), q, q);
 }
 
+namespace {
+
+// A dyadic rational in [mid − w/4, mid] for w = hi − lo: bisection points with short bit sizes.
+Rational simple_midpoint(const Rational& lo, const Rational& hi) {
+  const Rational w = hi - lo, mid = (lo + hi) / 2;
+  const long k = static_cast<long>(boost::multiprecision::msb(boost::multiprecision::denominator(w))) -
+                 static_cast<long>(boost::multiprecision::msb(boost::multiprecision::numerator(w))) + 3;
+  if (k <= 0) {
+    const Integer step = Integer(1) << static_cast<unsigned>(-k);
+    const Integer f = boost::multiprecision::numerator(mid) / boost::multiprecision::denominator(mid);
+    Integer m = f - (f % step);
+    if (m > mid) m -= step;  // floor for negative values
+    return Rational(m);
+  }
+  const Integer scale = Integer(1) << static_cast<unsigned>(k);
+  const Rational scaled = mid * Rational(scale);
+  Integer f = boost::multiprecision::numerator(scaled) / boost::multiprecision::denominator(scaled);
+  if (Rational(f) > scaled) f -= 1;  // floor
+  return Rational(f, scale);
+}
+
+}  // namespace
+
 void RealAlgebraic::refine() const {
   if (is_exact()) return;
-  const Rational m = (lo_ + hi_) / 2;
+  const Rational m = simple_midpoint(lo_, hi_);
   const Sign sm = p_.sign_at(m);
   if (sm == Sign::zero) {
     lo_ = hi_ = m;
