@@ -72,7 +72,7 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
       const LocatedPoint p(ip.point, width_);
       if (compare_x(p, std::min(sa.x, sb.x)) == Sign::negative || compare_x(p, std::max(sa.x, sb.x)) == Sign::positive)
         continue;
-      const Nearest n = nearest(p, v);
+      const Nearest n = nearest(p, v, {w});
       add_cut(p, n.closer ? -1 : register_node(Node::Kind::domain_crossing, p, n.owners), false);
     }
   }
@@ -83,7 +83,7 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
       const LocatedPoint p(ip.point, width_);
       const Conic Fx{0, 0, 0, 2 * F.a, F.b, F.d};
       if (p.sign_of(Fx) == Sign::zero) {  // singular: the two lines of a line-pair bisector cross
-        const Nearest n = nearest(p, v);
+        const Nearest n = nearest(p, v, {w});
         const bool kept = !n.closer && !domain_position(d_.sheared, p).outside();
         add_cut(p, kept ? register_node(Node::Kind::singular, p, n.owners) : -1, false);
         cuts.back().on_upper = cuts.back().on_lower = true;
@@ -129,7 +129,7 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
       const LocatedPoint s = branch.at(xm, width_);
       const DomainPosition pos = domain_position(d_.sheared, s);
       if (!pos.inside) continue;
-      const Nearest n = nearest(s, v);
+      const Nearest n = nearest(s, v, {w});
       if (n.closer) continue;
       if (n.owners.size() != 2) throw std::logic_error("oracle: a third site is equidistant inside an arc piece");
       kept.push_back({Piece{branch, a.node, b.node, a.at, b.at, xm}, on[k], on[k + 1]});

@@ -35,7 +35,8 @@ class Builder {
   void add_corners();
   void find_vertices();
   int register_node(Node::Kind kind, const LocatedPoint& p, const std::vector<int>& owners);
-  Nearest nearest(const LocatedPoint& p, int v) const;
+  // `equal`: sites known (by construction of p) to be at v's distance, not compared again.
+  Nearest nearest(const LocatedPoint& p, int v, const std::vector<int>& equal = {}) const;
   // arcs
   void build_arcs();
   void build_arcs_of_pair(int v, int w, const BoxBounds& region);

@@ -40,7 +40,7 @@ DomainPosition domain_position(const DiagramInput& sh, const LocatedPoint& p) {
 
 Builder::Builder(Diagram& d, const std::function<void(const std::string&)>& progress) : d_(d), progress_(progress) {}
 
-Nearest Builder::nearest(const LocatedPoint& p, int v) const {
+Nearest Builder::nearest(const LocatedPoint& p, int v, const std::vector<int>& equal) const {
   auto value = [&](int u) {
     const auto& c = distance_[u];
     return c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.y * p.y + c[3] * p.x + c[4] * p.y + c[5];
@@ -50,6 +50,10 @@ Nearest Builder::nearest(const LocatedPoint& p, int v) const {
   out.owners.push_back(v);
   for (int u = 0; u < static_cast<int>(distance_.size()); ++u) {
     if (u == v) continue;
+    if (std::find(equal.begin(), equal.end(), u) != equal.end()) {
+      out.owners.push_back(u);
+      continue;
+    }
     const FilterInterval qu = value(u);
     if (qu.lo > qv.hi) continue;  // u is strictly farther
     Sign s = Sign::zero;          // sign(Q_u − Q_v) at p
@@ -106,7 +110,7 @@ void Builder::find_vertices() {
     for (const IntersectionPoint& ip : x.points) {
       ++d_.stats.candidate_points;
       const LocatedPoint p(ip.point, width_);
-      const Nearest n = nearest(p, t[0]);
+      const Nearest n = nearest(p, t[0], {t[1], t[2]});
       if (n.closer) continue;
       if (domain_position(d_.sheared, p).outside()) continue;
       register_node(Node::Kind::voronoi, p, n.owners);

@@ -1,5 +1,7 @@
 #include "oracle/real_algebraic.hpp"
 
+#include "predicates/filter_interval.hpp"
+
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
@@ -189,8 +191,14 @@ void RealAlgebraic::refine_below(const Rational& width) const {
 
 Sign RealAlgebraic::sign_of(const Polynomial& q) const {
   if (q.is_zero()) return Sign::zero;
+  std::vector<predicates::FilterInterval> coefficients;  // outward double enclosures, for a filter
+  for (const Rational& c : q.coefficients()) coefficients.push_back(predicates::FilterInterval::around(c));
   const auto decided = [&]() -> std::optional<Sign> {
     if (is_exact()) return q.sign_at(lo_);
+    const predicates::FilterInterval x{predicates::FilterInterval::around(lo_).lo, predicates::FilterInterval::around(hi_).hi};
+    predicates::FilterInterval v = coefficients.back();
+    for (std::size_t i = coefficients.size() - 1; i-- > 0;) v = v * x + coefficients[i];
+    if (const auto s = v.sign(); s && *s != Sign::zero) return *s;
     const auto [a, b] = q.range(lo_, hi_);
     if (a > 0) return Sign::positive;
     if (b < 0) return Sign::negative;
