@@ -232,9 +232,24 @@ void Builder::build_faces() {
     if (o < 0) throw std::logic_error("oracle: a hole is inside no face of its site");
     d_.faces[face_of_cycle[o]].holes.push_back(c);
   }
+  // The face holding site s: it is the only nearest site at s, so when s is on ∂Ω it lies on (an
+  // end of, or inside) a boundary piece of its own cell, on that piece's cycle; otherwise it is
+  // strictly inside the innermost outer cycle of its site around it.
+  auto home_of = [&](int s, const LocatedPoint& site) {
+    if (domain_position(d_.sheared, site).edges.empty()) return innermost(s, site, -1);
+    for (int h = 0; h < static_cast<int>(d_.half_edges.size()); ++h) {
+      const HalfEdge& e = d_.half_edges[h];
+      if (e.boundary < 0 || d_.boundary[e.boundary].site != s) continue;
+      const Span span = spans_of(d_, e)[0];
+      if (compare_x(site, *span.left) != Sign::negative && compare_x(site, *span.right) != Sign::positive &&
+          span.branch.compare_point(site) == Sign::zero)
+        return e.cycle;
+    }
+    throw std::logic_error("oracle: a site on ∂Ω is on no boundary piece of its cell");
+  };
   for (int s = 0; s < static_cast<int>(d_.sheared.sites.size()); ++s) {
     const LocatedPoint site = LocatedPoint::rational(d_.sheared.sites[s].x, d_.sheared.sites[s].y);
-    const int home = innermost(s, site, -1);
+    const int home = home_of(s, site);
     for (Face& f : d_.faces)
       if (f.site == s) f.orphan = f.outer_cycle != home;
   }

@@ -227,3 +227,23 @@ TEST(OracleDiagram, OneAndTwoSites) {
 }
 
 }  // namespace
+
+namespace {
+
+// Regression (found by LS_T7_PreconditionsGiveATriangulation): a site on a corner of Ω lies on
+// its face's boundary cycle, where ray casting cannot decide; such faces were called orphans.
+// With one constant metric every cell is convex and contains its site: no orphan at all.
+TEST(OracleDiagram, SitesOnDomainCornersAreNotOrphans) {
+  DiagramInput in;
+  in.domain = {{0, 0}, {Rational(1, 2), 0}, {1, 0}, {1, Rational(1, 2)}, {1, 1}, {Rational(1, 2), 1}, {0, 1}, {0, Rational(1, 2)}};
+  in.sites = in.domain;
+  in.sites.push_back({Rational(5, 16), Rational(5, 16)});
+  in.metrics.assign(in.sites.size(), {Rational(15210, 4000), Rational(-8190, 4000), Rational(19620, 4000)});
+  const Diagram d = compute_diagram(in);
+  EXPECT_EQ(d.faces.size(), in.sites.size());
+  for (const Face& f : d.faces) EXPECT_FALSE(f.orphan) << "face of site " << f.site;
+  EXPECT_TRUE(d.theorem7.preconditions_hold);
+  EXPECT_TRUE(d.dual_check.is_triangulation);
+}
+
+}  // namespace
