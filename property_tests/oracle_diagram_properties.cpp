@@ -24,7 +24,7 @@ bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.
 
 // LS Definition 1: p lies in the cell of v iff no site is closer. The oracle's location of a
 // random rational point must be owned by exactly its nearest sites.
-RC_GTEST_PROP(OracleDiagram, LS_D1_LocationsAreTheNearestSites, ()) {
+RC_GTEST_PROP(LS_D1, LocationsAreTheNearestSites, ()) {
   const DiagramCase c = *diagram_case();
   RC_TAG(c.kind);
   const Diagram d = compute_diagram(c.input);
@@ -39,7 +39,7 @@ RC_GTEST_PROP(OracleDiagram, LS_D1_LocationsAreTheNearestSites, ()) {
 // LS Theorem 4: if every arc and vertex on the boundary of a face of Vor(v) is wedged, the face
 // is star-shaped from v (Ω is convex here, so the restriction keeps that); in particular it
 // contains v: an orphan always has an unwedged arc or vertex on its boundary.
-RC_GTEST_PROP(OracleDiagram, LS_T4_FacesWithWedgedBoundaryAreStarShaped, ()) {
+RC_GTEST_PROP(LS_T4, FacesWithWedgedBoundaryAreStarShaped, ()) {
   const DiagramCase c = *diagram_case();
   const Diagram d = compute_diagram(c.input);
   std::vector<bool> wedged_boundary(d.faces.size(), true);
@@ -75,7 +75,7 @@ RC_GTEST_PROP(OracleDiagram, LS_T4_FacesWithWedgedBoundaryAreStarShaped, ()) {
 
 // LS Lemma 6: at a wedged Voronoi vertex owned by v1, v2, v3 (interior, degree 3), the triangle
 // v1v2v3 in the counter-clockwise order of the cells around the vertex is positively oriented.
-RC_GTEST_PROP(OracleDiagram, LS_L6_WedgedVertexTrianglesArePositive, ()) {
+RC_GTEST_PROP(LS_L6, WedgedVertexTrianglesArePositive, ()) {
   const DiagramCase c = *diagram_case();
   RC_TAG(c.kind);
   const Diagram d = compute_diagram(c.input);
@@ -91,7 +91,7 @@ RC_GTEST_PROP(OracleDiagram, LS_L6_WedgedVertexTrianglesArePositive, ()) {
 // LS Theorem 7: sites include Ω's vertices, every cut arc is owned by the endpoints of the edge
 // that cuts it, every arc and vertex wedged ⇒ the dual is a polygonalization of Ω with strictly
 // convex cells; the oracle's exact check (BWY §3.2.1, chain argument) must then succeed.
-RC_GTEST_PROP(OracleDiagram, LS_T7_PreconditionsGiveATriangulation, ()) {
+RC_GTEST_PROP(LS_T7, PreconditionsGiveATriangulation, ()) {
   const DiagramCase c = *theorem7_case();
   const Diagram d = compute_diagram(c.input);
   RC_TAG(c.kind, d.theorem7.preconditions_hold ? "preconditions hold" : "preconditions fail");

@@ -230,7 +230,7 @@ TEST(OracleDiagram, OneAndTwoSites) {
 
 namespace {
 
-// Regression (found by LS_T7_PreconditionsGiveATriangulation): a site on a corner of Ω lies on
+// Regression (found by LS_T7.PreconditionsGiveATriangulation): a site on a corner of Ω lies on
 // its face's boundary cycle, where ray casting cannot decide; such faces were called orphans.
 // With one constant metric every cell is convex and contains its site: no orphan at all.
 TEST(OracleDiagram, SitesOnDomainCornersAreNotOrphans) {
