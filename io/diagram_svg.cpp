@@ -160,9 +160,10 @@ std::string diagram_svg(const Diagram& d) {
     o << "<circle cx=\"" << X(x) << "\" cy=\"" << Y(y) << "\" r=\"2.5\" fill=\"" << (n.wedged ? "#1f4e9c" : "#d62728")
       << "\"><title>vertex " << i << "</title></circle>\n";
   }
-  o << "<text x=\"8\" y=\"" << H + 26 << "\" font-family=\"sans-serif\" font-size=\"13\">"
-    << "anisotropic Voronoi diagram: arcs wedged (blue) / not wedged (red), orphans hatched, dual dashed green, "
-       "metric ellipses grey</text>\n</svg>\n";
+  o << "<text x=\"8\" y=\"" << H + 16 << "\" font-family=\"sans-serif\" font-size=\"12\">"
+    << "arcs: wedged (blue), not wedged (red, witness circled); orphans hatched; dual dashed green</text>\n"
+    << "<text x=\"8\" y=\"" << H + 32 << "\" font-family=\"sans-serif\" font-size=\"12\">"
+    << "sites black with their metric's unit ellipse (common scale); Voronoi vertices dots</text>\n</svg>\n";
   return o.str();
 }
 
