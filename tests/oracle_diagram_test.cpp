@@ -247,3 +247,57 @@ TEST(OracleDiagram, SitesOnDomainCornersAreNotOrphans) {
 }
 
 }  // namespace
+
+namespace {
+
+// A non-convex (L-shaped) domain with a site on its reflex corner and anisotropic metrics: the
+// restriction may cut cells into several faces; brute force decides every grid point.
+TEST(OracleDiagram, NonConvexDomainAgreesWithBruteForce) {
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> coord(1, 31), entry(-3, 3), diag(1, 5);
+  for (int trial = 0; trial < 6; ++trial) {
+    SCOPED_TRACE(trial);
+    DiagramInput in;
+    in.domain = {{0, 0}, {1, 0}, {1, Rational(1, 2)}, {Rational(1, 2), Rational(1, 2)}, {Rational(1, 2), 1}, {0, 1}};
+    add_site(in, Rational(1, 2), Rational(1, 2), 1, 0, 1);  // the reflex corner
+    while (in.sites.size() < 7) {
+      const Point2<Rational> p{Rational(coord(rng), 32), Rational(coord(rng), 32)};
+      if (p.x > Rational(1, 2) && p.y > Rational(1, 2)) continue;  // outside the L
+      bool dup = false;
+      for (const auto& s : in.sites) dup = dup || (s.x == p.x && s.y == p.y);
+      if (dup) continue;
+      const Rational a(diag(rng)), b(entry(rng)), c(diag(rng));
+      add_site(in, p.x, p.y, a * a, a * b, b * b + c * c);
+    }
+    const Diagram d = compute_diagram(in);
+    expect_brute_force_agrees(d, 32);
+    for (std::size_t s = 0; s < in.sites.size(); ++s)
+      EXPECT_EQ(std::count_if(d.faces.begin(), d.faces.end(),
+                              [&](const Face& f) { return f.site == static_cast<int>(s) && !f.orphan; }),
+                1);
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// A degeneracy the oracle declines by name: v = (0, 1), w = (0, −1) with M = I and u = (−1, 2)
+// with M_u = [1 1/2; 1/2 1/2] all have Q = t² + 1 on the x-axis (Q_u(t, 0) = (t + 1)² − 2(t + 1)
+// + 2 = t² + 1), so three cells tie along a whole line (a one-dimensional piece of a cell, which
+// the face structure does not model): an std::domain_error naming the three sites, never a
+// wrong answer.
+TEST(OracleDiagram, ThreeSitesTiedAlongALineAreDeclinedByName) {
+  DiagramInput in = square_input(-3, 3);
+  add_site(in, 0, 1, 1, 0, 1);
+  add_site(in, 0, -1, 1, 0, 1);
+  add_site(in, -1, 2, 1, Rational(1, 2), Rational(1, 2));
+  try {
+    compute_diagram(in);
+    FAIL() << "expected std::domain_error";
+  } catch (const std::domain_error& e) {
+    EXPECT_NE(std::string(e.what()).find("sites 0, 1 and 2"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
