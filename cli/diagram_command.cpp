@@ -39,8 +39,10 @@ std::string summary(const oracle::Diagram& d, const std::string& name) {
   for (const auto& a : d.arcs) closed += a.closed ? 1 : 0, cut += a.cut_by_edges.empty() ? 0 : 1;
   for (const auto& n : d.nodes) high += n.sites.size() > 3 ? 1 : 0;
   o << "  closed arcs " << closed << ", arcs cut by ∂Ω " << cut << ", vertices of degree > 3 " << high << "\n";
+  std::size_t listed = 0;
   for (std::size_t i = 0; i < d.faces.size(); ++i)
-    if (d.faces[i].orphan) o << "  orphan: face " << i << " of site " << d.faces[i].site << "\n";
+    if (d.faces[i].orphan && listed++ < 5) o << "  orphan: face " << i << " of site " << d.faces[i].site << "\n";
+  if (listed > 5) o << "  … and " << listed - 5 << " more orphans (all in --json)\n";
   o << "  dual: " << d.dual_triangles.size() << " triangles, " << d.dual_polygons.size() << " polygons; "
     << (d.dual_check.is_triangulation ? "a triangulation of Ω (checked exactly)" : "not a triangulation of Ω") << "\n";
   for (std::size_t i = 0; i < d.dual_check.failures.size() && i < 3; ++i) o << "    " << d.dual_check.failures[i] << "\n";
