@@ -178,7 +178,7 @@ class Reader {
 
   SiteSet read(const Json& doc) const {
     if (!doc.is_object()) fail("", "the top level must be an object, got " + show(doc));
-    require_keys(doc, "", {"sites"}, {"sites", "domain", "segments"});
+    require_keys(doc, "", {"sites"}, {"sites", "domain", "segments", "triangles"});
     SiteSet set;
     read_sites(doc.at("sites"), set);
     require_distinct_sites(set.sites);
@@ -192,6 +192,7 @@ class Reader {
       set.domain = default_box(set.sites);
     }
     if (doc.contains("segments")) set.segments = read_segments(doc.at("segments"), set.sites.size());
+    if (doc.contains("triangles")) set.triangles = read_triangles(doc.at("triangles"), set.sites.size());
     return set;
   }
 
@@ -323,6 +324,31 @@ class Reader {
     return {Point{x0, y0}, Point{x1, y0}, Point{x1, y1}, Point{x0, y1}};
   }
 
+  // Site indices: an array of `count` distinct indices from 0 to n − 1 at `path`.
+  std::vector<int> read_indices(const Json& s, std::size_t count, std::size_t n, const std::string& path,
+                                const char* what) const {
+    if (!s.is_array() || s.size() != count) fail(path, std::string("expected ") + what + ", got " + show(s));
+    std::vector<int> ends;
+    for (std::size_t e = 0; e < count; ++e) {
+      if (!s[e].is_number_unsigned() || s[e].get<std::uint64_t>() >= n)
+        fail(index(path, e), "expected a site index from 0 to " + std::to_string(n - 1) + ", got " + show(s[e]));
+      const int v = static_cast<int>(s[e].get<std::uint64_t>());
+      if (std::find(ends.begin(), ends.end(), v) != ends.end()) fail(path, "repeats " + index("sites", v));
+      ends.push_back(v);
+    }
+    return ends;
+  }
+
+  std::vector<std::array<int, 3>> read_triangles(const Json& triangles, std::size_t n) const {
+    if (!triangles.is_array()) fail("triangles", "expected an array of site-index triples [i, j, k], got " + show(triangles));
+    std::vector<std::array<int, 3>> result;
+    for (std::size_t k = 0; k < triangles.size(); ++k) {
+      const std::vector<int> t = read_indices(triangles[k], 3, n, index("triangles", k), "[i, j, k] with three site indices");
+      result.push_back({t[0], t[1], t[2]});
+    }
+    return result;
+  }
+
   std::vector<std::pair<int, int>> read_segments(const Json& segments, std::size_t n) const {
     if (!segments.is_array()) fail("segments", "expected an array of site-index pairs [i, j], got " + show(segments));
     std::vector<std::pair<int, int>> result;
@@ -330,14 +356,7 @@ class Reader {
     for (std::size_t k = 0; k < segments.size(); ++k) {
       const std::string path = index("segments", k);
       const Json& s = segments[k];
-      if (!s.is_array() || s.size() != 2) fail(path, "expected [i, j] with two site indices, got " + show(s));
-      int ends[2];
-      for (std::size_t e = 0; e < 2; ++e) {
-        if (!s[e].is_number_unsigned() || s[e].get<std::uint64_t>() >= n)
-          fail(index(path, e), "expected a site index from 0 to " + std::to_string(n - 1) + ", got " + show(s[e]));
-        ends[e] = static_cast<int>(s[e].get<std::uint64_t>());
-      }
-      if (ends[0] == ends[1]) fail(path, "joins " + index("sites", ends[0]) + " to itself");
+      const std::vector<int> ends = read_indices(s, 2, n, path, "[i, j] with two site indices");
       const auto [it, is_new] = first_of.emplace(std::minmax(ends[0], ends[1]), k);
       if (!is_new)
         fail(path, "repeats " + index("segments", it->second) + " (" + index("sites", ends[0]) + " to " +

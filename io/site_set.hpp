@@ -6,6 +6,7 @@
 #include "predicates/metric.hpp"
 #include "predicates/point.hpp"
 
+#include <array>
 #include <istream>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,7 @@ struct SiteSet {
   std::vector<predicates::Point2<Rational>> domain;  // simple polygon, counter-clockwise, validated
   bool domain_given = false;                         // false: the default box was built
   std::vector<std::pair<int, int>> segments;         // constrained segments by site index
+  std::vector<std::array<int, 3>> triangles;         // a mesh's triangles by site index (mesh files)
 };
 
 // Bad input: what() is one line naming the source (file name), the JSON path or index, and what
@@ -31,12 +33,14 @@ struct InputError : std::runtime_error {
 // Reads
 //   {"sites": [{"x": X, "y": Y, "metric": [m11, m12, m22]}, ...],   required, non-empty
 //    "domain": [[X, Y], ...],                                        optional, >= 3 vertices
-//    "segments": [[i, j], ...]}                                      optional
+//    "segments": [[i, j], ...],                                      optional
+//    "triangles": [[i, j, k], ...]}                                  optional (mesh files)
 // where a number is a JSON string (integer, fraction or decimal, see parse_rational) or a plain
 // JSON number, both taken exactly from their text (0.1 is 1/10). Checks, exactly: every metric is
 // positive definite; the domain is a simple counter-clockwise polygon (consecutive collinear
 // vertices allowed when the boundary runs straight on); no two sites coincide; every site lies
-// in the closed domain; segments join two distinct existing sites and none repeats.
+// in the closed domain; segments join two distinct existing sites and none repeats; triangles
+// name three distinct existing sites (whether they form a mesh is the certifier's verdict).
 // Without "domain", the domain is the sites' bounding box enlarged on every side by
 // max(width, height)/8 (by 1 when both are 0), counter-clockwise from the lower left corner.
 // Throws InputError; source_name is the file name used in messages.

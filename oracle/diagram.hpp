@@ -9,6 +9,7 @@
 // output (vertex_xy, witness) map back to the input's coordinates.
 #include "oracle/branch.hpp"
 #include "oracle/diagram_input.hpp"
+#include "oracle/triangulation_check.hpp"
 
 #include <functional>
 #include <optional>
@@ -80,12 +81,6 @@ struct Face {
 struct DualCell {
   int vertex;                                 // node id
   std::vector<int> sites;                     // in the cyclic order of the cells around the vertex
-};
-
-struct TriangulationCheck {
-  bool is_triangulation = false;
-  std::vector<std::string> checks_run;
-  std::vector<std::string> failures;          // each names the offending cell, edge or site
 };
 
 struct Theorem7 {

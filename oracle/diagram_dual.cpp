@@ -1,16 +1,8 @@
-// The geometric dual of D|Ω (LS §5) and the exact decision whether it is a triangulation
-// (polygonalization) of Ω (BWY §3.2.1), and the Theorem 7 verdict (LS Theorem 7).
-//
-// The check is simpler than the diagram it checks (DESIGN.md § Certificates): with every dual
-// cell strictly convex and counter-clockwise, and the cells' directed edges cancelling in pairs
-// except for edges that tile ∂Ω counter-clockwise, the boundary of the 2-chain of cells is ∂Ω,
-// so every point of Ω off the edges is covered exactly once (its coverage is the winding number
-// of ∂Ω about it) and no point outside is covered.
+// The geometric dual of D|Ω (LS §5), whether it is a triangulation (polygonalization) of Ω
+// (triangulation_check.hpp, BWY §3.2.1), and the Theorem 7 verdict (LS Theorem 7).
 #include "oracle/diagram_build.hpp"
-#include "predicates/orientation.hpp"
 
 #include <algorithm>
-#include <map>
 #include <set>
 
 namespace anisocert::oracle::build {
@@ -19,31 +11,7 @@ namespace {
 
 std::string pair_text(int a, int b) { return "(" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
 
-std::string list_text(const std::vector<int>& v) {
-  std::string s = "(";
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v[i]);
-  return s + ")";
-}
-
-int left_site_of(const Diagram& d, int h) {
-  const HalfEdge& e = d.half_edges[h];
-  return d.cycles[e.cycle].site;
-}
-
-// A polygon with every turn to the left whose edge direction turns once around: strictly convex.
-bool strictly_convex(const std::vector<Point2<Rational>>& p) {
-  const std::size_t k = p.size();
-  int turns = 0;
-  auto half = [](const Rational& dx, const Rational& dy) { return dy > 0 || (dy == 0 && dx > 0) ? 0 : 1; };
-  for (std::size_t i = 0; i < k; ++i) {
-    const auto& a = p[i];
-    const auto& b = p[(i + 1) % k];
-    const auto& c = p[(i + 2) % k];
-    if (predicates::orientation(a, b, c) != Sign::positive) return false;
-    if (half(b.x - a.x, b.y - a.y) == 1 && half(c.x - b.x, c.y - b.y) == 0) ++turns;
-  }
-  return turns == 1;
-}
+int left_site_of(const Diagram& d, int h) { return d.cycles[d.half_edges[h].cycle].site; }
 
 }  // namespace
 
@@ -72,82 +40,10 @@ void Builder::build_dual() {
 }
 
 void Builder::check_triangulation() {
-  TriangulationCheck& t = d_.dual_check;
-  const auto& sites = d_.input.sites;
-  const auto& dom = d_.input.domain;
-  t.checks_run = {"every dual cell has three or more distinct sites",
-                  "every dual cell is strictly convex and counter-clockwise (exact orientations)",
-                  "every interior dual edge is in exactly two cells, once in each direction",
-                  "the unpaired dual edges tile the edges of Ω counter-clockwise",
-                  "every site is a vertex of some cell"};
-  std::map<std::pair<int, int>, int> directed;
-  std::vector<bool> used(sites.size(), false);
-  std::vector<const DualCell*> cells;
-  for (const auto& c : d_.dual_triangles) cells.push_back(&c);
-  for (const auto& c : d_.dual_polygons) cells.push_back(&c);
-  if (cells.empty()) t.failures.push_back("the diagram has no Voronoi vertex in Ω, so its dual has no cell");
-  for (const DualCell* c : cells) {
-    const std::set<int> distinct(c->sites.begin(), c->sites.end());
-    if (c->sites.size() < 3 || distinct.size() != c->sites.size()) {
-      t.failures.push_back("the dual cell of vertex " + std::to_string(c->vertex) + " has sites " + list_text(c->sites) +
-                           ": fewer than three or a repeated site");
-      continue;
-    }
-    std::vector<Point2<Rational>> p;
-    for (int s : c->sites) p.push_back(sites[s]), used[s] = true;
-    if (!strictly_convex(p))
-      t.failures.push_back("the dual cell of vertex " + std::to_string(c->vertex) + " with sites " + list_text(c->sites) +
-                           " is not strictly convex and counter-clockwise");
-    for (std::size_t i = 0; i < c->sites.size(); ++i) ++directed[{c->sites[i], c->sites[(i + 1) % c->sites.size()]}];
-  }
-  // Unpaired directed edges must lie on ∂Ω, along it; collect them per edge of Ω.
-  std::vector<std::map<int, int>> along(dom.size());  // edge k: start site → end site
-  for (const auto& [e, count] : directed) {
-    const auto [a, b] = e;
-    const int back = directed.count({b, a}) ? directed.at({b, a}) : 0;
-    if (count > 1) {
-      t.failures.push_back("dual edge " + pair_text(a, b) + " is in " + std::to_string(count) +
-                           " cells in the same direction (overlapping cells)");
-      continue;
-    }
-    if (back == 1) continue;
-    bool on_boundary = false;
-    for (std::size_t k = 0; k < dom.size() && !on_boundary; ++k) {
-      const auto& p = dom[k];
-      const auto& q = dom[(k + 1) % dom.size()];
-      if (predicates::orientation(p, q, sites[a]) != Sign::zero || predicates::orientation(p, q, sites[b]) != Sign::zero)
-        continue;
-      const Rational dot = (q.x - p.x) * (sites[b].x - sites[a].x) + (q.y - p.y) * (sites[b].y - sites[a].y);
-      auto within = [&](const Point2<Rational>& s) {
-        const Rational t0 = (q.x - p.x) * (s.x - p.x) + (q.y - p.y) * (s.y - p.y);
-        const Rational len = (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
-        return t0 >= 0 && t0 <= len;
-      };
-      if (dot > 0 && within(sites[a]) && within(sites[b])) {
-        on_boundary = true;
-        if (!along[k].emplace(a, b).second) on_boundary = false;
-      }
-    }
-    if (!on_boundary)
-      t.failures.push_back("dual edge " + pair_text(a, b) + " is in one cell only and does not run counter-clockwise along ∂Ω");
-  }
-  for (std::size_t k = 0; k < dom.size(); ++k) {
-    const auto site_at = [&](const Point2<Rational>& c) {
-      for (std::size_t s = 0; s < sites.size(); ++s)
-        if (sites[s].x == c.x && sites[s].y == c.y) return static_cast<int>(s);
-      return -1;
-    };
-    const int from = site_at(dom[k]), to = site_at(dom[(k + 1) % dom.size()]);
-    int at = from;
-    std::size_t steps = 0;
-    while (at >= 0 && at != to && along[k].count(at)) at = along[k].at(at), ++steps;
-    if (from < 0 || at != to || steps != along[k].size())
-      t.failures.push_back("the dual edges along edge " + std::to_string(k) + " of Ω do not tile it from corner " +
-                           std::to_string(k) + " to corner " + std::to_string((k + 1) % dom.size()));
-  }
-  for (std::size_t s = 0; s < sites.size(); ++s)
-    if (!used[s]) t.failures.push_back("site " + std::to_string(s) + " is in no dual cell");
-  t.is_triangulation = t.failures.empty();
+  std::vector<Cell> cells;
+  for (const auto* list : {&d_.dual_triangles, &d_.dual_polygons})
+    for (const DualCell& c : *list) cells.push_back({"the dual cell of vertex " + std::to_string(c.vertex), c.sites});
+  d_.dual_check = oracle::check_triangulation(d_.input.sites, d_.input.domain, cells);
 }
 
 void Builder::check_theorem7() {

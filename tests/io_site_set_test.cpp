@@ -93,7 +93,7 @@ TEST(SiteSet, TopLevelErrors) {
   EXPECT_ERROR(R"({"sites": []})", "t.json: sites: expected a non-empty array of sites");
   EXPECT_ERROR(R"({"sites": {}})", "t.json: sites: expected a non-empty array of sites");
   EXPECT_ERROR(R"({"sites": [{"x": 0, "y": 0, "metric": [1, 0, 1]}], "domian": []})",
-               "t.json: unknown key \"domian\" (expected sites, domain, segments)");
+               "t.json: unknown key \"domian\" (expected sites, domain, segments, triangles)");
   EXPECT_ERROR(R"({"sites": [{"x": 0, "y": 0, "metric": [1, 0, 1]}], "sites": []})",
                "t.json: key \"sites\" appears twice");
 }
@@ -224,7 +224,7 @@ TEST(SiteSet, SegmentsAreCheckedAgainstTheSites) {
   EXPECT_ERROR(doc("[[0, 3]]"), "t.json: segments[0][1]: expected a site index from 0 to 2, got 3");
   EXPECT_ERROR(doc("[[-1, 0]]"), "t.json: segments[0][0]: expected a site index from 0 to 2, got -1");
   EXPECT_ERROR(doc("[[0, 1.5]]"), "t.json: segments[0][1]: expected a site index");
-  EXPECT_ERROR(doc("[[0, 1], [2, 2]]"), "t.json: segments[1]: joins sites[2] to itself");
+  EXPECT_ERROR(doc("[[0, 1], [2, 2]]"), "t.json: segments[1]: repeats sites[2]");
   EXPECT_ERROR(doc("[[0, 1], [0, 2], [1, 0]]"), "t.json: segments[2]: repeats segments[0] (sites[1] to sites[0])");
 }
 
