@@ -19,5 +19,7 @@ void add_conics_command(CLI::App& app, int& exit_code);
 // `anisocert diagram IN.json` and `anisocert demo` (diagram_command.cpp).
 void add_diagram_command(CLI::App& app, int& exit_code);
 void add_demo_command(CLI::App& app, int& exit_code);
+// `anisocert certify MESH.json` (certify_command.cpp).
+void add_certify_command(CLI::App& app, int& exit_code);
 
 }  // namespace anisocert::cli

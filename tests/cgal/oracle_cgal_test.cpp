@@ -32,6 +32,8 @@
 // inputs, F and F⁻¹ are rational, so every expected point is rational.
 
 #include "oracle/diagram.hpp"
+#include "oracle/mesh_certifier.hpp"
+#include "predicates/incircle.hpp"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -508,6 +510,79 @@ TEST(OracleVsCgal, VertexAtACorner) {
 
 TEST(OracleVsCgal, CollinearSitesHaveNoVertex) {
   check_case({{r(1), r(1), r(0), r(2)}, {{r(1, 5), r(1, 5)}, {r(2, 5), r(2, 5)}, {r(3, 5), r(3, 5)}, {r(4, 5), r(4, 5)}}});
+}
+
+}  // namespace
+
+namespace {
+
+// The mesh certifier against CGAL: the Delaunay triangulation of F·sites mapped back by F⁻¹ is
+// Delaunay for M = FᵀF at every vertex (LU Definition 2.1), so with Ω the sites' convex hull it is
+// valid and locally uniform; flipping one interior edge of a strictly convex, non-cocircular
+// quadrilateral keeps it valid but must break local uniformity, with a witness at that edge.
+oracle::Mesh mesh_from_cgal(const Case& c) {
+  std::vector<std::pair<K::Point_2, int>> points;
+  for (std::size_t i = 0; i < c.sites.size(); ++i) {
+    const P2 q = apply_F(c, c.sites[i]);
+    points.push_back({K::Point_2(to_ft(q.x), to_ft(q.y)), static_cast<int>(i)});
+  }
+  Delaunay dt(points.begin(), points.end());
+  oracle::Mesh m;
+  m.sites = c.sites;
+  m.metrics.assign(c.sites.size(), metric(c));
+  const bool flips = det(c) < 0;  // F reverses orientation: reverse every triangle
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    std::array<int, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+    if (flips) std::swap(t[1], t[2]);
+    m.triangles.push_back(t);
+  }
+  auto hull = dt.incident_vertices(dt.infinite_vertex()), done = hull;
+  do m.domain.push_back(c.sites[hull->info()]);
+  while (++hull != done);
+  Rational area = 0;
+  for (std::size_t i = 0; i < m.domain.size(); ++i)
+    area += m.domain[i].x * m.domain[(i + 1) % m.domain.size()].y - m.domain[(i + 1) % m.domain.size()].x * m.domain[i].y;
+  if (area < 0) std::reverse(m.domain.begin(), m.domain.end());
+  return m;
+}
+
+TEST(CertifierVsCgal, DelaunayMeshesAreValidAndLocallyUniformAndAFlipIsCaught) {
+  int flipped = 0;
+  for (int k = 0; k < 30; ++k) {
+    const Case c = random_case(k);
+    if (c.sites.size() < 4) continue;
+    SCOPED_TRACE(describe(c));
+    oracle::Mesh m = mesh_from_cgal(c);
+    if (m.domain.size() < 3) continue;  // collinear sites
+    const oracle::CertifyReport r = oracle::certify_mesh(m, {});
+    EXPECT_TRUE(r.valid_holds()) << (r.valid->failures.empty() ? "" : r.valid->failures[0]);
+    EXPECT_TRUE(r.uniform_violations.empty()) << r.uniform_violations[0].text;
+    // Flip the first interior edge whose quadrilateral is strictly convex and not M-cocircular.
+    std::map<std::pair<int, int>, std::pair<int, int>> opposite;  // directed edge → (triangle, apex)
+    for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+      for (int i = 0; i < 3; ++i)
+        opposite[{m.triangles[t][i], m.triangles[t][(i + 1) % 3]}] = {t, m.triangles[t][(i + 2) % 3]};
+    for (const auto& [e, tp] : opposite) {
+      const auto back = opposite.find({e.second, e.first});
+      if (back == opposite.end()) continue;
+      const int a = e.first, b = e.second, p = tp.second, q = back->second.second;
+      const auto& S = m.sites;
+      if (orientation(S[p], S[q], S[a]) * orientation(S[p], S[q], S[b]) >= 0) continue;  // not strictly convex
+      if (anisocert::predicates::incircle(S[a], S[b], S[p], S[q], m.metrics[0]) == anisocert::predicates::Sign::zero)
+        continue;
+      oracle::Mesh g = m;
+      g.triangles[tp.first] = {p, q, b};  // the quadrilateral a, q, b, p split by pq instead of ab
+      g.triangles[back->second.first] = {q, p, a};
+      const oracle::CertifyReport f = oracle::certify_mesh(g, {});
+      EXPECT_TRUE(f.valid_holds()) << (f.valid->failures.empty() ? "" : f.valid->failures[0]);
+      ASSERT_FALSE(f.uniform_violations.empty());
+      const auto& w = f.uniform_violations[0];
+      EXPECT_TRUE(w.triangle == tp.first || w.triangle == back->second.first);
+      ++flipped;
+      break;
+    }
+  }
+  EXPECT_GE(flipped, 10);
 }
 
 }  // namespace

@@ -1,0 +1,61 @@
+#pragma once
+// The exact mesh certifier (`anisocert certify`): is a triangle mesh with per-vertex metrics
+//  - valid: a triangulation of Ω (triangulation_check.hpp) in which every constrained segment is
+//    a union of edges;
+//  - locally uniform (LU §3–§4: the final mesh's 1-neighbourhood of every vertex v is Delaunay
+//    for M_v): no site strictly inside the M_v-circumellipse of a triangle incident to v (LU
+//    Definition 2.1, the lifted in-circle test); sites exactly on it are ties, reported apart.
+//    Together with validity (closed fans) the triangles at v are then exactly v's star;
+//  - of a given quality: the radius-edge ratio of every triangle in each of its vertices' metrics
+//    at most ρ₀, and the distortion τ(M_a, M_b) of every pair of its vertices at most γ₀.
+// Every decision is exact (filtered predicates, rational fall-backs); the worst values reported
+// next to the verdicts are double approximations.
+#include "oracle/triangulation_check.hpp"
+#include "predicates/point.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace anisocert::oracle {
+
+struct Mesh {
+  std::vector<predicates::Point2<Rational>> sites;
+  std::vector<predicates::Sym2<Rational>> metrics;
+  std::vector<predicates::Point2<Rational>> domain;
+  std::vector<std::pair<int, int>> segments;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+struct CertifyOptions {
+  bool valid = true, uniform = true;
+  std::optional<Rational> rho0, gamma0;  // quality thresholds, checked when given
+};
+
+// One offending (or tied) configuration: the vertex whose metric decides, the triangle, the site.
+struct MeshWitness {
+  int vertex = -1, triangle = -1, site = -1;
+  std::string text;
+};
+
+struct CertifyReport {
+  std::optional<TriangulationCheck> valid;
+  std::vector<std::string> segment_failures;
+  bool uniform_checked = false;
+  std::vector<MeshWitness> uniform_violations, uniform_ties;
+  std::size_t incircle_tests = 0;
+  double worst_rho = 0, worst_gamma = 0;                // approximations
+  int worst_rho_triangle = -1, worst_rho_vertex = -1, worst_gamma_triangle = -1;
+  std::vector<MeshWitness> rho_violations, gamma_violations;
+
+  bool valid_holds() const { return valid && valid->is_triangulation && segment_failures.empty(); }
+  bool holds(const CertifyOptions& o) const {
+    return (!o.valid || valid_holds()) && (!o.uniform || uniform_violations.empty()) && rho_violations.empty() &&
+           gamma_violations.empty();
+  }
+};
+
+CertifyReport certify_mesh(const Mesh& mesh, const CertifyOptions& options);
+
+}  // namespace anisocert::oracle

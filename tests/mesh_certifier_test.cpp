@@ -1,0 +1,114 @@
+// The exact mesh certifier (oracle/mesh_certifier.hpp) on meshes with known answers: closed-form
+// radius-edge ratios and distortions, a non-Delaunay quadrilateral, cocircular ties, and broken
+// triangulations (a hole, an overlap, a clockwise triangle, a segment that is not a union of edges).
+#include "oracle/mesh_certifier.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using anisocert::Rational;
+using namespace anisocert::oracle;
+
+// The unit square split at an interior point c into four triangles, identity metrics.
+Mesh fan(const Rational& cx, const Rational& cy) {
+  Mesh m;
+  m.sites = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {cx, cy}};
+  m.metrics.assign(5, {1, 0, 1});
+  m.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  m.triangles = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  return m;
+}
+
+// Closed form: the right isosceles triangle (0,0), (1,0), (1/2,1/2) has circumradius 1/2 and
+// shortest edge √2/2, ratio 1/√2 ≈ 0.7071; the fan around the centre of the unit square has four.
+TEST(MeshCertifier, RadiusEdgeRatioAgainstTheClosedForm) {
+  const Mesh m = fan(Rational(1, 2), Rational(1, 2));
+  CertifyOptions o;
+  o.rho0 = Rational(708, 1000);
+  EXPECT_TRUE(certify_mesh(m, o).rho_violations.empty());
+  o.rho0 = Rational(707, 1000);
+  const CertifyReport r = certify_mesh(m, o);
+  EXPECT_EQ(r.rho_violations.size(), 12u);  // every triangle, in every vertex's (equal) metric
+  EXPECT_NEAR(r.worst_rho, 0.70710678118, 1e-9);
+}
+
+// Closed form: τ(I, 4I) = 2 (LS: the largest stretch between the two unit balls).
+TEST(MeshCertifier, DistortionAgainstTheClosedForm) {
+  Mesh m = fan(Rational(1, 2), Rational(1, 3));
+  m.metrics[4] = {4, 0, 4};
+  CertifyOptions o;
+  o.gamma0 = 2;
+  EXPECT_TRUE(certify_mesh(m, o).gamma_violations.empty());
+  o.gamma0 = Rational(199, 100);
+  const CertifyReport r = certify_mesh(m, o);
+  EXPECT_EQ(r.gamma_violations.size(), 8u);  // two edges to the centre in each of the four triangles
+  EXPECT_NEAR(r.worst_gamma, 2.0, 1e-12);
+}
+
+TEST(MeshCertifier, ValidFanIsLocallyUniformAndTheSquareCentreIsATie) {
+  const CertifyReport off = certify_mesh(fan(Rational(2, 5), Rational(9, 20)), {});
+  EXPECT_TRUE(off.valid_holds());
+  EXPECT_TRUE(off.uniform_violations.empty());
+  EXPECT_TRUE(off.uniform_ties.empty());
+  // Two triangles of the unit square split by a diagonal: all four corners are cocircular.
+  Mesh sq;
+  sq.sites = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  sq.metrics.assign(4, {1, 0, 1});
+  sq.domain = sq.sites;
+  sq.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const CertifyReport r = certify_mesh(sq, {});
+  EXPECT_TRUE(r.valid_holds());
+  EXPECT_TRUE(r.uniform_violations.empty());
+  EXPECT_EQ(r.uniform_ties.size(), 6u);  // each triangle, each of its vertices' metrics, the fourth corner
+}
+
+// A quadrilateral split by its long diagonal: the other vertex is inside the circumcircle.
+TEST(MeshCertifier, NonDelaunayDiagonalIsAViolationWithWitness) {
+  Mesh m;
+  m.sites = {{0, 0}, {4, 0}, {4, 1}, {0, 1}};
+  m.metrics.assign(4, {1, 0, 1});
+  m.sites[2] = {3, 1};
+  m.domain = m.sites;
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};  // diagonal (0,0)-(3,1)
+  CertifyReport r = certify_mesh(m, {});
+  EXPECT_TRUE(r.valid_holds());
+  EXPECT_TRUE(r.uniform_violations.empty()) << "this diagonal is the Delaunay one";
+  m.triangles = {{0, 1, 3}, {1, 2, 3}};  // diagonal (4,0)-(0,1): (3,1) lies inside circle (0,0),(4,0),(0,1)
+  r = certify_mesh(m, {});
+  EXPECT_TRUE(r.valid_holds());
+  ASSERT_FALSE(r.uniform_violations.empty());
+  EXPECT_EQ(r.uniform_violations[0].triangle, 0);
+  EXPECT_EQ(r.uniform_violations[0].site, 2);
+  // In the metric M = FᵀF of the shear F = [1 3; 0 1] the first diagonal is no longer the Delaunay
+  // one: F maps the corners to (0,0), (4,0), (6,1), (3,1), and (3,1) lies inside the circle through
+  // the other three (centre (2, 13/2), r² = 185/4 > 125/4 = |(3,1) − centre|²). Metrics matter.
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.metrics.assign(4, {1, 3, 10});
+  r = certify_mesh(m, {});
+  ASSERT_FALSE(r.uniform_violations.empty());
+  EXPECT_EQ(r.uniform_violations[0].site, 3);
+}
+
+TEST(MeshCertifier, BrokenTriangulationsAreRejectedByName) {
+  Mesh hole = fan(Rational(1, 2), Rational(1, 3));
+  hole.triangles.pop_back();
+  CertifyReport r = certify_mesh(hole, {});
+  EXPECT_FALSE(r.valid_holds());
+  Mesh clockwise = fan(Rational(1, 2), Rational(1, 3));
+  std::swap(clockwise.triangles[0][0], clockwise.triangles[0][1]);
+  r = certify_mesh(clockwise, {});
+  ASSERT_FALSE(r.valid_holds());
+  EXPECT_NE(r.valid->failures[0].find("triangle 0"), std::string::npos) << r.valid->failures[0];
+  Mesh overlap = fan(Rational(1, 2), Rational(1, 3));
+  overlap.triangles.push_back({0, 1, 4});
+  EXPECT_FALSE(certify_mesh(overlap, {}).valid_holds());
+  Mesh segment = fan(Rational(1, 2), Rational(1, 3));
+  segment.segments = {{0, 2}};  // the diagonal is not an edge
+  r = certify_mesh(segment, {});
+  ASSERT_EQ(r.segment_failures.size(), 1u);
+  segment.segments = {{0, 4}};  // a spoke is
+  EXPECT_TRUE(certify_mesh(segment, {}).valid_holds());
+}
+
+}  // namespace
