@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   anisocert::cli::add_diagram_command(app, exit_code);
   anisocert::cli::add_demo_command(app, exit_code);
   anisocert::cli::add_certify_command(app, exit_code);
+  anisocert::cli::add_refine_command(app, exit_code);
   try {
     const auto known = app.get_subcommands([&](CLI::App* s) { return argc > 1 && s->check_name(argv[1]); });
     if (argc > 1 && argv[1][0] != '-' && known.empty())

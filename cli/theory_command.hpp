@@ -21,5 +21,7 @@ void add_diagram_command(CLI::App& app, int& exit_code);
 void add_demo_command(CLI::App& app, int& exit_code);
 // `anisocert certify MESH.json` (certify_command.cpp).
 void add_certify_command(CLI::App& app, int& exit_code);
+// `anisocert refine` (refine_command.cpp).
+void add_refine_command(CLI::App& app, int& exit_code);
 
 }  // namespace anisocert::cli

@@ -176,6 +176,13 @@ class Reader {
  public:
   explicit Reader(const std::string& source) : source_(source) {}
 
+  // A domain file for the refiners: {"domain": [...]} (other keys of the site-set format allowed).
+  std::vector<Point> read_domain_only(const Json& doc) const {
+    if (!doc.is_object()) fail("", "the top level must be an object, got " + show(doc));
+    require_keys(doc, "", {"domain"}, {"sites", "domain", "segments", "triangles"});
+    return read_domain(doc.at("domain"));
+  }
+
   SiteSet read(const Json& doc) const {
     if (!doc.is_object()) fail("", "the top level must be an object, got " + show(doc));
     require_keys(doc, "", {"sites"}, {"sites", "domain", "segments", "triangles"});
@@ -375,6 +382,14 @@ SiteSet read_site_set(std::istream& in, const std::string& source_name) {
   ExactDocument document(source_name);
   Json::sax_parse(in, &document);  // throws InputError on malformed JSON
   return Reader(source_name).read(document.take());
+}
+
+std::vector<predicates::Point2<Rational>> read_domain_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open (" + std::strerror(errno) + ")");
+  ExactDocument document(path);
+  Json::sax_parse(in, &document);
+  return Reader(path).read_domain_only(document.take());
 }
 
 SiteSet read_site_set_file(const std::string& path) {

@@ -46,6 +46,9 @@ struct InputError : std::runtime_error {
 // Throws InputError; source_name is the file name used in messages.
 SiteSet read_site_set(std::istream& in, const std::string& source_name);
 
+// The validated "domain" of a file in this format (for the refiners; "sites" may be absent).
+std::vector<predicates::Point2<Rational>> read_domain_file(const std::string& path);
+
 // read_site_set on the file at path; a file that cannot be opened is an InputError too.
 SiteSet read_site_set_file(const std::string& path);
 

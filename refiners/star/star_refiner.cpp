@@ -1,0 +1,505 @@
+#include "refiners/star/star_refiner.hpp"
+
+#include "predicates/incircle.hpp"
+#include "predicates/length_compare.hpp"
+#include "predicates/orientation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <map>
+#include <random>
+
+namespace anisocert::refiners::star {
+
+using predicates::Point2;
+using predicates::Sign;
+using predicates::Sym2;
+
+const char* rule_name(int rule) {
+  switch (rule) {
+    case encroachment: return "encroachment";
+    case distortion: return "distortion";
+    case radius_edge: return "radius-edge ratio";
+    case size: return "size";
+    case inconsistency: return "inconsistency";
+  }
+  return "none";
+}
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+double qform(const Sym2<double>& M, double dx, double dy) { return dx * (M.m11 * dx + M.m12 * dy) + dy * (M.m12 * dx + M.m22 * dy); }
+
+// The M-circumcentre of a, b, c and its squared M-radius (floating point).
+struct Circle {
+  double cx, cy, r2;
+};
+Circle circumcircle(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
+  const double d1x = b.x - a.x, d1y = b.y - a.y, d2x = c.x - a.x, d2y = c.y - a.y;
+  const double g1x = M.m11 * d1x + M.m12 * d1y, g1y = M.m12 * d1x + M.m22 * d1y;
+  const double g2x = M.m11 * d2x + M.m12 * d2y, g2y = M.m12 * d2x + M.m22 * d2y;
+  const double q1 = qform(M, d1x, d1y) / 2, q2 = qform(M, d2x, d2y) / 2, det = g1x * g2y - g1y * g2x;
+  const double x = (q1 * g2y - q2 * g1y) / det, y = (g1x * q2 - g2x * q1) / det;
+  return {a.x + x, a.y + y, qform(M, x, y)};
+}
+
+// τ(A, B)²: the largest eigenvalue of A⁻¹B and of B⁻¹A (LS/BWY distortion).
+double tau2(const Sym2<double>& A, const Sym2<double>& B) {
+  auto largest = [](const Sym2<double>& P, const Sym2<double>& Q) {
+    const double a2 = P.m11 * P.m22 - P.m12 * P.m12, b1 = -(P.m11 * Q.m22 + P.m22 * Q.m11 - 2 * P.m12 * Q.m12),
+                 c0 = Q.m11 * Q.m22 - Q.m12 * Q.m12;
+    return (-b1 + std::sqrt(std::max(0.0, b1 * b1 - 4 * a2 * c0))) / (2 * a2);
+  };
+  return std::max(largest(A, B), largest(B, A));
+}
+
+// Half-widths of the bounding box of {x : (x − c)ᵀ M (x − c) ≤ r²}.
+std::pair<double, double> ellipse_extent(const Sym2<double>& M, double r2) {
+  const double det = M.m11 * M.m22 - M.m12 * M.m12;
+  return {std::sqrt(r2 * M.m22 / det), std::sqrt(r2 * M.m11 / det)};
+}
+
+bool inside_polygon(const std::vector<Point2<double>>& poly, double x, double y) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+    if ((poly[i].y > y) != (poly[j].y > y) &&
+        x < (poly[j].x - poly[i].x) * (y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
+      in = !in;
+  return in;
+}
+
+struct Star {
+  std::vector<std::array<int, 2>> triangles;  // (a, b): triangle (v, a, b) counter-clockwise
+  std::vector<int> neighbours;                // sorted
+  int box[4] = {0, -1, 0, -1};                // grid cells covered by the conflict zone
+};
+
+class Refiner {
+ public:
+  Refiner(const std::vector<Point2<double>>& domain, const MetricField& field, const RefineParameters& p,
+          const std::function<void(const std::string&)>& progress)
+      : domain_(domain), field_(field), p_(p), progress_(progress), rng_(p.seed) {
+    x0_ = y0_ = inf;
+    double x1 = -inf, y1 = -inf;
+    for (const auto& q : domain) x0_ = std::min(x0_, q.x), y0_ = std::min(y0_, q.y), x1 = std::max(x1, q.x), y1 = std::max(y1, q.y);
+    g_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(p.max_vertices) / 2)), 16, 1024);
+    cw_ = (x1 - x0_) / g_, ch_ = (y1 - y0_) / g_;
+    sites_cells_.assign(static_cast<std::size_t>(g_) * g_, {});
+    conflict_cells_.assign(static_cast<std::size_t>(g_) * g_, {});
+  }
+
+  RefineResult run() {
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const int m = static_cast<int>(domain_.size());
+    for (const auto& q : domain_) insert(q, 0, false);
+    for (int i = 0; i < m; ++i) segments_.push_back({i, (i + 1) % m});
+    for (int i = 0; i < m; ++i) boundary_[i] = {(i + m - 1) % m, (i + 1) % m};
+    for (int v = 0; v < m; ++v) recompute(v);
+    for (int v = 0; v < m; ++v) enqueue(v);
+    for (std::size_t s = 0; s < segments_.size(); ++s) segment_queue_.push_back(static_cast<int>(s));
+    double next_report = 1;
+    RefineResult r;
+    while (true) {
+      if (sites_.size() >= p_.max_vertices) {
+        r.stop_reason = "vertex budget (" + std::to_string(p_.max_vertices) + ") reached";
+        break;
+      }
+      if (elapsed() > p_.max_seconds) {
+        r.stop_reason = "time budget (" + std::to_string(p_.max_seconds) + " s) reached";
+        break;
+      }
+      if (progress_ && elapsed() > next_report) {
+        next_report += 1;
+        progress_("refine: " + std::to_string(sites_.size()) + " vertices, " +
+                  std::to_string(static_cast<long>(sites_.size() / elapsed())) + " per second, queue " +
+                  std::to_string(site_queue_.size()));
+      }
+      if (!step()) {
+        r.stop_reason = "all stars consistent";
+        break;
+      }
+    }
+    merge(r);
+    r.seconds = elapsed();
+    r.rule_counts = counts_;
+    r.last_rule = last_rule_;
+    r.trace = std::move(trace_);
+    return r;
+  }
+
+ private:
+  // --- the point grid and the conflict-zone index -------------------------------------------
+  int cell_x(double x) const { return std::clamp(static_cast<int>((x - x0_) / cw_), 0, g_ - 1); }
+  int cell_y(double y) const { return std::clamp(static_cast<int>((y - y0_) / ch_), 0, g_ - 1); }
+  std::size_t cell(int i, int j) const { return static_cast<std::size_t>(j) * g_ + i; }
+
+  std::vector<int> sites_in(double xa, double xb, double ya, double yb) const {
+    std::vector<int> out;
+    for (int j = cell_y(ya); j <= cell_y(yb); ++j)
+      for (int i = cell_x(xa); i <= cell_x(xb); ++i)
+        for (int s : sites_cells_[cell(i, j)])
+          if (sites_[s].x >= xa && sites_[s].x <= xb && sites_[s].y >= ya && sites_[s].y <= yb) out.push_back(s);
+    return out;
+  }
+
+  void set_conflict_box(int v, double xa, double xb, double ya, double yb) {
+    Star& s = stars_[v];
+    for (int j = s.box[2]; j <= s.box[3]; ++j)
+      for (int i = s.box[0]; i <= s.box[1]; ++i) {
+        auto& c = conflict_cells_[cell(i, j)];
+        c.erase(std::find(c.begin(), c.end(), v));
+      }
+    s.box[0] = cell_x(xa), s.box[1] = cell_x(xb), s.box[2] = cell_y(ya), s.box[3] = cell_y(yb);
+    for (int j = s.box[2]; j <= s.box[3]; ++j)
+      for (int i = s.box[0]; i <= s.box[1]; ++i) conflict_cells_[cell(i, j)].push_back(v);
+  }
+
+  // --- stars ----------------------------------------------------------------------------------
+  // Del_{M_v} neighbours by gift wrapping around v with exact in-circle tests: from the M_v-nearest
+  // site (always a Delaunay neighbour), the next neighbour counter-clockwise is the candidate left
+  // of the current edge whose circle through v and the current neighbour holds no other candidate.
+  void recompute(int v) {
+    const Sym2<double>& M = metrics_[v];
+    const Point2<double>& pv = sites_[v];
+    // The search radius (in M_v units): the star's previous reach (stars only shrink, LU Lemma
+    // 3.5), or for a new site twice its nearest distance, doubled until every circumellipse fits.
+    double R2 = reach2_[v] > 0 ? reach2_[v] * 1.0001 : 6.25;
+    const double diameter2 = [&] {
+      double d = 0;
+      for (const auto& a : domain_)
+        for (const auto& b : domain_) d = std::max(d, qform(M, a.x - b.x, a.y - b.y));
+      return d;
+    }();
+    Star star;
+    while (true) {
+      const auto [ex, ey] = ellipse_extent(M, R2);
+      std::vector<int> cand = sites_in(pv.x - ex, pv.x + ex, pv.y - ey, pv.y + ey);
+      cand.erase(std::remove(cand.begin(), cand.end(), v), cand.end());
+      star = Star{};
+      if (cand.empty()) {
+        if (R2 > 4 * diameter2) break;
+        R2 *= 4;
+        continue;
+      }
+      int first = cand[0];
+      for (int c : cand)
+        if (predicates::compare_scaled_lengths(1.0, pv, sites_[c], M, pv, sites_[first], M) == Sign::negative) first = c;
+      std::vector<int> ring{first};
+      bool closed = false;
+      for (std::size_t guard = 0; guard <= cand.size(); ++guard) {
+        const int w = wrap(v, ring.back(), cand, true);
+        if (w < 0) break;
+        if (w == first) {
+          closed = true;
+          break;
+        }
+        ring.push_back(w);
+      }
+      if (!closed)
+        for (std::size_t guard = 0; guard <= cand.size(); ++guard) {
+          const int w = wrap(v, ring.front(), cand, false);
+          if (w < 0 || w == ring.back()) break;
+          ring.insert(ring.begin(), w);
+        }
+      const std::size_t k = ring.size();
+      double xa = pv.x, xb = pv.x, ya = pv.y, yb = pv.y;
+      bool fits = true;
+      double reach2 = 0;
+      for (std::size_t i = 0; i + (closed ? 0 : 1) < k; ++i) {
+        const int a = ring[i], b = ring[(i + 1) % k];
+        const Circle c = circumcircle(pv, sites_[a], sites_[b], M);
+        const double reach = std::sqrt(qform(M, c.cx - pv.x, c.cy - pv.y)) + std::sqrt(c.r2);
+        reach2 = std::max(reach2, reach * reach);
+        if (!(reach * reach * 1.0001 < R2)) fits = false;
+        const double cx = (pv.x + sites_[a].x + sites_[b].x) / 3, cy = (pv.y + sites_[a].y + sites_[b].y) / 3;
+        if (!inside_polygon(domain_, cx, cy)) continue;  // restricted to Ω
+        star.triangles.push_back({a, b});
+        const auto [hx, hy] = ellipse_extent(M, c.r2);
+        xa = std::min(xa, c.cx - hx), xb = std::max(xb, c.cx + hx), ya = std::min(ya, c.cy - hy), yb = std::max(yb, c.cy + hy);
+      }
+      // A fan is complete when it closes around v, or when both of its open ends are boundary
+      // subsegments at v (the rest is outside Ω); otherwise the search region was too small.
+      const bool complete = closed || (k >= 2 && is_segment(v, ring.front()) && is_segment(v, ring.back()));
+      if ((!fits || !complete) && R2 < 4 * diameter2) {
+        R2 *= 4;
+        continue;
+      }
+      for (const auto& t : star.triangles) star.neighbours.push_back(t[0]), star.neighbours.push_back(t[1]);
+      std::sort(star.neighbours.begin(), star.neighbours.end());
+      star.neighbours.erase(std::unique(star.neighbours.begin(), star.neighbours.end()), star.neighbours.end());
+      std::copy(stars_[v].box, stars_[v].box + 4, star.box);
+      stars_[v] = std::move(star);
+      reach2_[v] = reach2;
+      set_conflict_box(v, xa, xb, ya, yb);
+      return;
+    }
+    std::copy(stars_[v].box, stars_[v].box + 4, star.box);
+    stars_[v] = std::move(star);
+  }
+
+  // The next Delaunay neighbour of v after u, counter-clockwise (ccw) or clockwise; −1 if none.
+  int wrap(int v, int u, const std::vector<int>& cand, bool ccw) const {
+    const Sym2<double>& M = metrics_[v];
+    const Point2<double>&pv = sites_[v], &pu = sites_[u];
+    int w = -1;
+    for (int x : cand) {
+      if (x == u) continue;
+      const Sign side = predicates::orientation(pv, pu, sites_[x]);
+      if (side != (ccw ? Sign::positive : Sign::negative)) continue;
+      if (w < 0) {
+        w = x;
+        continue;
+      }
+      // Triangle (v, u, w) counter-clockwise for ccw, (v, w, u) for cw: is x inside its circle?
+      const Sign in = ccw ? predicates::incircle(pv, pu, sites_[w], sites_[x], M)
+                          : predicates::incircle(pv, sites_[w], pu, sites_[x], M);
+      const bool closer_in_angle = predicates::orientation(pv, sites_[w], sites_[x]) == (ccw ? Sign::negative : Sign::positive);
+      if (in == Sign::positive || (in == Sign::zero && closer_in_angle)) w = x;
+    }
+    return w;
+  }
+
+  // --- insertion ------------------------------------------------------------------------------
+  int insert(const Point2<double>& q, int rule, bool update = true) {
+    const int k = static_cast<int>(sites_.size());
+    double nearest = inf, initial_reach2 = 0;
+    const Sym2<double> Mq = field_.at(q.x, q.y);
+    if (update) {
+      const auto [ex, ey] = ellipse_extent(Mq, 9);
+      for (int s : sites_in(q.x - ex, q.x + ex, q.y - ey, q.y + ey)) nearest = std::min(nearest, qform(Mq, sites_[s].x - q.x, sites_[s].y - q.y));
+      trace_.push_back({rule, q.x, q.y, std::sqrt(nearest)});
+      if (std::isfinite(nearest)) initial_reach2 = 4 * nearest;
+      ++counts_[rule];
+      last_rule_ = rule;
+    }
+    sites_.push_back(q);
+    metrics_.push_back(Mq);
+    stars_.emplace_back();
+    queued_.push_back(false);
+    boundary_.resize(std::max(boundary_.size(), sites_.size()), {-1, -1});  // split() may have set it
+    reach2_.push_back(initial_reach2);
+    sites_cells_[cell(cell_x(q.x), cell_y(q.y))].push_back(k);
+    if (!update) return k;
+    // Stars whose conflict zone holds q change (LU Lemma 3.5); so may their neighbours' consistency.
+    std::vector<int> affected;
+    for (int v : conflict_cells_[cell(cell_x(q.x), cell_y(q.y))]) {
+      const Star& s = stars_[v];
+      for (const auto& t : s.triangles)
+        if (predicates::incircle(sites_[v], sites_[t[0]], sites_[t[1]], q, metrics_[v]) != Sign::negative) {
+          affected.push_back(v);
+          break;
+        }
+    }
+    recompute(k);
+    enqueue(k);
+    for (int v : affected) {
+      const std::vector<int> before = stars_[v].neighbours;
+      recompute(v);
+      enqueue(v);
+      for (int w : before) enqueue(w);
+    }
+    for (int w : stars_[k].neighbours) enqueue(w);
+    // Segments q encroaches.
+    for (std::size_t s = 0; s < segments_.size(); ++s)
+      if (encroaches(k, static_cast<int>(s))) segment_queue_.push_back(static_cast<int>(s));
+    return k;
+  }
+
+  bool is_segment(int a, int b) const {
+    return (boundary_[a][0] == b || boundary_[a][1] == b);
+  }
+
+  void enqueue(int v) {
+    if (!queued_[v]) queued_[v] = true, site_queue_.push_back(v);
+  }
+
+  // LU Definition 3.16: p inside the diametral ellipse of segment s in p's or an endpoint's metric.
+  bool encroaches(int p, int s) const {
+    const auto [a, b] = segments_[s];
+    if (p == a || p == b) return false;
+    const double mx = (sites_[a].x + sites_[b].x) / 2, my = (sites_[a].y + sites_[b].y) / 2;
+    for (int w : {p, a, b}) {
+      const Sym2<double>& M = metrics_[w];
+      if (qform(M, sites_[p].x - mx, sites_[p].y - my) < qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4)
+        return true;
+    }
+    return false;
+  }
+
+  void split(int s) {
+    const auto [a, b] = segments_[s];
+    const Point2<double> m{(sites_[a].x + sites_[b].x) / 2, (sites_[a].y + sites_[b].y) / 2};  // exactly on ab
+    const int k = static_cast<int>(sites_.size());
+    segments_[s] = {a, k};
+    segments_.push_back({k, b});
+    boundary_.resize(k + 1, {-1, -1});
+    boundary_[k] = {a, b};  // before insert(), which computes k's star
+    for (int e : {0, 1}) {
+      if (boundary_[a][e] == b) boundary_[a][e] = k;
+      if (boundary_[b][e] == a) boundary_[b][e] = k;
+    }
+    insert(m, encroachment);
+    for (int h : {s, static_cast<int>(segments_.size()) - 1}) {
+      const auto [u, w] = segments_[h];
+      const double mx = (sites_[u].x + sites_[w].x) / 2, my = (sites_[u].y + sites_[w].y) / 2;
+      const double half = std::max(std::abs(sites_[w].x - sites_[u].x), std::abs(sites_[w].y - sites_[u].y));
+      for (int p : sites_in(mx - half, mx + half, my - half, my + half))
+        if (encroaches(p, h)) {
+          segment_queue_.push_back(h);
+          break;
+        }
+    }
+  }
+
+  // --- rules ----------------------------------------------------------------------------------
+  struct Action {
+    int rule = 0;
+    int a = -1, b = -1;  // the triangle (v, a, b)
+  };
+
+  Action check(int v) const {
+    const Star& s = stars_[v];
+    const Sym2<double>& M = metrics_[v];
+    const double g2 = p_.gamma0 * p_.gamma0, rho2 = p_.rho0 * p_.rho0, size2 = p_.size * p_.size;
+    Action best;
+    auto consider = [&](int rule, int a, int b) {
+      if (best.rule == 0 || rule < best.rule) best = {rule, a, b};
+    };
+    for (const auto& t : s.triangles) {
+      const int a = t[0], b = t[1];
+      if (tau2(M, metrics_[a]) >= g2 || tau2(M, metrics_[b]) >= g2 || tau2(metrics_[a], metrics_[b]) >= g2)
+        consider(distortion, a, b);
+      const Circle c = circumcircle(sites_[v], sites_[a], sites_[b], M);
+      const double shortest = std::min({qform(M, sites_[a].x - sites_[v].x, sites_[a].y - sites_[v].y),
+                                        qform(M, sites_[b].x - sites_[v].x, sites_[b].y - sites_[v].y),
+                                        qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y)});
+      if (c.r2 > rho2 * shortest) consider(radius_edge, a, b);
+      if (c.r2 > size2) consider(size, a, b);
+    }
+    if (best.rule) return best;
+    // LU Definition 3.3 at the level of triangles: (v, a, b) must also be (a, b, v) in S_a and
+    // (b, v, a) in S_b (edge-consistency alone lets two fans disagree on the third vertex).
+    auto has = [&](int w, int x, int y) {
+      for (const auto& u : stars_[w].triangles)
+        if (u[0] == x && u[1] == y) return true;
+      return false;
+    };
+    for (const auto& t : s.triangles)
+      if (!has(t[0], t[1], v) || !has(t[1], v, t[0])) return {inconsistency, t[0], t[1]};
+    return best;
+  }
+
+  // One step: an encroached segment first (rule 1), else the next queued star's first rule.
+  bool step() {
+    while (!segment_queue_.empty()) {
+      const int s = segment_queue_.front();
+      segment_queue_.pop_front();
+      bool still = false;
+      const auto [a, b] = segments_[s];
+      const double mx = (sites_[a].x + sites_[b].x) / 2, my = (sites_[a].y + sites_[b].y) / 2;
+      const double half = std::max(std::abs(sites_[b].x - sites_[a].x), std::abs(sites_[b].y - sites_[a].y));
+      for (int p : sites_in(mx - half, mx + half, my - half, my + half)) still = still || encroaches(p, s);
+      if (still) {
+        split(s);
+        return true;
+      }
+    }
+    while (!site_queue_.empty()) {
+      const int v = site_queue_.front();
+      site_queue_.pop_front();
+      queued_[v] = false;
+      const Action act = check(v);
+      if (!act.rule) continue;
+      refine(v, act);
+      enqueue(v);
+      return true;
+    }
+    return false;
+  }
+
+  // Refine(τ) in M_v: a random point of the picking region B_{M_v}(c, δr), then Insert_or_snap.
+  void refine(int v, const Action& act) {
+    const Sym2<double>& M = metrics_[v];
+    const Circle c = circumcircle(sites_[v], sites_[act.a], sites_[act.b], M);
+    // M = LLᵀ; a point of the M-ball: c + L⁻ᵀ (δ r u) with |u| < 1.
+    const double l11 = std::sqrt(M.m11), l21 = M.m12 / l11, l22 = std::sqrt(M.m22 - l21 * l21);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    double ux, uy;
+    do ux = unit(rng_), uy = unit(rng_);
+    while (ux * ux + uy * uy >= 1);
+    const double s = p_.delta * std::sqrt(c.r2);
+    const double zy = s * uy / l22, zx = (s * ux - l21 * zy) / l11;
+    const Point2<double> x{c.cx + zx, c.cy + zy};
+    // Insert_or_snap: a point outside Ω or encroaching a segment splits that segment instead.
+    int nearest_segment = -1;
+    double best = inf;
+    for (std::size_t s2 = 0; s2 < segments_.size(); ++s2) {
+      const auto [a, b] = segments_[s2];
+      const double mx = (sites_[a].x + sites_[b].x) / 2 - x.x, my = (sites_[a].y + sites_[b].y) / 2 - x.y;
+      const double half = qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4;
+      const double d = qform(M, mx, my);
+      if (d < half) {
+        split(static_cast<int>(s2));
+        return;
+      }
+      if (d - half < best) best = d - half, nearest_segment = static_cast<int>(s2);
+    }
+    if (!inside_polygon(domain_, x.x, x.y)) {
+      split(nearest_segment);
+      return;
+    }
+    insert(x, act.rule);
+  }
+
+  // --- merge ----------------------------------------------------------------------------------
+  void merge(RefineResult& r) const {
+    std::map<std::array<int, 3>, int> seen;  // rotated to the least index first
+    for (int v = 0; v < static_cast<int>(stars_.size()); ++v)
+      for (const auto& t : stars_[v].triangles) {
+        std::array<int, 3> k{v, t[0], t[1]};
+        std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());
+        ++seen[k];
+      }
+    for (const auto& [t, n] : seen) {
+      if (n == 3) r.triangles.push_back(t);
+      else ++r.inconsistent_triangles;
+    }
+    r.consistent = r.inconsistent_triangles == 0;
+    r.sites = sites_, r.metrics = metrics_, r.domain = domain_, r.segments = segments_;
+  }
+
+  std::vector<Point2<double>> domain_;
+  MetricField field_;
+  RefineParameters p_;
+  std::function<void(const std::string&)> progress_;
+  std::mt19937 rng_;
+  double x0_, y0_, cw_, ch_;
+  int g_;
+  std::vector<Point2<double>> sites_;
+  std::vector<Sym2<double>> metrics_;
+  std::vector<Star> stars_;
+  std::vector<bool> queued_;
+  std::vector<std::vector<int>> sites_cells_, conflict_cells_;
+  std::vector<std::pair<int, int>> segments_;
+  std::vector<std::array<int, 2>> boundary_;  // per site: its two boundary neighbours, or −1
+  std::vector<double> reach2_;                // per site: the squared M_v-reach of its star
+  std::deque<int> segment_queue_, site_queue_;
+  std::array<std::size_t, 6> counts_{};
+  int last_rule_ = 0;
+  std::vector<Insertion> trace_;
+};
+
+}  // namespace
+
+RefineResult refine_star(const std::vector<Point2<double>>& domain, const MetricField& field, const RefineParameters& p,
+                         const std::function<void(const std::string&)>& progress) {
+  return Refiner(domain, field, p, progress).run();
+}
+
+}  // namespace anisocert::refiners::star

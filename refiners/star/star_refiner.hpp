@@ -1,0 +1,64 @@
+#pragma once
+// Locally uniform anisotropic meshing with stars in 2D (Boissonnat, Wormser & Yvinec, LU §3–§4):
+// every site v keeps its star S_v, the triangles incident to v in Del_{M_v}(V) restricted to Ω,
+// recomputed only when a new site falls in its conflict zone Z_v (LU Lemma 3.5). Stars are
+// refined by the rules of LU §4.1 in priority order until they are consistent, then merged:
+//   1 encroachment: a boundary subsegment with a site inside its diametral ellipse (in the site's
+//     or the endpoints' metric; LU Definition 3.16) is split at its midpoint;
+//   2 distortion: a triangle whose vertices' metrics differ by τ ≥ γ₀ (the vertex-pair distortion
+//     stands in for LU's total distortion over the circumballs);
+//   3 radius-edge ratio > ρ₀ in M_v;
+//   4 size: circumradius in M_v > `size` (so that the mesh fits the field);
+//   5 inconsistency: an edge vw in S_v but not in S_w (LU Definition 3.3).
+// Refine(τ) picks a random point in the picking region B_{M_v}(c, δr) (Pick_valid, without the
+// γ₀-cosphericity rejection) and Insert_or_snap splits the boundary subsegment it would encroach
+// instead. Floating point throughout, with exact filtered predicates for every combinatorial
+// decision (in-circle, orientation, distance comparisons), so stars never disagree by rounding.
+// The refiners never include the oracle (DESIGN.md § Layers); the exact certifier judges the output.
+#include "refiners/star/metric_field.hpp"
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace anisocert::refiners::star {
+
+struct RefineParameters {
+  double rho0 = 3, gamma0 = 1.5, delta = 0.1, beta = 3, size = 1;
+  std::size_t max_vertices = 200000;
+  double max_seconds = 120;
+  unsigned seed = 1;
+};
+
+enum Rule { encroachment = 1, distortion = 2, radius_edge = 3, size = 4, inconsistency = 5 };
+const char* rule_name(int rule);
+
+// One insertion, for the LU Lemma 4.1–4.4 properties: where, by which rule, and its distance to
+// the nearest earlier site in the new site's metric.
+struct Insertion {
+  int rule;
+  double x, y;
+  double nearest_distance;
+};
+
+struct RefineResult {
+  std::vector<predicates::Point2<double>> sites;
+  std::vector<predicates::Sym2<double>> metrics;
+  std::vector<predicates::Point2<double>> domain;
+  std::vector<std::pair<int, int>> segments;   // boundary subsegments, by site index
+  std::vector<std::array<int, 3>> triangles;   // merged from consistent stars, counter-clockwise
+  bool consistent = false;                     // every star triangle is in the stars of its three vertices
+  std::string stop_reason;                     // "all stars consistent" or which budget stopped it
+  int last_rule = 0;                           // the rule still firing when a budget stopped it
+  std::size_t inconsistent_triangles = 0;
+  std::array<std::size_t, 6> rule_counts{};
+  double seconds = 0;
+  std::vector<Insertion> trace;
+};
+
+// `domain`: a simple counter-clockwise polygon (its edges are the constrained segments).
+RefineResult refine_star(const std::vector<predicates::Point2<double>>& domain, const MetricField& field,
+                         const RefineParameters& p, const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace anisocert::refiners::star
