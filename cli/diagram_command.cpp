@@ -40,7 +40,7 @@ std::string summary(const oracle::Diagram& d, const std::string& name) {
   std::size_t closed = 0, cut = 0, high = 0;
   for (const auto& a : d.arcs) closed += a.closed ? 1 : 0, cut += a.cut_by_edges.empty() ? 0 : 1;
   for (const auto& n : d.nodes) high += n.sites.size() > 3 ? 1 : 0;
-  o << "  closed arcs " << closed << ", arcs cut by ∂Ω " << cut << ", vertices of degree > 3 " << high << "\n";
+  o << "  closed arcs " << closed << ", arcs cut by ∂Ω " << cut << ", vertices with more than three owners " << high << "\n";
   std::size_t listed = 0;
   for (std::size_t i = 0; i < d.faces.size(); ++i)
     if (d.faces[i].orphan && listed++ < 5) o << "  orphan: face " << i << " of site " << d.faces[i].site << "\n";
@@ -152,11 +152,7 @@ std::string refine_and_certify(const std::string& svg_path, bool quiet) {
     if (!quiet) std::cerr << "anisocert: " << line << "\n";
   };
   const refiners::star::RefineResult r = refiners::star::refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, field, p, progress);
-  oracle::Mesh mesh;
-  for (const auto& q : r.sites) mesh.sites.push_back({Rational(q.x), Rational(q.y)});  // exact
-  for (const auto& M : r.metrics) mesh.metrics.push_back({Rational(M.m11), Rational(M.m12), Rational(M.m22)});
-  for (const auto& q : r.domain) mesh.domain.push_back({Rational(q.x), Rational(q.y)});
-  mesh.segments = r.segments, mesh.triangles = r.triangles;
+  const oracle::Mesh mesh = io::exact_mesh(mesh_data(r));
   oracle::CertifyOptions o;
   o.rho0 = rational_from_double(p.rho0), o.gamma0 = rational_from_double(p.gamma0);
   const oracle::CertifyReport c = oracle::certify_mesh(mesh, o);

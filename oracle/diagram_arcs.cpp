@@ -64,10 +64,17 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
     if (!boxes_meet(edge_box, region)) continue;
     const auto& sa = d_.sheared.domain[k];
     const auto& sb = d_.sheared.domain[(k + 1) % m];
-    const ConicIntersection x = intersect(F, line_conic(sa, sb));
-    if (x.shared_component)
-      throw std::domain_error("the bisector of sites " + std::to_string(v) + " and " + std::to_string(w) +
-                              " contains domain edge " + std::to_string(k) + "; such inputs are not supported yet");
+    const Conic edge_line = line_conic(sa, sb);
+    ConicIntersection x = intersect(F, edge_line);
+    if (x.shared_component) {
+      // F contains the edge's line: its pieces on the edge lie on ∂Ω, not inside Ω, and are
+      // dropped by their samples; the edge's ends and the other component's crossing are cuts.
+      decline_if_tied_on_edge(v, w, static_cast<int>(k));
+      for (const auto* corner : {&sa, &sb}) add_cut(LocatedPoint::rational(corner->x, corner->y), -1, false);
+      const Conic rest = line_quotient(F, edge_line);
+      x = rest.d == 0 && rest.e == 0 ? ConicIntersection{} : intersect(rest, edge_line);
+      if (x.shared_component) x = ConicIntersection{};  // F is the edge line twice: impossible for a bisector
+    }
     for (const IntersectionPoint& ip : x.points) {
       const LocatedPoint p(ip.point, width_);
       if (compare_x(p, std::min(sa.x, sb.x)) == Sign::negative || compare_x(p, std::max(sa.x, sb.x)) == Sign::positive)

@@ -37,6 +37,10 @@ class Builder {
   int register_node(Node::Kind kind, const LocatedPoint& p, const std::vector<int>& owners);
   // `equal`: sites known (by construction of p) to be at v's distance, not compared again.
   Nearest nearest(const LocatedPoint& p, int v, const std::vector<int>& equal = {}) const;
+  Nearest nearest_rational(const LocatedPoint& p) const;  // any point; scans for a nearest site first
+  // one-dimensional ties (diagram_ties.cpp): exact checks, throwing std::domain_error by name
+  void decline_if_tied_on_edge(int v, int w, int edge) const;
+  void decline_if_tied_on_line(int a, int b, int c, const Conic& G) const;
   // arcs
   void build_arcs();
   void build_arcs_of_pair(int v, int w, const BoxBounds& region);
@@ -70,6 +74,10 @@ class Builder {
   void sort_germs(int node);
   friend Location oracle::locate(const Diagram& d, const Point2<Rational>& p);
 };
+
+// F = L·Q for a non-vertical line L dividing the conic F; the line shared by two conics.
+Conic line_quotient(const Conic& F, const Conic& L);
+std::optional<Conic> common_line(const Conic& A, const Conic& B);
 
 // Ray casting: whether p (not on the cycle) is inside the closed walk of cycle c.
 bool cycle_contains(const Diagram& d, int c, const LocatedPoint& p);

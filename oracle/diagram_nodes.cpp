@@ -101,12 +101,22 @@ void Builder::find_vertices() {
   for (const auto& t : cand_.triples) {
     if (progress_ && ++done % 500 == 0)
       progress_("vertices: " + std::to_string(done) + " of " + std::to_string(cand_.triples.size()) + " candidate triples");
-    const ConicIntersection x =
-        intersect(bisector_conic(d_.sheared, t[0], t[1]), bisector_conic(d_.sheared, t[0], t[2]));
-    if (x.shared_component)
-      throw std::domain_error("sites " + std::to_string(t[0]) + ", " + std::to_string(t[1]) + " and " +
-                              std::to_string(t[2]) +
-                              " are equidistant along a whole curve; such inputs are not supported yet");
+    const Conic A = bisector_conic(d_.sheared, t[0], t[1]), B = bisector_conic(d_.sheared, t[0], t[2]);
+    ConicIntersection x = intersect(A, B);
+    if (x.shared_component) {
+      // A = G·H1, B = G·H2: the three sites tie along the line G (declined only if that tie is
+      // part of D|Ω); the isolated common points are those of H1 and H2.
+      const std::optional<Conic> G = common_line(A, B);
+      if (!G)
+        throw std::domain_error("sites " + std::to_string(t[0]) + ", " + std::to_string(t[1]) + " and " +
+                                std::to_string(t[2]) + " are equidistant along a whole conic; such inputs are not supported yet");
+      decline_if_tied_on_line(t[0], t[1], t[2], *G);
+      const Conic H1 = line_quotient(A, *G), H2 = line_quotient(B, *G);
+      if (H1.d == 0 && H1.e == 0) continue;  // A is the line G itself: its points are all on G
+      if (H2.d == 0 && H2.e == 0) continue;
+      x = intersect(H1, H2);
+      if (x.shared_component) continue;  // H1 = H2: only the two lines, ties checked on G; H1 separately
+    }
     for (const IntersectionPoint& ip : x.points) {
       ++d_.stats.candidate_points;
       const LocatedPoint p(ip.point, width_);

@@ -301,3 +301,52 @@ TEST(OracleDiagram, ThreeSitesTiedAlongALineAreDeclinedByName) {
 }
 
 }  // namespace
+
+namespace {
+
+// Regressions (found by an independent review): one-dimensional ties outside D|Ω used to be
+// declined. (1) L-shaped domain, sites (1,1), (3,1), (2,3) with M = I: the bisector x = 2 of the
+// first two contains edge 3, but site 2 is strictly nearest there. (2) A bisector containing the
+// edge y = 0 of the unit square where another site is nearest. (3) Three sites tied along the line
+// x = 0, outside Ω = [1/8, 1] × [0, 1]. All three are answered, and brute force agrees.
+TEST(OracleDiagram, TiesOutsideTheDiagramAreAnsweredNotDeclined) {
+  DiagramInput L;
+  L.domain = {{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}};
+  add_site(L, 1, 1, 1, 0, 1);
+  add_site(L, 3, 1, 1, 0, 1);
+  add_site(L, 2, 3, 1, 0, 1);
+  const Diagram dl = compute_diagram(L);
+  const Location v = locate(dl, {2, Rational(7, 4)});  // the circumcentre of the three sites
+  ASSERT_EQ(v.kind, Location::Kind::node);
+  EXPECT_EQ(v.owners, (std::vector<int>{0, 1, 2}));
+  expect_brute_force_agrees(dl, 24);
+
+  DiagramInput e = square_input(0, 1);
+  add_site(e, Rational(9, 64), Rational(1, 32), 16, -2, Rational(65, 4));
+  add_site(e, Rational(5, 32), Rational(1, 64), 1, Rational(-3, 2), Rational(13, 4));
+  add_site(e, Rational(9, 32), Rational(1, 32), 4, -1, Rational(65, 4));
+  expect_brute_force_agrees(compute_diagram(e), 32);
+
+  DiagramInput t;
+  t.domain = {{Rational(1, 8), 0}, {1, 0}, {1, 1}, {Rational(1, 8), 1}};
+  add_site(t, Rational(9, 64), Rational(1, 32), 16, -2, Rational(65, 4));
+  add_site(t, Rational(9, 32), Rational(1, 32), 4, -1, Rational(65, 4));
+  add_site(t, Rational(1, 2), Rational(1, 2), Rational(17001, 1024), Rational(-1011, 64), Rational(65, 4));
+  expect_brute_force_agrees(compute_diagram(t), 32);
+}
+
+// The genuine case stays declined, by name: two sites alone tie along the reflex edge x = 2.
+TEST(OracleDiagram, ACellBoundaryAlongTheDomainBoundaryIsDeclinedByName) {
+  DiagramInput L;
+  L.domain = {{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}};
+  add_site(L, 1, 1, 1, 0, 1);
+  add_site(L, 3, 1, 1, 0, 1);
+  try {
+    compute_diagram(L);
+    FAIL() << "expected std::domain_error";
+  } catch (const std::domain_error& err) {
+    EXPECT_NE(std::string(err.what()).find("runs along domain edge 3"), std::string::npos) << err.what();
+  }
+}
+
+}  // namespace

@@ -1,0 +1,103 @@
+// One-dimensional ties: a bisector that contains an edge of Ω, and three sites equidistant along
+// a whole line. Both are common in degenerate inputs (symmetric sites, equal metrics) and most
+// of the time harmless: the tie lies outside Ω, or another site is closer there. The oracle
+// handles them exactly and declines by name only when the tie is part of D|Ω (a cell boundary
+// running along ∂Ω, or three cells meeting along a curve), which the face structure does not model.
+#include "oracle/conic_intersection.hpp"
+#include "oracle/diagram_build.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace anisocert::oracle::build {
+
+// F = L·Q for a line L = d x + e y + f with e ≠ 0 that divides the conic F.
+Conic line_quotient(const Conic& F, const Conic& L) {
+  if (is_line(F)) return {0, 0, 0, 0, 0, F.e / L.e};
+  const Rational q = F.c / L.e, p = (F.b - L.d * q) / L.e, r = (F.e - L.f * q) / L.e;
+  return {0, 0, 0, p, q, r};
+}
+
+// The rational line shared by two conics that share a component and are not proportional: the
+// common root of their restrictions to two vertical lines x = t (each a quadratic in y, since no
+// sheared curve is vertical), or nothing when every restriction has both roots in common.
+std::optional<Conic> common_line(const Conic& A, const Conic& B) {
+  std::vector<Point2<Rational>> on;
+  for (int t = 0; t < 8 && on.size() < 2; ++t) {
+    const Rational x(t * 3 + 1, 7);
+    auto restrict = [&](const Conic& C) {
+      return Polynomial(std::vector<Rational>{C.a * x * x + C.d * x + C.f, C.b * x + C.e, C.c});
+    };
+    const Polynomial g = gcd(restrict(A), restrict(B));
+    if (g.degree() == 1) on.push_back({x, -g.coefficient(0) / g.coefficient(1)});
+  }
+  if (on.size() < 2) return std::nullopt;
+  return line_conic(on[0], on[1]);
+}
+
+Nearest Builder::nearest_rational(const LocatedPoint& p) const {
+  int v = 0;
+  for (int u = 1; u < static_cast<int>(distance_.size()); ++u)
+    if (p.sign_of(bisector_conic(d_.sheared, u, v)) == Sign::negative) v = u;
+  return nearest(p, v);
+}
+
+void Builder::decline_if_tied_on_edge(int v, int w, int edge) const {
+  // Along the edge, "v and w nearest" changes only at Voronoi vertices (a third site ties) and
+  // at the corners: one rational sample between consecutive ones decides.
+  const auto& dom = d_.sheared.domain;
+  const auto& a = dom[edge];
+  const auto& b = dom[(edge + 1) % dom.size()];
+  std::vector<Rational> xs{a.x, b.x};
+  for (const Node& n : d_.nodes)
+    if (std::find(n.boundary_edges.begin(), n.boundary_edges.end(), edge) != n.boundary_edges.end() && n.at.point.x().is_exact())
+      xs.push_back(n.at.point.x().lo());
+  for (const Node& n : d_.nodes)  // algebraic x: a rational just left and right of it splits the pieces too
+    if (std::find(n.boundary_edges.begin(), n.boundary_edges.end(), edge) != n.boundary_edges.end() &&
+        !n.at.point.x().is_exact()) {
+      n.at.point.x().refine_below((std::max(a.x, b.x) - std::min(a.x, b.x)) / Rational(Integer(1) << 40));
+      xs.push_back(n.at.point.x().lo()), xs.push_back(n.at.point.x().hi());
+    }
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+    if (xs[i] < std::min(a.x, b.x) || xs[i + 1] > std::max(a.x, b.x)) continue;
+    const Rational x = (xs[i] + xs[i + 1]) / 2;
+    const LocatedPoint p = LocatedPoint::rational(x, a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x));
+    const Nearest n = nearest_rational(p);
+    if (std::find(n.owners.begin(), n.owners.end(), v) != n.owners.end() &&
+        std::find(n.owners.begin(), n.owners.end(), w) != n.owners.end())
+      throw std::domain_error("the bisector of sites " + std::to_string(v) + " and " + std::to_string(w) +
+                              " runs along domain edge " + std::to_string(edge) +
+                              " where both are nearest (a cell boundary along ∂Ω); such inputs are not supported yet");
+  }
+}
+
+void Builder::decline_if_tied_on_line(int a, int b, int c, const Conic& G) const {
+  // On G the three sites tie; "they are the nearest and the point is in Ω" changes only where G
+  // meets ∂Ω or another site's bisector with a. Between consecutive such cuts one sample decides.
+  std::vector<LocatedPoint> cuts;
+  auto add = [&](const Conic& H) {
+    const ConicIntersection x = intersect(G, H);
+    if (!x.shared_component)
+      for (const IntersectionPoint& ip : x.points) cuts.emplace_back(ip.point, width_);
+  };
+  const auto& dom = d_.sheared.domain;
+  for (std::size_t k = 0; k < dom.size(); ++k) add(line_conic(dom[k], dom[(k + 1) % dom.size()]));
+  for (int s = 0; s < static_cast<int>(d_.sheared.sites.size()); ++s)
+    if (s != a && s != b && s != c) add(bisector_conic(d_.sheared, a, s));
+  std::sort(cuts.begin(), cuts.end(), [](const LocatedPoint& p, const LocatedPoint& q) { return compare_x(p, q) == Sign::negative; });
+  const Branch line{G, 0};
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    if (compare_x(cuts[i], cuts[i + 1]) != Sign::negative) continue;
+    const LocatedPoint p = line.at(rational_between(cuts[i].point.x(), cuts[i + 1].point.x()), width_);
+    if (!domain_position(d_.sheared, p).inside) continue;
+    const Nearest n = nearest(p, a, {b, c});
+    if (!n.closer)
+      throw std::domain_error("sites " + std::to_string(a) + ", " + std::to_string(b) + " and " + std::to_string(c) +
+                              " are equidistant and nearest along a whole line inside Ω (three cells meeting along a "
+                              "curve); such inputs are not supported yet");
+  }
+}
+
+}  // namespace anisocert::oracle::build

@@ -1,0 +1,94 @@
+// The star refiner against the exact certifier (the first differential test, issue 6): random
+// domains (convex and not), random built-in fields and parameters; every run that reports
+// consistency must be certified exactly (valid, locally uniform, radius-edge ≤ ρ₀, distortion
+// ≤ γ₀, all decided without rounding), and a run stopped by a budget must say so.
+#include "io/mesh_output.hpp"
+#include "oracle/mesh_certifier.hpp"
+#include "refiners/star/star_refiner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace {
+
+using namespace anisocert;
+using refiners::star::RefineParameters;
+using refiners::star::RefineResult;
+using Polygon = std::vector<predicates::Point2<double>>;
+
+oracle::CertifyReport certify(const RefineResult& r, const RefineParameters& p, oracle::CertifyOptions& o) {
+  o.rho0 = rational_from_double(p.rho0), o.gamma0 = rational_from_double(p.gamma0);
+  return oracle::certify_mesh(io::exact_mesh({r.sites, r.metrics, r.domain, r.segments, r.triangles}), o);
+}
+
+TEST(StarRefiner, ConsistentRunsAreCertifiedExactly) {
+  const std::vector<Polygon> domains = {
+      {{0, 0}, {1, 0}, {1, 1}, {0, 1}},
+      {{0, 0}, {1, 0}, {1, 0.5}, {0.5, 0.5}, {0.5, 1}, {0, 1}},                 // L-shaped (non-convex)
+      {{0, 0}, {2, 0}, {2.5, 1}, {1, 1.75}, {-0.5, 1}},                         // convex pentagon
+      {{0, 0}, {1, 0}, {1, 1}, {0.75, 1}, {0.75, 0.25}, {0.25, 0.25}, {0.25, 1}, {0, 1}}};  // U-shaped
+  std::mt19937 rng(17);
+  int consistent = 0, runs = 0;
+  for (int k = 0; k < 24; ++k) {
+    const Polygon& domain = domains[k % domains.size()];
+    const std::string name = refiners::star::field_names()[(k / 4) % 4];
+    std::map<std::string, double> params;
+    if (name == "constant") {
+      const double a = std::uniform_real_distribution<double>(4, 40)(rng), c = std::uniform_real_distribution<double>(4, 40)(rng);
+      params = {{"m11", a}, {"m12", std::uniform_real_distribution<double>(-0.5, 0.5)(rng) * std::sqrt(a * c)}, {"m22", c}};
+    } else if (name == "linear") {
+      params = {{"hx", 0.2}, {"h0", 0.02}};
+    } else {
+      params = {{"h", 0.25}, {"alpha", 2}};
+    }
+    RefineParameters p;
+    p.rho0 = std::uniform_real_distribution<double>(2.2, 4)(rng);
+    p.gamma0 = std::uniform_real_distribution<double>(1.2, 2)(rng);
+    p.delta = std::uniform_real_distribution<double>(0.02, 0.2)(rng);
+    p.max_vertices = 4000, p.max_seconds = 10, p.seed = k;
+    const RefineResult r = refiners::star::refine_star(domain, refiners::star::make_field(name, params), p);
+    SCOPED_TRACE("run " + std::to_string(k) + ": field " + name + ", domain " + std::to_string(k % domains.size()) +
+                 ", " + std::to_string(r.sites.size()) + " vertices, " + r.stop_reason);
+    ++runs;
+    std::printf("run %d %s %zu %.2f %s\n", k, name.c_str(), r.sites.size(), r.seconds, r.stop_reason.c_str());
+    if (!r.consistent) {
+      EXPECT_NE(r.stop_reason.find("budget"), std::string::npos);
+      EXPECT_GT(r.inconsistent_triangles, 0u);
+      continue;
+    }
+    ++consistent;
+    EXPECT_EQ(r.stop_reason, "all stars consistent");
+    oracle::CertifyOptions o;
+    const oracle::CertifyReport c = certify(r, p, o);
+    EXPECT_TRUE(c.valid_holds()) << (c.valid->failures.empty() ? "" : c.valid->failures[0]);
+    EXPECT_TRUE(c.uniform_violations.empty()) << c.uniform_violations[0].text;
+    EXPECT_TRUE(c.rho_violations.empty()) << c.rho_violations[0].text;
+    EXPECT_TRUE(c.gamma_violations.empty()) << c.gamma_violations[0].text;
+  }
+  EXPECT_GE(consistent, runs * 3 / 4) << "most of these small runs should converge";
+}
+
+TEST(StarRefiner, BudgetStopsAreReported) {
+  RefineParameters p;
+  p.max_vertices = 50;
+  const RefineResult r = refiners::star::refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}},
+                                                     refiners::star::make_field("shock", {}), p);
+  EXPECT_FALSE(r.consistent);
+  EXPECT_NE(r.stop_reason.find("vertex budget"), std::string::npos);
+  EXPECT_GE(r.last_rule, 1);
+  EXPECT_EQ(r.sites.size(), 50u);
+}
+
+TEST(StarRefiner, FieldsAreValidatedByName) {
+  EXPECT_THROW(refiners::star::make_field("spiral", {}), std::invalid_argument);
+  EXPECT_THROW(refiners::star::make_field("shock", {{"width", 1}}), std::invalid_argument);
+  EXPECT_THROW(refiners::star::make_field("constant", {{"m11", 1}, {"m12", 2}, {"m22", 1}}), std::invalid_argument);
+  // The linear field's closed form at y = 1/2 and y = 0: h_y = h0 and h0 + (hx − h0).
+  const auto f = refiners::star::make_field("linear", {});
+  EXPECT_DOUBLE_EQ(f.at(0.3, 0.5).m22, 1 / (1e-3 * 1e-3));
+  EXPECT_DOUBLE_EQ(f.at(0.3, 0.0).m22, 1 / (0.1 * 0.1));
+  EXPECT_DOUBLE_EQ(f.at(0.3, 0.0).m11, 100);
+}
+
+}  // namespace
