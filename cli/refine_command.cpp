@@ -31,6 +31,13 @@ std::string refine_summary(const RefineResult& r, const RefineParameters& p) {
     << static_cast<long>(r.sites.size() / std::max(r.seconds, 1e-9)) << " vertices/s)\n"
     << "  stopped: " << r.stop_reason;
   if (!r.consistent) o << "; rule still firing: " << refiners::star::rule_name(r.last_rule) << "; inconsistent star triangles: " << r.inconsistent_triangles;
+  o << "\n  LU Lemma 4.1 (boundary angles > 90° in the metric): ";
+  if (r.acute_corners.empty()) o << "holds at every corner";
+  else {
+    o << "fails at corner(s)";
+    for (int k : r.acute_corners) o << " " << k;
+    o << " (encroachment there may not end)";
+  }
   o << "\n  insertions by rule:";
   for (int k = 1; k <= 5; ++k) o << " " << refiners::star::rule_name(k) << " " << r.rule_counts[k] << (k < 5 ? "," : "\n");
   o << "  parameters: ρ₀ = " << p.rho0 << ", γ₀ = " << p.gamma0 << ", δ = " << p.delta << ", β = " << p.beta << ", size = " << p.size

@@ -90,6 +90,10 @@ class Refiner {
     g_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(p.max_vertices) / 2)), 16, 1024);
     cw_ = (x1 - x0_) / g_, ch_ = (y1 - y0_) / g_;
     sites_cells_.assign(static_cast<std::size_t>(g_) * g_, {});
+    convex_ = true;
+    for (std::size_t i = 0; i < domain.size(); ++i)
+      if (predicates::orientation(domain[i], domain[(i + 1) % domain.size()], domain[(i + 2) % domain.size()]) == Sign::negative)
+        convex_ = false;
     conflict_cells_.assign(static_cast<std::size_t>(g_) * g_, {});
   }
 
@@ -120,12 +124,24 @@ class Refiner {
                   std::to_string(static_cast<long>(sites_.size() / elapsed())) + " per second, queue " +
                   std::to_string(site_queue_.size()));
       }
+      if (!stalled_.empty()) {
+        r.stop_reason = stalled_;
+        break;
+      }
       if (!step()) {
         r.stop_reason = "all stars consistent";
         break;
       }
     }
     merge(r);
+    for (int k = 0; k < m; ++k) {
+      const auto& c = domain_[k];
+      const auto& a = domain_[(k + m - 1) % m];
+      const auto& b = domain_[(k + 1) % m];
+      const Sym2<double>& M = metrics_[k];
+      const double ex = a.x - c.x, ey = a.y - c.y, fx = b.x - c.x, fy = b.y - c.y;
+      if (ex * (M.m11 * fx + M.m12 * fy) + ey * (M.m12 * fx + M.m22 * fy) >= 0) r.acute_corners.push_back(k);
+    }
     r.seconds = elapsed();
     r.rule_counts = counts_;
     r.last_rule = last_rule_;
@@ -180,7 +196,12 @@ class Refiner {
     while (true) {
       const auto [ex, ey] = ellipse_extent(M, R2);
       std::vector<int> cand = sites_in(pv.x - ex, pv.x + ex, pv.y - ey, pv.y + ey);
-      cand.erase(std::remove(cand.begin(), cand.end(), v), cand.end());
+      cand.erase(std::remove_if(cand.begin(), cand.end(),
+                                [&](int c) {
+                                  return c == v || qform(M, sites_[c].x - pv.x, sites_[c].y - pv.y) > R2 ||
+                                         !visible(pv, sites_[c]);
+                                }),
+                 cand.end());
       star = Star{};
       if (cand.empty()) {
         if (R2 > 4 * diameter2) break;
@@ -215,17 +236,20 @@ class Refiner {
         const int a = ring[i], b = ring[(i + 1) % k];
         const Circle c = circumcircle(pv, sites_[a], sites_[b], M);
         const double reach = std::sqrt(qform(M, c.cx - pv.x, c.cy - pv.y)) + std::sqrt(c.r2);
+        const double cx = (pv.x + sites_[a].x + sites_[b].x) / 3, cy = (pv.y + sites_[a].y + sites_[b].y) / 3;
+        if (!inside_polygon(domain_, cx, cy)) continue;  // restricted to Ω: the rest does not matter
         reach2 = std::max(reach2, reach * reach);
         if (!(reach * reach * 1.0001 < R2)) fits = false;
-        const double cx = (pv.x + sites_[a].x + sites_[b].x) / 3, cy = (pv.y + sites_[a].y + sites_[b].y) / 3;
-        if (!inside_polygon(domain_, cx, cy)) continue;  // restricted to Ω
         star.triangles.push_back({a, b});
         const auto [hx, hy] = ellipse_extent(M, c.r2);
         xa = std::min(xa, c.cx - hx), xb = std::max(xb, c.cx + hx), ya = std::min(ya, c.cy - hy), yb = std::max(yb, c.cy + hy);
       }
       // A fan is complete when it closes around v, or when both of its open ends are boundary
       // subsegments at v (the rest is outside Ω); otherwise the search region was too small.
-      const bool complete = closed || (k >= 2 && is_segment(v, ring.front()) && is_segment(v, ring.back()));
+      // (or, at a boundary site, when it reaches both boundary neighbours: between them lies Ω).
+      const auto in_ring = [&](int w) { return std::find(ring.begin(), ring.end(), w) != ring.end(); };
+      const bool complete = closed || (k >= 2 && is_segment(v, ring.front()) && is_segment(v, ring.back())) ||
+                            (boundary_[v][0] >= 0 && in_ring(boundary_[v][0]) && in_ring(boundary_[v][1]));
       if ((!fits || !complete) && R2 < 4 * diameter2) {
         R2 *= 4;
         continue;
@@ -266,14 +290,14 @@ class Refiner {
   }
 
   // --- insertion ------------------------------------------------------------------------------
-  int insert(const Point2<double>& q, int rule, bool update = true) {
+  int insert(const Point2<double>& q, int rule, bool update = true, int star = -1, double radius = 0) {
     const int k = static_cast<int>(sites_.size());
     double nearest = inf, initial_reach2 = 0;
     const Sym2<double> Mq = field_.at(q.x, q.y);
     if (update) {
       const auto [ex, ey] = ellipse_extent(Mq, 9);
       for (int s : sites_in(q.x - ex, q.x + ex, q.y - ey, q.y + ey)) nearest = std::min(nearest, qform(Mq, sites_[s].x - q.x, sites_[s].y - q.y));
-      trace_.push_back({rule, q.x, q.y, std::sqrt(nearest)});
+      trace_.push_back({rule, q.x, q.y, std::sqrt(nearest), star, radius});
       if (std::isfinite(nearest)) initial_reach2 = 4 * nearest;
       ++counts_[rule];
       last_rule_ = rule;
@@ -311,6 +335,20 @@ class Refiner {
     return k;
   }
 
+  // In a non-convex Ω a star is computed among the sites v sees (the segment to them crosses no
+  // edge of Ω): with protected (Gabriel) boundary edges this constrained star is the restricted one.
+  bool visible(const Point2<double>& a, const Point2<double>& b) const {
+    if (convex_) return true;
+    for (std::size_t i = 0; i < domain_.size(); ++i) {
+      const Point2<double>& p = domain_[i];
+      const Point2<double>& q = domain_[(i + 1) % domain_.size()];
+      const int s1 = static_cast<int>(predicates::orientation(p, q, a)) * static_cast<int>(predicates::orientation(p, q, b));
+      const int s2 = static_cast<int>(predicates::orientation(a, b, p)) * static_cast<int>(predicates::orientation(a, b, q));
+      if (s1 < 0 && s2 < 0) return false;
+    }
+    return true;
+  }
+
   bool is_segment(int a, int b) const {
     return (boundary_[a][0] == b || boundary_[a][1] == b);
   }
@@ -323,18 +361,26 @@ class Refiner {
   bool encroaches(int p, int s) const {
     const auto [a, b] = segments_[s];
     if (p == a || p == b) return false;
+    return encroaches(sites_[p], metrics_[p], s);
+  }
+  bool encroaches(const Point2<double>& x, const Sym2<double>& Mx, int s) const {
+    const auto [a, b] = segments_[s];
     const double mx = (sites_[a].x + sites_[b].x) / 2, my = (sites_[a].y + sites_[b].y) / 2;
-    for (int w : {p, a, b}) {
-      const Sym2<double>& M = metrics_[w];
-      if (qform(M, sites_[p].x - mx, sites_[p].y - my) < qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4)
-        return true;
-    }
+    for (const Sym2<double>* M : {&Mx, &metrics_[a], &metrics_[b]})
+      if (qform(*M, x.x - mx, x.y - my) < qform(*M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4) return true;
     return false;
   }
 
   void split(int s) {
     const auto [a, b] = segments_[s];
     const Point2<double> m{(sites_[a].x + sites_[b].x) / 2, (sites_[a].y + sites_[b].y) / 2};  // exactly on ab
+    if ((m.x == sites_[a].x && m.y == sites_[a].y) || (m.x == sites_[b].x && m.y == sites_[b].y)) {
+      // Endless encroachment at a corner: LU Lemma 4.1 needs boundary angles > 90° in the metric.
+      stalled_ = "a boundary segment near (" + std::to_string(m.x) + ", " + std::to_string(m.y) +
+                 ") was split down to the resolution of doubles: encroachment does not end there (LU Lemma 4.1 "
+                 "needs every boundary angle > 90° in the metric)";
+      return;
+    }
     const int k = static_cast<int>(sites_.size());
     segments_[s] = {a, k};
     segments_.push_back({k, b});
@@ -366,7 +412,9 @@ class Refiner {
   Action check(int v) const {
     const Star& s = stars_[v];
     const Sym2<double>& M = metrics_[v];
-    const double g2 = p_.gamma0 * p_.gamma0, rho2 = p_.rho0 * p_.rho0, size2 = p_.size * p_.size;
+    // Rules 2 and 3 fire a hair early (relative 10⁻⁹), so that a consistent mesh also passes the
+    // exact checks at exactly γ₀ and ρ₀ (the certifier decides them without rounding).
+    const double g2 = p_.gamma0 * p_.gamma0 * (1 - 1e-9), rho2 = p_.rho0 * p_.rho0 * (1 - 1e-9), size2 = p_.size * p_.size;
     Action best;
     auto consider = [&](int rule, int a, int b) {
       if (best.rule == 0 || rule < best.rule) best = {rule, a, b};
@@ -435,8 +483,13 @@ class Refiner {
     while (ux * ux + uy * uy >= 1);
     const double s = p_.delta * std::sqrt(c.r2);
     const double zy = s * uy / l22, zx = (s * ux - l21 * zy) / l11;
-    const Point2<double> x{c.cx + zx, c.cy + zy};
-    // Insert_or_snap: a point outside Ω or encroaching a segment splits that segment instead.
+    Point2<double> x{c.cx + zx, c.cy + zy};
+    if (!std::isfinite(x.x) || !std::isfinite(x.y)) {  // a nearly flat triangle: its centroid instead
+      x = {(sites_[v].x + sites_[act.a].x + sites_[act.b].x) / 3, (sites_[v].y + sites_[act.a].y + sites_[act.b].y) / 3};
+    }
+    // Insert_or_snap: a point outside Ω or encroaching a segment (in the star's metric, its own,
+    // or the segment's endpoints': the test of rule 1) splits that segment instead.
+    const Sym2<double> Mx = field_.at(x.x, x.y);
     int nearest_segment = -1;
     double best = inf;
     for (std::size_t s2 = 0; s2 < segments_.size(); ++s2) {
@@ -444,17 +497,31 @@ class Refiner {
       const double mx = (sites_[a].x + sites_[b].x) / 2 - x.x, my = (sites_[a].y + sites_[b].y) / 2 - x.y;
       const double half = qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4;
       const double d = qform(M, mx, my);
-      if (d < half) {
+      if (d < half || encroaches(x, Mx, static_cast<int>(s2))) {
         split(static_cast<int>(s2));
         return;
       }
       if (d - half < best) best = d - half, nearest_segment = static_cast<int>(s2);
     }
     if (!inside_polygon(domain_, x.x, x.y)) {
-      split(nearest_segment);
+      // The point lies beyond ∂Ω: split the boundary subsegment between the triangle and it
+      // (Ruppert's rule: the segment from the triangle's centroid to the point crosses it).
+      const Point2<double> g{(sites_[v].x + sites_[act.a].x + sites_[act.b].x) / 3,
+                             (sites_[v].y + sites_[act.a].y + sites_[act.b].y) / 3};
+      int crossed = -1;
+      double closest = inf;
+      for (std::size_t s2 = 0; s2 < segments_.size(); ++s2) {
+        const Point2<double>&a = sites_[segments_[s2].first], &b = sites_[segments_[s2].second];
+        const int s1 = static_cast<int>(predicates::orientation(a, b, g)) * static_cast<int>(predicates::orientation(a, b, x));
+        const int t1 = static_cast<int>(predicates::orientation(g, x, a)) * static_cast<int>(predicates::orientation(g, x, b));
+        if (s1 > 0 || t1 > 0) continue;
+        const double d = std::hypot((a.x + b.x) / 2 - g.x, (a.y + b.y) / 2 - g.y);
+        if (d < closest) closest = d, crossed = static_cast<int>(s2);
+      }
+      split(crossed >= 0 ? crossed : nearest_segment);
       return;
     }
-    insert(x, act.rule);
+    insert(x, act.rule, true, v, std::sqrt(c.r2));
   }
 
   // --- merge ----------------------------------------------------------------------------------
@@ -475,6 +542,7 @@ class Refiner {
   }
 
   std::vector<Point2<double>> domain_;
+  bool convex_;
   MetricField field_;
   RefineParameters p_;
   std::function<void(const std::string&)> progress_;
@@ -489,6 +557,7 @@ class Refiner {
   std::vector<std::pair<int, int>> segments_;
   std::vector<std::array<int, 2>> boundary_;  // per site: its two boundary neighbours, or −1
   std::vector<double> reach2_;                // per site: the squared M_v-reach of its star
+  std::string stalled_;                       // why refinement cannot go on, if it cannot
   std::deque<int> segment_queue_, site_queue_;
   std::array<std::size_t, 6> counts_{};
   int last_rule_ = 0;

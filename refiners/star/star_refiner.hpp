@@ -40,6 +40,10 @@ struct Insertion {
   int rule;
   double x, y;
   double nearest_distance;
+  // For rules 2–5: the star whose triangle τ was refined, and τ's circumradius r in its metric;
+  // the point lies in B_{M_v}(c, δr), so every earlier site is at M_v-distance ≥ (1 − δ) r.
+  int star = -1;
+  double radius = 0;
 };
 
 struct RefineResult {
@@ -49,9 +53,12 @@ struct RefineResult {
   std::vector<std::pair<int, int>> segments;   // boundary subsegments, by site index
   std::vector<std::array<int, 3>> triangles;   // merged from consistent stars, counter-clockwise
   bool consistent = false;                     // every star triangle is in the stars of its three vertices
-  std::string stop_reason;                     // "all stars consistent" or which budget stopped it
+  std::string stop_reason;                     // "all stars consistent", the budget that stopped it, or why it cannot go on
   int last_rule = 0;                           // the rule still firing when a budget stopped it
   std::size_t inconsistent_triangles = 0;
+  // LU Lemma 4.1 (rule 1 ends) needs every boundary angle > 90° in the metric; the corners of Ω
+  // where the angle in the corner's metric is not (e₁ᵀ M e₂ ≥ 0 for the two edge directions).
+  std::vector<int> acute_corners;
   std::array<std::size_t, 6> rule_counts{};
   double seconds = 0;
   std::vector<Insertion> trace;
