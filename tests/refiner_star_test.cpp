@@ -72,7 +72,7 @@ TEST(StarRefiner, ConsistentRunsAreCertifiedExactly) {
     EXPECT_TRUE(c.rho_violations.empty()) << c.rho_violations[0].text;
     EXPECT_TRUE(c.gamma_violations.empty()) << c.gamma_violations[0].text;
   }
-  EXPECT_GE(consistent, runs / 2) << "most of these small runs should converge and be checked";
+  EXPECT_GE(consistent, runs / 4) << "enough runs should converge on domains meeting LU Lemma 4.1 to be checked";
 }
 
 TEST(StarRefiner, BudgetStopsAreReported) {
