@@ -115,6 +115,7 @@ RC_GTEST_PROP(LU_T45, ConditionsGiveTerminationWithTheBounds, ()) {
   const auto field = refiners::star::make_field("constant", {{"m11", a}, {"m12", *rc::gen::inRange(-2, 3) * 0.5}, {"m22", c}});
   Run run{p, refiners::star::refine_star(kDomains[0], field, p), "constant"};
   RC_PRE(run.r.acute_corners.empty());
+  RC_TAG(run.r.sites.size() < 100 ? "under 100 vertices" : "100 vertices or more");
   RC_ASSERT(run.r.consistent);
   const oracle::CertifyReport cert = certify(run);
   RC_ASSERT(cert.valid_holds());
