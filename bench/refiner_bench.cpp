@@ -1,0 +1,32 @@
+// The star refiner's throughput (issue 6 target: at least 50k vertices per second) on the unit
+// square: the linear boundary-layer field and the hyperbolic shock field, at sizes around 10k and
+// 100k vertices (the field parameter sets the size; the count is reported).
+// Run: build/bin/refiner_bench (figures in docs/bench.md).
+#include "refiners/star/star_refiner.hpp"
+
+#include <benchmark/benchmark.h>
+
+using namespace anisocert::refiners::star;
+
+namespace {
+
+void refine(benchmark::State& state, const char* field, const char* param, double value, double alpha) {
+  std::map<std::string, double> params{{param, value}};
+  if (alpha > 0) params["alpha"] = alpha;
+  const MetricField f = make_field(field, params);
+  RefineParameters p;
+  p.max_vertices = 400000, p.max_seconds = 600;
+  RefineResult r;
+  for (auto _ : state) r = refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, f, p);
+  state.counters["vertices"] = static_cast<double>(r.sites.size());
+  state.counters["vertices_per_s"] = r.sites.size() / r.seconds;
+  state.counters["consistent"] = r.consistent;
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(refine, linear_10k, "linear", "hx", 0.01, 0)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(refine, linear_100k, "linear", "hx", 0.002, 0)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(refine, shock_10k, "shock", "h", 0.01, 3)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(refine, shock_100k, "shock", "h", 0.002, 3)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_MAIN();
