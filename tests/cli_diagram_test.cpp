@@ -90,3 +90,33 @@ TEST(CliDiagram, DemoWritesItsPicture) {
 }
 
 }  // namespace
+
+namespace {
+
+// `anisocert refine` then `anisocert certify`, as a user runs them: exit codes 0, 1 (with the
+// offending triangle named), 2; the Medit files exist.
+TEST(CliMesh, RefineThenCertify) {
+  const std::string base = ::testing::TempDir() + "anisocert_mesh_" + std::to_string(getpid());
+  const Outcome r = run("refine --field constant --param m11=20 --param m22=20 -o " + base + ".json --medit " + base + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("all stars consistent"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(base + ".mesh"));
+  EXPECT_TRUE(std::filesystem::exists(base + ".sol"));
+  const Outcome c = run("certify " + base + ".json --rho0 3 --gamma0 1.5");
+  EXPECT_EQ(c.exit_code, 0) << c.out << c.err;
+  EXPECT_NE(c.out.find("certified"), std::string::npos);
+  // Reverse the first triangle: no longer a triangulation.
+  std::ifstream in(base + ".json");
+  Json mesh = Json::parse(in);
+  auto& t = mesh["triangles"][0];
+  std::swap(t[0], t[1]);
+  std::ofstream(base + "_bad.json") << mesh.dump();
+  const Outcome bad = run("certify " + base + "_bad.json");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.out.find("triangle 0"), std::string::npos) << bad.out;
+  EXPECT_EQ(run("certify /nonexistent/mesh.json").exit_code, 2);
+  EXPECT_EQ(run("refine --field spiral").exit_code, 2);
+  EXPECT_EQ(run("refine --gamma0 0.5").exit_code, 2);
+}
+
+}  // namespace

@@ -3,12 +3,16 @@
 // consistency must be certified exactly (valid, locally uniform, radius-edge ≤ ρ₀, distortion
 // ≤ γ₀, all decided without rounding), and a run stopped by a budget must say so.
 #include "io/mesh_output.hpp"
+#include "oracle/diagram.hpp"
 #include "oracle/mesh_certifier.hpp"
 #include "refiners/star/star_refiner.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <random>
+#include <set>
 
 namespace {
 
@@ -73,6 +77,52 @@ TEST(StarRefiner, ConsistentRunsAreCertifiedExactly) {
     EXPECT_TRUE(c.gamma_violations.empty()) << c.gamma_violations[0].text;
   }
   EXPECT_GE(consistent, runs / 4) << "enough runs should converge on domains meeting LU Lemma 4.1 to be checked";
+}
+
+// Is a small locally uniform mesh the dual of the Labelle–Shewchuk diagram of its sites (LS
+// Theorem 7)? Not required (the two constructions differ), but worth knowing: the share of mesh
+// triangles that are dual triangles of the exact diagram is reported, and for a constant metric
+// (where both are the Delaunay triangulation for M) it must be all of them up to cocircular ties.
+TEST(StarRefiner, ShareOfTrianglesThatAreTheLabelleShewchukDual) {
+  const Polygon octagon = {{1, -0.375}, {1, 0.375}, {0.375, 1}, {-0.375, 1}, {-1, 0.375}, {-1, -0.375}, {-0.375, -1}, {0.375, -1}};
+  for (const std::string name : {"constant", "shock"}) {
+    std::map<std::string, double> params;
+    if (name == "constant") params = {{"m11", 12}, {"m12", 2}, {"m22", 9}};
+    else params = {{"h", 0.5}, {"alpha", 0.5}};
+    RefineParameters p;
+    p.max_vertices = 400;
+    const RefineResult r = refiners::star::refine_star(octagon, refiners::star::make_field(name, params), p);
+    ASSERT_TRUE(r.consistent) << name << ": " << r.stop_reason;
+    const oracle::Mesh m = io::exact_mesh({r.sites, r.metrics, r.domain, r.segments, r.triangles});
+    const oracle::Diagram d = oracle::compute_diagram({m.sites, m.metrics, m.domain});
+    std::set<std::array<int, 3>> dual;
+    for (const auto& c : d.dual_triangles) {
+      std::array<int, 3> t{c.sites[0], c.sites[1], c.sites[2]};
+      std::sort(t.begin(), t.end());
+      dual.insert(t);
+    }
+    std::size_t shared = 0;
+    for (auto t : r.triangles) {
+      std::sort(t.begin(), t.end());
+      shared += dual.count(t);
+    }
+    const double share = static_cast<double>(shared) / r.triangles.size();
+    RecordProperty(name + "_share_of_LS_dual", std::to_string(share));
+    std::printf("%s field: %zu of %zu mesh triangles are Labelle–Shewchuk dual triangles (%.0f%%)\n", name.c_str(), shared,
+                r.triangles.size(), 100 * share);
+    // With one metric M both are Del_M: every dual triangle of a Voronoi vertex strictly inside Ω
+    // (circumcentre in Ω, so in the restricted Delaunay triangulation) must be a mesh triangle.
+    if (name == "constant") {
+      std::set<std::array<int, 3>> mesh;
+      for (auto t : r.triangles) std::sort(t.begin(), t.end()), mesh.insert(t);
+      for (const auto& c : d.dual_triangles) {
+        if (!d.nodes[c.vertex].boundary_edges.empty()) continue;
+        std::array<int, 3> t{c.sites[0], c.sites[1], c.sites[2]};
+        std::sort(t.begin(), t.end());
+        EXPECT_TRUE(mesh.count(t)) << "dual triangle " << t[0] << " " << t[1] << " " << t[2] << " is not in the mesh";
+      }
+    }
+  }
 }
 
 TEST(StarRefiner, BudgetStopsAreReported) {
