@@ -30,33 +30,57 @@ FilterInterval divide(const FilterInterval& a, const FilterInterval& b) {
 }
 double sqrt_up(double x) { return x <= 0 ? 0 : std::nextafter(std::sqrt(x), inf); }
 
-// Sites bucketed on a uniform grid, for the circumellipse queries.
-struct Grid {
-  double x0, y0, cell;
-  int nx, ny;
-  std::vector<std::vector<int>> buckets;
-
-  Grid(const std::vector<Point2<double>>& p) {
-    double x1 = -inf, y1 = -inf;
-    x0 = y0 = inf;
-    for (const auto& q : p) x0 = std::min(x0, q.x), y0 = std::min(y0, q.y), x1 = std::max(x1, q.x), y1 = std::max(y1, q.y);
-    const int side = std::max(1, static_cast<int>(std::sqrt(p.size() / 2.0)));
-    cell = std::max((x1 - x0), (y1 - y0)) / side;
-    if (!(cell > 0)) cell = 1;
-    nx = static_cast<int>((x1 - x0) / cell) + 1, ny = static_cast<int>((y1 - y0) / cell) + 1;
-    buckets.assign(static_cast<std::size_t>(nx) * ny, {});
-    for (int i = 0; i < static_cast<int>(p.size()); ++i) buckets[index(column(p[i].x), row(p[i].y))].push_back(i);
+// Sites in a static k-d tree (median splits, leaves of at most 8), for the circumellipse queries:
+// adapts to clustered sites, where a uniform grid would scan crowded cells. The coordinates are
+// the sites' nearest doubles, within half an ulp of the exact ones, so every query box is widened
+// by two ulps on each side before it is compared with them.
+class SiteTree {
+ public:
+  explicit SiteTree(const std::vector<Point2<double>>& p) : p_(p), order_(p.size()) {
+    for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
+    build(0, order_.size(), 0);
   }
-  int column(double x) const { return std::clamp(static_cast<int>(std::floor((x - x0) / cell)), 0, nx - 1); }
-  int row(double y) const { return std::clamp(static_cast<int>(std::floor((y - y0) / cell)), 0, ny - 1); }
-  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * nx + i; }
+  template <class F>
+  void visit(double x0, double x1, double y0, double y1, F&& f) const {
+    auto widen_down = [](double v) { return std::nextafter(std::nextafter(v, -inf), -inf); };
+    auto widen_up = [](double v) { return std::nextafter(std::nextafter(v, inf), inf); };
+    query(0, order_.size(), 0, widen_down(x0), widen_up(x1), widen_down(y0), widen_up(y1), f);
+  }
+
+ private:
+  double coord(int i, int axis) const { return axis == 0 ? p_[i].x : p_[i].y; }
+  void build(std::size_t lo, std::size_t hi, int axis) {
+    if (hi - lo <= 8) return;
+    const std::size_t mid = (lo + hi) / 2;
+    std::nth_element(order_.begin() + lo, order_.begin() + mid, order_.begin() + hi,
+                     [&](int a, int b) { return coord(a, axis) < coord(b, axis); });
+    build(lo, mid, 1 - axis);
+    build(mid + 1, hi, 1 - axis);
+  }
+  template <class F>
+  void query(std::size_t lo, std::size_t hi, int axis, double x0, double x1, double y0, double y1, F& f) const {
+    if (hi - lo <= 8) {
+      for (std::size_t k = lo; k < hi; ++k) {
+        const auto& q = p_[order_[k]];
+        if (q.x >= x0 && q.x <= x1 && q.y >= y0 && q.y <= y1) f(order_[k]);
+      }
+      return;
+    }
+    const std::size_t mid = (lo + hi) / 2;
+    const int m = order_[mid];
+    const double split = coord(m, axis), low = axis == 0 ? x0 : y0, high = axis == 0 ? x1 : y1;
+    if (p_[m].x >= x0 && p_[m].x <= x1 && p_[m].y >= y0 && p_[m].y <= y1) f(m);
+    if (low <= split) query(lo, mid, 1 - axis, x0, x1, y0, y1, f);
+    if (high >= split) query(mid + 1, hi, 1 - axis, x0, x1, y0, y1, f);
+  }
+  const std::vector<Point2<double>>& p_;
+  std::vector<int> order_;
 };
 
 // The locally uniform check on one scalar type (double when every input is a double exactly).
 template <class S>
 void check_uniform(const std::vector<Point2<S>>& p, const std::vector<Sym2<S>>& M, const Mesh& mesh,
-                   const std::vector<Point2<double>>& approx, CertifyReport& r) {
-  const Grid grid(approx);
+                   const SiteTree& tree, CertifyReport& r) {
   auto iv = [](const S& s) {
     if constexpr (std::is_same_v<S, double>) return FilterInterval(s);
     else return FilterInterval::around(s);
@@ -83,21 +107,19 @@ void check_uniform(const std::vector<Point2<S>>& p, const std::vector<Sym2<S>>& 
       const FilterInterval cx = ax + x, cy = ay + y;
       const bool bounded = std::isfinite(cx.lo) && std::isfinite(cx.hi) && std::isfinite(cy.lo) && std::isfinite(cy.hi) &&
                            std::isfinite(hx) && std::isfinite(hy);
-      const int i0 = bounded ? grid.column(cx.lo - hx) : 0, i1 = bounded ? grid.column(cx.hi + hx) : grid.nx - 1;
-      const int j0 = bounded ? grid.row(cy.lo - hy) : 0, j1 = bounded ? grid.row(cy.hi + hy) : grid.ny - 1;
-      for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i)
-          for (int s : grid.buckets[grid.index(i, j)]) {
-            if (s == tri[0] || s == tri[1] || s == tri[2]) continue;
-            ++r.incircle_tests;
-            const Sign in = predicates::incircle(p[tri[0]], p[tri[1]], p[tri[2]], p[s], m);
-            if (in == Sign::negative) continue;
-            MeshWitness w{v, t, s,
-                          "site " + std::to_string(s) + (in == Sign::positive ? " is strictly inside" : " is exactly on") +
-                              " the circumellipse of triangle " + std::to_string(t) + " in the metric of vertex " +
-                              std::to_string(v)};
-            (in == Sign::positive ? r.uniform_violations : r.uniform_ties).push_back(std::move(w));
-          }
+      const double qx0 = bounded ? cx.lo - hx : -inf, qx1 = bounded ? cx.hi + hx : inf;
+      const double qy0 = bounded ? cy.lo - hy : -inf, qy1 = bounded ? cy.hi + hy : inf;
+      tree.visit(qx0, qx1, qy0, qy1, [&](int s) {
+        if (s == tri[0] || s == tri[1] || s == tri[2]) return;
+        ++r.incircle_tests;
+        const Sign in = predicates::incircle(p[tri[0]], p[tri[1]], p[tri[2]], p[s], m);
+        if (in == Sign::negative) return;
+        MeshWitness w{v, t, s,
+                      "site " + std::to_string(s) + (in == Sign::positive ? " is strictly inside" : " is exactly on") +
+                          " the circumellipse of triangle " + std::to_string(t) + " in the metric of vertex " +
+                          std::to_string(v)};
+        (in == Sign::positive ? r.uniform_violations : r.uniform_ties).push_back(std::move(w));
+      });
     }
   }
 }
@@ -112,6 +134,24 @@ std::optional<Rational> parameter_on(const Point2<Rational>& a, const Point2<Rat
   if (predicates::orientation(a, b, p) != Sign::zero) return std::nullopt;
   const Rational len = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
   return ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / len;
+}
+
+// An enclosure of the radius-edge ratio² of a triangle in metric M (outward interval arithmetic),
+// to decide "≤ ρ₀²" without rationals when it is clear.
+FilterInterval radius_edge_squared_enclosure(const std::array<Point2<Rational>, 3>& t, const Sym2<Rational>& M) {
+  auto iv = [](const Rational& q) { return FilterInterval::around(q); };
+  const FilterInterval m11 = iv(M.m11), m12 = iv(M.m12), m22 = iv(M.m22);
+  auto q = [&](const FilterInterval& dx, const FilterInterval& dy) { return dx * (m11 * dx + m12 * dy) + dy * (m12 * dx + m22 * dy); };
+  const FilterInterval ax = iv(t[0].x), ay = iv(t[0].y);
+  const FilterInterval d1x = iv(t[1].x) - ax, d1y = iv(t[1].y) - ay, d2x = iv(t[2].x) - ax, d2y = iv(t[2].y) - ay;
+  const FilterInterval g1x = m11 * d1x + m12 * d1y, g1y = m12 * d1x + m22 * d1y;
+  const FilterInterval g2x = m11 * d2x + m12 * d2y, g2y = m12 * d2x + m22 * d2y;
+  const FilterInterval half(0.5), q1 = half * q(d1x, d1y), q2 = half * q(d2x, d2y), det = g1x * g2y - g1y * g2x;
+  const FilterInterval x = divide(q1 * g2y - q2 * g1y, det), y = divide(g1x * q2 - g2x * q1, det);
+  const FilterInterval e3 = q(iv(t[2].x) - iv(t[1].x), iv(t[2].y) - iv(t[1].y));
+  const FilterInterval e1 = q(d1x, d1y), e2 = q(d2x, d2y);
+  const FilterInterval shortest{std::min({e1.lo, e2.lo, e3.lo}), std::min({e1.hi, e2.hi, e3.hi})};
+  return divide(q(x, y), shortest);
 }
 
 // Radius-edge ratio² of a triangle in metric M (exact): Q_M(centre − a) / min edge Q_M.
@@ -141,6 +181,9 @@ double tau_squared_approx(const Sym2<Rational>& A, const Sym2<Rational>& B) {
 
 CertifyReport certify_mesh(const Mesh& mesh, const CertifyOptions& o) {
   CertifyReport r;
+  std::vector<Point2<double>> approx;
+  for (const auto& p : mesh.sites) approx.push_back({p.x.convert_to<double>(), p.y.convert_to<double>()});
+  const SiteTree tree(approx);
   if (o.valid) {
     std::vector<Cell> cells;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
@@ -152,9 +195,11 @@ CertifyReport certify_mesh(const Mesh& mesh, const CertifyOptions& o) {
     for (std::size_t k = 0; k < mesh.segments.size(); ++k) {
       const auto [a, b] = mesh.segments[k];
       std::vector<std::pair<Rational, int>> on;
-      for (int s = 0; s < static_cast<int>(mesh.sites.size()); ++s)
+      const double xa = approx[a].x, xb = approx[b].x, ya = approx[a].y, yb = approx[b].y;
+      tree.visit(std::min(xa, xb), std::max(xa, xb), std::min(ya, yb), std::max(ya, yb), [&](int s) {
         if (const auto t = parameter_on(mesh.sites[a], mesh.sites[b], mesh.sites[s]); t && *t >= 0 && *t <= 1)
           on.emplace_back(*t, s);
+      });
       std::sort(on.begin(), on.end());
       for (std::size_t i = 0; i + 1 < on.size(); ++i)
         if (!edges.count(std::minmax(on[i].second, on[i + 1].second)))
@@ -165,17 +210,15 @@ CertifyReport certify_mesh(const Mesh& mesh, const CertifyOptions& o) {
   }
   if (o.uniform) {
     r.uniform_checked = true;
-    std::vector<Point2<double>> approx;
-    for (const auto& p : mesh.sites) approx.push_back({p.x.convert_to<double>(), p.y.convert_to<double>()});
     bool doubles = true;
     for (const auto& p : mesh.sites) doubles = doubles && exactly_double(p.x) && exactly_double(p.y);
     for (const auto& m : mesh.metrics) doubles = doubles && exactly_double(m.m11) && exactly_double(m.m12) && exactly_double(m.m22);
     if (doubles) {
       std::vector<Sym2<double>> M;
       for (const auto& m : mesh.metrics) M.push_back({m.m11.convert_to<double>(), m.m12.convert_to<double>(), m.m22.convert_to<double>()});
-      check_uniform<double>(approx, M, mesh, approx, r);
+      check_uniform<double>(approx, M, mesh, tree, r);
     } else {
-      check_uniform<Rational>(mesh.sites, mesh.metrics, mesh, approx, r);
+      check_uniform<Rational>(mesh.sites, mesh.metrics, mesh, tree, r);
     }
   }
   if (o.rho0 || o.gamma0) {
@@ -186,6 +229,13 @@ CertifyReport certify_mesh(const Mesh& mesh, const CertifyOptions& o) {
       if (predicates::orientation(pts[0], pts[1], pts[2]) == Sign::zero) continue;  // flat: `valid` reports it
       if (o.rho0)
         for (int v : tri) {
+          const FilterInterval e = radius_edge_squared_enclosure(pts, mesh.metrics[v]);
+          const double hi = FilterInterval::around(rho2).lo;
+          if (e.hi < hi) {  // decided by the enclosure: ≤ ρ₀²
+            const double approx = std::sqrt((e.lo + e.hi) / 2);
+            if (approx > r.worst_rho) r.worst_rho = approx, r.worst_rho_triangle = t, r.worst_rho_vertex = v;
+            continue;
+          }
           const Rational q = radius_edge_squared(pts, mesh.metrics[v]);
           const double approx = std::sqrt(q.convert_to<double>());
           if (approx > r.worst_rho) r.worst_rho = approx, r.worst_rho_triangle = t, r.worst_rho_vertex = v;
