@@ -267,6 +267,70 @@ class Refiner {
     stars_[v] = std::move(star);
   }
 
+  // Z_v's bounding box (in the conflict index) and the star's reach, from its triangles.
+  void refresh_zone(int v) {
+    const Sym2<double>& M = metrics_[v];
+    const Point2<double>& pv = sites_[v];
+    double xa = pv.x, xb = pv.x, ya = pv.y, yb = pv.y, reach2 = 0;
+    for (const auto& t : stars_[v].triangles) {
+      const Circle c = circumcircle(pv, sites_[t[0]], sites_[t[1]], M);
+      const double reach = std::sqrt(qform(M, c.cx - pv.x, c.cy - pv.y)) + std::sqrt(c.r2);
+      reach2 = std::max(reach2, reach * reach);
+      const auto [hx, hy] = ellipse_extent(M, c.r2);
+      xa = std::min(xa, c.cx - hx), xb = std::max(xb, c.cx + hx), ya = std::min(ya, c.cy - hy), yb = std::max(yb, c.cy + hy);
+    }
+    reach2_[v] = reach2;
+    set_conflict_box(v, xa, xb, ya, yb);
+  }
+
+  // Bowyer–Watson on v's fan for a new site k (convex Ω): the triangles of S_v whose
+  // circumellipse strictly holds k form one run around v, and are replaced by (v, a, k) and
+  // (v, k, b) for the run's outer neighbours a and b. Returns 0 when S_v does not change, 1 when
+  // it was updated, 2 when it must be recomputed (a tie, a non-convex Ω, or an unexpected shape).
+  int update_star(int v, int k) {
+    Star& s = stars_[v];
+    const Point2<double>& pv = sites_[v];
+    const std::size_t n = s.triangles.size();
+    std::vector<char> in(n, 0);
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Sign c = predicates::incircle(pv, sites_[s.triangles[i][0]], sites_[s.triangles[i][1]], sites_[k], metrics_[v]);
+      if (c == Sign::zero) return 2;
+      in[i] = c == Sign::positive;
+      total += in[i];
+    }
+    if (total == 0) return 0;
+    if (!convex_ || total == n) return 2;
+    const bool closed = s.triangles.back()[1] == s.triangles.front()[0];
+    std::size_t first = n;
+    for (std::size_t i = 0; i < n && first == n; ++i)
+      if (in[i] && (closed ? !in[(i + n - 1) % n] : (i == 0 || !in[i - 1]))) first = i;
+    if (first == n) return 2;
+    std::size_t run = 0;
+    while (run < n && in[(first + run) % n] && (closed || first + run < n)) ++run;
+    if (run != total) return 2;  // not one run
+    const int a = s.triangles[first][0], b = s.triangles[(first + run - 1) % n][1];
+    if (predicates::orientation(pv, sites_[a], sites_[k]) != Sign::positive ||
+        predicates::orientation(pv, sites_[k], sites_[b]) != Sign::positive)
+      return 2;
+    std::vector<std::array<int, 2>> t;
+    if (closed) {
+      t = {{a, k}, {k, b}};
+      for (std::size_t i = run; i < n; ++i) t.push_back(s.triangles[(first + i) % n]);
+    } else {
+      t.assign(s.triangles.begin(), s.triangles.begin() + static_cast<long>(first));
+      t.push_back({a, k}), t.push_back({k, b});
+      t.insert(t.end(), s.triangles.begin() + static_cast<long>(first + run), s.triangles.end());
+    }
+    s.triangles = std::move(t);
+    s.neighbours.clear();
+    for (const auto& tr : s.triangles) s.neighbours.push_back(tr[0]), s.neighbours.push_back(tr[1]);
+    std::sort(s.neighbours.begin(), s.neighbours.end());
+    s.neighbours.erase(std::unique(s.neighbours.begin(), s.neighbours.end()), s.neighbours.end());
+    refresh_zone(v);
+    return 1;
+  }
+
   // The next Delaunay neighbour of v after u, counter-clockwise (ccw) or clockwise; −1 if none.
   int wrap(int v, int u, const std::vector<int>& cand, bool ccw) const {
     const Sym2<double>& M = metrics_[v];
@@ -311,23 +375,17 @@ class Refiner {
     sites_cells_[cell(cell_x(q.x), cell_y(q.y))].push_back(k);
     if (!update) return k;
     // Stars whose conflict zone holds q change (LU Lemma 3.5); so may their neighbours' consistency.
-    std::vector<int> affected;
-    for (int v : conflict_cells_[cell(cell_x(q.x), cell_y(q.y))]) {
-      const Star& s = stars_[v];
-      for (const auto& t : s.triangles)
-        if (predicates::incircle(sites_[v], sites_[t[0]], sites_[t[1]], q, metrics_[v]) != Sign::negative) {
-          affected.push_back(v);
-          break;
-        }
-    }
-    recompute(k);
-    enqueue(k);
-    for (int v : affected) {
+    const std::vector<int> zone = conflict_cells_[cell(cell_x(q.x), cell_y(q.y))];  // a copy: updates edit the index
+    for (int v : zone) {
       const std::vector<int> before = stars_[v].neighbours;
-      recompute(v);
+      const int change = update_star(v, k);
+      if (change == 0) continue;
+      if (change == 2) recompute(v);
       enqueue(v);
       for (int w : before) enqueue(w);
     }
+    recompute(k);
+    enqueue(k);
     for (int w : stars_[k].neighbours) enqueue(w);
     // Segments q encroaches.
     for (std::size_t s = 0; s < segments_.size(); ++s)
