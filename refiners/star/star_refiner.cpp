@@ -103,6 +103,7 @@ class Refiner {
     const int m = static_cast<int>(domain_.size());
     for (const auto& q : domain_) insert(q, 0, false);
     for (int i = 0; i < m; ++i) segments_.push_back({i, (i + 1) % m});
+    for (int i = 0; i < m; ++i) set_segment_box(i);
     for (int i = 0; i < m; ++i) boundary_[i] = {(i + m - 1) % m, (i + 1) % m};
     for (int v = 0; v < m; ++v) recompute(v);
     for (int v = 0; v < m; ++v) enqueue(v);
@@ -166,14 +167,20 @@ class Refiner {
 
   void set_conflict_box(int v, double xa, double xb, double ya, double yb) {
     Star& s = stars_[v];
+    const int box[4] = {cell_x(xa), cell_x(xb), cell_y(ya), cell_y(yb)};
+    if (std::equal(box, box + 4, s.box)) return;  // the same cells
+    auto inside = [](const int* b, int i, int j) { return i >= b[0] && i <= b[1] && j >= b[2] && j <= b[3]; };
     for (int j = s.box[2]; j <= s.box[3]; ++j)
       for (int i = s.box[0]; i <= s.box[1]; ++i) {
+        if (inside(box, i, j)) continue;  // stays
         auto& c = conflict_cells_[cell(i, j)];
-        c.erase(std::find(c.begin(), c.end(), v));
+        *std::find(c.begin(), c.end(), v) = c.back();  // order does not matter
+        c.pop_back();
       }
-    s.box[0] = cell_x(xa), s.box[1] = cell_x(xb), s.box[2] = cell_y(ya), s.box[3] = cell_y(yb);
-    for (int j = s.box[2]; j <= s.box[3]; ++j)
-      for (int i = s.box[0]; i <= s.box[1]; ++i) conflict_cells_[cell(i, j)].push_back(v);
+    for (int j = box[2]; j <= box[3]; ++j)
+      for (int i = box[0]; i <= box[1]; ++i)
+        if (!inside(s.box, i, j)) conflict_cells_[cell(i, j)].push_back(v);
+    std::copy(box, box + 4, s.box);
   }
 
   // --- stars ----------------------------------------------------------------------------------
@@ -368,6 +375,8 @@ class Refiner {
     }
     sites_.push_back(q);
     metrics_.push_back(Mq);
+    for (int h : pending_boxes_) set_segment_box(h);
+    pending_boxes_.clear();
     stars_.emplace_back();
     queued_.push_back(false);
     boundary_.resize(std::max(boundary_.size(), sites_.size()), {-1, -1});  // split() may have set it
@@ -421,7 +430,27 @@ class Refiner {
     if (p == a || p == b) return false;
     return encroaches(sites_[p], metrics_[p], s);
   }
+  // A box around segment s outside which no point encroaches it in its endpoints' metrics; twice
+  // as large, so that it also serves a nearby point's own (similar) metric: a prefilter only.
+  void set_segment_box(int s) {
+    const auto [a, b] = segments_[s];
+    const double mx = (sites_[a].x + sites_[b].x) / 2, my = (sites_[a].y + sites_[b].y) / 2;
+    double hx = 0, hy = 0;
+    for (int w : {a, b}) {
+      const Sym2<double>& M = metrics_[w];
+      const auto [ex, ey] = ellipse_extent(M, qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4);
+      hx = std::max(hx, ex), hy = std::max(hy, ey);
+    }
+    if (static_cast<int>(segment_box_.size()) <= s) segment_box_.resize(s + 1);
+    segment_box_[s] = {mx - 2 * hx, mx + 2 * hx, my - 2 * hy, my + 2 * hy};
+  }
+  bool near_segment(const Point2<double>& x, int s) const {
+    const auto& b = segment_box_[s];
+    return x.x >= b[0] && x.x <= b[1] && x.y >= b[2] && x.y <= b[3];
+  }
+
   bool encroaches(const Point2<double>& x, const Sym2<double>& Mx, int s) const {
+    if (!near_segment(x, s)) return false;
     const auto [a, b] = segments_[s];
     const double mx = (sites_[a].x + sites_[b].x) / 2, my = (sites_[a].y + sites_[b].y) / 2;
     for (const Sym2<double>* M : {&Mx, &metrics_[a], &metrics_[b]})
@@ -442,6 +471,7 @@ class Refiner {
     const int k = static_cast<int>(sites_.size());
     segments_[s] = {a, k};
     segments_.push_back({k, b});
+    pending_boxes_ = {s, static_cast<int>(segments_.size()) - 1};  // set once k's metric exists
     boundary_.resize(k + 1, {-1, -1});
     boundary_[k] = {a, b};  // before insert(), which computes k's star
     for (int e : {0, 1}) {
@@ -548,11 +578,17 @@ class Refiner {
     // Insert_or_snap: a point outside Ω or encroaching a segment (in the star's metric, its own,
     // or the segment's endpoints': the test of rule 1) splits that segment instead.
     const Sym2<double> Mx = field_.at(x.x, x.y);
+    const bool outside = !inside_polygon(domain_, x.x, x.y);
     int nearest_segment = -1;
     double best = inf;
     for (std::size_t s2 = 0; s2 < segments_.size(); ++s2) {
       const auto [a, b] = segments_[s2];
       const double mx = (sites_[a].x + sites_[b].x) / 2 - x.x, my = (sites_[a].y + sites_[b].y) / 2 - x.y;
+      if (!outside && !near_segment(x, static_cast<int>(s2))) {
+        // Far from s2 in its endpoints' metrics; the star's metric M may still see it encroached.
+        const auto [ex, ey] = ellipse_extent(M, qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4);
+        if (std::abs(mx) > ex || std::abs(my) > ey) continue;
+      }
       const double half = qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4;
       const double d = qform(M, mx, my);
       if (d < half || encroaches(x, Mx, static_cast<int>(s2))) {
@@ -561,7 +597,7 @@ class Refiner {
       }
       if (d - half < best) best = d - half, nearest_segment = static_cast<int>(s2);
     }
-    if (!inside_polygon(domain_, x.x, x.y)) {
+    if (outside) {
       // The point lies beyond ∂Ω: split the boundary subsegment between the triangle and it
       // (Ruppert's rule: the segment from the triangle's centroid to the point crosses it).
       const Point2<double> g{(sites_[v].x + sites_[act.a].x + sites_[act.b].x) / 3,
@@ -616,6 +652,8 @@ class Refiner {
   std::vector<std::array<int, 2>> boundary_;  // per site: its two boundary neighbours, or −1
   std::vector<double> reach2_;                // per site: the squared M_v-reach of its star
   std::string stalled_;                       // why refinement cannot go on, if it cannot
+  std::vector<std::array<double, 4>> segment_box_;  // per segment: the encroachment prefilter box
+  std::vector<int> pending_boxes_;
   std::deque<int> segment_queue_, site_queue_;
   std::array<std::size_t, 6> counts_{};
   int last_rule_ = 0;
