@@ -90,6 +90,7 @@ class Refiner {
     g_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(p.max_vertices) / 2)), 16, 1024);
     cw_ = (x1 - x0_) / g_, ch_ = (y1 - y0_) / g_;
     sites_cells_.assign(static_cast<std::size_t>(g_) * g_, {});
+    segment_grid_.assign(static_cast<std::size_t>(g_) * g_, {});
     convex_ = true;
     for (std::size_t i = 0; i < domain.size(); ++i)
       if (predicates::orientation(domain[i], domain[(i + 1) % domain.size()], domain[(i + 2) % domain.size()]) == Sign::negative)
@@ -397,8 +398,8 @@ class Refiner {
     enqueue(k);
     for (int w : stars_[k].neighbours) enqueue(w);
     // Segments q encroaches.
-    for (std::size_t s = 0; s < segments_.size(); ++s)
-      if (encroaches(k, static_cast<int>(s))) segment_queue_.push_back(static_cast<int>(s));
+    for (int s : segment_grid_[cell(cell_x(q.x), cell_y(q.y))])
+      if (encroaches(k, s)) segment_queue_.push_back(s);
     return k;
   }
 
@@ -441,8 +442,19 @@ class Refiner {
       const auto [ex, ey] = ellipse_extent(M, qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4);
       hx = std::max(hx, ex), hy = std::max(hy, ey);
     }
-    if (static_cast<int>(segment_box_.size()) <= s) segment_box_.resize(s + 1);
+    if (static_cast<int>(segment_box_.size()) <= s) segment_box_.resize(s + 1), segment_cells_.resize(s + 1, {0, -1, 0, -1});
     segment_box_[s] = {mx - 2 * hx, mx + 2 * hx, my - 2 * hy, my + 2 * hy};
+    // Register s in the grid cells its box covers (segments near a point are found there).
+    auto& c = segment_cells_[s];
+    for (int j = c[2]; j <= c[3]; ++j)
+      for (int i = c[0]; i <= c[1]; ++i) {
+        auto& list = segment_grid_[cell(i, j)];
+        *std::find(list.begin(), list.end(), s) = list.back();
+        list.pop_back();
+      }
+    c = {cell_x(segment_box_[s][0]), cell_x(segment_box_[s][1]), cell_y(segment_box_[s][2]), cell_y(segment_box_[s][3])};
+    for (int j = c[2]; j <= c[3]; ++j)
+      for (int i = c[0]; i <= c[1]; ++i) segment_grid_[cell(i, j)].push_back(s);
   }
   bool near_segment(const Point2<double>& x, int s) const {
     const auto& b = segment_box_[s];
@@ -581,21 +593,21 @@ class Refiner {
     const bool outside = !inside_polygon(domain_, x.x, x.y);
     int nearest_segment = -1;
     double best = inf;
-    for (std::size_t s2 = 0; s2 < segments_.size(); ++s2) {
+    std::vector<int> all;
+    if (outside) {
+      all.resize(segments_.size());
+      for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    }
+    for (int s2 : outside ? all : segment_grid_[cell(cell_x(x.x), cell_y(x.y))]) {
       const auto [a, b] = segments_[s2];
       const double mx = (sites_[a].x + sites_[b].x) / 2 - x.x, my = (sites_[a].y + sites_[b].y) / 2 - x.y;
-      if (!outside && !near_segment(x, static_cast<int>(s2))) {
-        // Far from s2 in its endpoints' metrics; the star's metric M may still see it encroached.
-        const auto [ex, ey] = ellipse_extent(M, qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4);
-        if (std::abs(mx) > ex || std::abs(my) > ey) continue;
-      }
       const double half = qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4;
       const double d = qform(M, mx, my);
-      if (d < half || encroaches(x, Mx, static_cast<int>(s2))) {
-        split(static_cast<int>(s2));
+      if (d < half || encroaches(x, Mx, s2)) {
+        split(s2);
         return;
       }
-      if (d - half < best) best = d - half, nearest_segment = static_cast<int>(s2);
+      if (d - half < best) best = d - half, nearest_segment = s2;
     }
     if (outside) {
       // The point lies beyond ∂Ω: split the boundary subsegment between the triangle and it
@@ -653,6 +665,8 @@ class Refiner {
   std::vector<double> reach2_;                // per site: the squared M_v-reach of its star
   std::string stalled_;                       // why refinement cannot go on, if it cannot
   std::vector<std::array<double, 4>> segment_box_;  // per segment: the encroachment prefilter box
+  std::vector<std::array<int, 4>> segment_cells_;   // per segment: the grid cells of its box
+  std::vector<std::vector<int>> segment_grid_;      // per grid cell: the segments whose box covers it
   std::vector<int> pending_boxes_;
   std::deque<int> segment_queue_, site_queue_;
   std::array<std::size_t, 6> counts_{};
