@@ -157,8 +157,10 @@ class Refiner {
   int cell_y(double y) const { return std::clamp(static_cast<int>((y - y0_) / ch_), 0, g_ - 1); }
   std::size_t cell(int i, int j) const { return static_cast<std::size_t>(j) * g_ + i; }
 
-  std::vector<int> sites_in(double xa, double xb, double ya, double yb) const {
-    std::vector<int> out;
+  // The sites in a box, into a buffer reused across calls (allocation was a third of the time).
+  const std::vector<int>& sites_in(double xa, double xb, double ya, double yb) const {
+    std::vector<int>& out = found_;
+    out.clear();
     for (int j = cell_y(ya); j <= cell_y(yb); ++j)
       for (int i = cell_x(xa); i <= cell_x(xb); ++i)
         for (int s : sites_cells_[cell(i, j)])
@@ -203,7 +205,8 @@ class Refiner {
     Star star;
     while (true) {
       const auto [ex, ey] = ellipse_extent(M, R2);
-      std::vector<int> cand = sites_in(pv.x - ex, pv.x + ex, pv.y - ey, pv.y + ey);
+      std::vector<int>& cand = cand_;
+      cand = sites_in(pv.x - ex, pv.x + ex, pv.y - ey, pv.y + ey);
       cand.erase(std::remove_if(cand.begin(), cand.end(),
                                 [&](int c) {
                                   return c == v || qform(M, sites_[c].x - pv.x, sites_[c].y - pv.y) > R2 ||
@@ -219,7 +222,8 @@ class Refiner {
       int first = cand[0];
       for (int c : cand)
         if (predicates::compare_scaled_lengths(1.0, pv, sites_[c], M, pv, sites_[first], M) == Sign::negative) first = c;
-      std::vector<int> ring{first};
+      std::vector<int>& ring = ring_;
+      ring.assign(1, first);
       bool closed = false;
       for (std::size_t guard = 0; guard <= cand.size(); ++guard) {
         const int w = wrap(v, ring.back(), cand, true);
@@ -299,7 +303,8 @@ class Refiner {
     Star& s = stars_[v];
     const Point2<double>& pv = sites_[v];
     const std::size_t n = s.triangles.size();
-    std::vector<char> in(n, 0);
+    std::vector<char>& in = in_;
+    in.assign(n, 0);
     std::size_t total = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const Sign c = predicates::incircle(pv, sites_[s.triangles[i][0]], sites_[s.triangles[i][1]], sites_[k], metrics_[v]);
@@ -385,14 +390,14 @@ class Refiner {
     sites_cells_[cell(cell_x(q.x), cell_y(q.y))].push_back(k);
     if (!update) return k;
     // Stars whose conflict zone holds q change (LU Lemma 3.5); so may their neighbours' consistency.
-    const std::vector<int> zone = conflict_cells_[cell(cell_x(q.x), cell_y(q.y))];  // a copy: updates edit the index
-    for (int v : zone) {
-      const std::vector<int> before = stars_[v].neighbours;
+    zone_ = conflict_cells_[cell(cell_x(q.x), cell_y(q.y))];  // a copy: updates edit the index
+    for (int v : zone_) {
+      before_ = stars_[v].neighbours;
       const int change = update_star(v, k);
       if (change == 0) continue;
       if (change == 2) recompute(v);
       enqueue(v);
-      for (int w : before) enqueue(w);
+      for (int w : before_) enqueue(w);
     }
     recompute(k);
     enqueue(k);
@@ -668,6 +673,10 @@ class Refiner {
   std::vector<std::array<int, 4>> segment_cells_;   // per segment: the grid cells of its box
   std::vector<std::vector<int>> segment_grid_;      // per grid cell: the segments whose box covers it
   std::vector<int> pending_boxes_;
+  // Scratch buffers, reused.
+  mutable std::vector<int> found_;
+  std::vector<int> cand_, ring_, zone_, before_;
+  std::vector<char> in_;
   std::deque<int> segment_queue_, site_queue_;
   std::array<std::size_t, 6> counts_{};
   int last_rule_ = 0;
