@@ -1,5 +1,6 @@
 #include "refiners/star/star_refiner.hpp"
 
+#include "numbers/rational.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/length_compare.hpp"
 #include "predicates/orientation.hpp"
@@ -248,8 +249,7 @@ class Refiner {
         const int a = ring[i], b = ring[(i + 1) % k];
         const Circle c = circumcircle(pv, sites_[a], sites_[b], M);
         const double reach = std::sqrt(qform(M, c.cx - pv.x, c.cy - pv.y)) + std::sqrt(c.r2);
-        const double cx = (pv.x + sites_[a].x + sites_[b].x) / 3, cy = (pv.y + sites_[a].y + sites_[b].y) / 3;
-        if (!inside_polygon(domain_, cx, cy)) continue;  // restricted to Ω: the rest does not matter
+        if (!triangle_in_domain(v, a, b)) continue;  // restricted to Ω: the rest does not matter
         reach2 = std::max(reach2, reach * reach);
         if (!(reach * reach * 1.0001 < R2)) fits = false;
         star.triangles.push_back({a, b});
@@ -420,6 +420,21 @@ class Refiner {
       if (s1 < 0 && s2 < 0) return false;
     }
     return true;
+  }
+
+  // Whether a star triangle lies in Ω. Its edges cross no edge of Ω (visibility) and it holds no
+  // site, so a vertex strictly inside Ω puts it inside; only triangles with all three vertices on
+  // ∂Ω (in a non-convex Ω) need a test: their centroid, exactly (rational ray casting).
+  bool triangle_in_domain(int v, int a, int b) const {
+    if (convex_ || boundary_[v][0] < 0 || boundary_[a][0] < 0 || boundary_[b][0] < 0) return true;
+    const Rational cx = (Rational(sites_[v].x) + Rational(sites_[a].x) + Rational(sites_[b].x)) / 3;
+    const Rational cy = (Rational(sites_[v].y) + Rational(sites_[a].y) + Rational(sites_[b].y)) / 3;
+    bool in = false;
+    for (std::size_t i = 0, j = domain_.size() - 1; i < domain_.size(); j = i++) {
+      const Rational xi(domain_[i].x), yi(domain_[i].y), xj(domain_[j].x), yj(domain_[j].y);
+      if ((yi > cy) != (yj > cy) && ((cx - xi) * (yj - yi) < (xj - xi) * (cy - yi)) == (yj - yi > 0)) in = !in;
+    }
+    return in;
   }
 
   bool is_segment(int a, int b) const {
