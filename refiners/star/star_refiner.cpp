@@ -326,7 +326,8 @@ class Refiner {
     if (predicates::orientation(pv, sites_[a], sites_[k]) != Sign::positive ||
         predicates::orientation(pv, sites_[k], sites_[b]) != Sign::positive)
       return 2;
-    std::vector<std::array<int, 2>> t;
+    std::vector<std::array<int, 2>>& t = fan_;
+    t.clear();
     if (closed) {
       t = {{a, k}, {k, b}};
       for (std::size_t i = run; i < n; ++i) t.push_back(s.triangles[(first + i) % n]);
@@ -335,7 +336,7 @@ class Refiner {
       t.push_back({a, k}), t.push_back({k, b});
       t.insert(t.end(), s.triangles.begin() + static_cast<long>(first + run), s.triangles.end());
     }
-    s.triangles = std::move(t);
+    std::swap(s.triangles, t);  // the old list's buffer is reused next time
     s.neighbours.clear();
     for (const auto& tr : s.triangles) s.neighbours.push_back(tr[0]), s.neighbours.push_back(tr[1]);
     std::sort(s.neighbours.begin(), s.neighbours.end());
@@ -692,6 +693,7 @@ class Refiner {
   mutable std::vector<int> found_;
   std::vector<int> cand_, ring_, zone_, before_;
   std::vector<char> in_;
+  std::vector<std::array<int, 2>> fan_;
   std::deque<int> segment_queue_, site_queue_;
   std::array<std::size_t, 6> counts_{};
   int last_rule_ = 0;
