@@ -78,6 +78,7 @@ struct Star {
   std::vector<std::array<int, 2>> triangles;  // (a, b): triangle (v, a, b) counter-clockwise
   std::vector<int> neighbours;                // sorted
   int box[4] = {0, -1, 0, -1};                // grid cells covered by the conflict zone
+  double zone[4] = {0, -1, 0, -1};            // the conflict zone's bounding box (empty: x0 > x1)
 };
 
 class Refiner {
@@ -88,7 +89,7 @@ class Refiner {
     x0_ = y0_ = inf;
     double x1 = -inf, y1 = -inf;
     for (const auto& q : domain) x0_ = std::min(x0_, q.x), y0_ = std::min(y0_, q.y), x1 = std::max(x1, q.x), y1 = std::max(y1, q.y);
-    g_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(p.max_vertices) / 2)), 16, 1024);
+    g_ = 16;  // grows with the number of sites (rebuild_grid)
     cw_ = (x1 - x0_) / g_, ch_ = (y1 - y0_) / g_;
     sites_cells_.assign(static_cast<std::size_t>(g_) * g_, {});
     segment_grid_.assign(static_cast<std::size_t>(g_) * g_, {});
@@ -169,8 +170,32 @@ class Refiner {
     return out;
   }
 
+  // A grid of about two sites per cell, rebuilt when the sites outgrow it: every index (sites,
+  // conflict zones, segments) is filled again from the stored boxes.
+  void rebuild_grid() {
+    g_ = std::min(2048, static_cast<int>(std::sqrt(sites_.size() / 2.0)) + 1);
+    double x1 = -inf, y1 = -inf;
+    x0_ = y0_ = inf;
+    for (const auto& q : domain_) x0_ = std::min(x0_, q.x), y0_ = std::min(y0_, q.y), x1 = std::max(x1, q.x), y1 = std::max(y1, q.y);
+    cw_ = (x1 - x0_) / g_, ch_ = (y1 - y0_) / g_;
+    sites_cells_.assign(static_cast<std::size_t>(g_) * g_, {});
+    conflict_cells_.assign(static_cast<std::size_t>(g_) * g_, {});
+    segment_grid_.assign(static_cast<std::size_t>(g_) * g_, {});
+    for (int i = 0; i < static_cast<int>(sites_.size()); ++i) sites_cells_[cell(cell_x(sites_[i].x), cell_y(sites_[i].y))].push_back(i);
+    for (int v = 0; v < static_cast<int>(stars_.size()); ++v) {
+      Star& st = stars_[v];
+      st.box[0] = 0, st.box[1] = -1, st.box[2] = 0, st.box[3] = -1;
+      if (st.zone[0] <= st.zone[1]) set_conflict_box(v, st.zone[0], st.zone[1], st.zone[2], st.zone[3]);
+    }
+    for (int sgm = 0; sgm < static_cast<int>(segment_cells_.size()); ++sgm) {
+      segment_cells_[sgm] = {0, -1, 0, -1};
+      set_segment_box(sgm);
+    }
+  }
+
   void set_conflict_box(int v, double xa, double xb, double ya, double yb) {
     Star& s = stars_[v];
+    s.zone[0] = xa, s.zone[1] = xb, s.zone[2] = ya, s.zone[3] = yb;
     const int box[4] = {cell_x(xa), cell_x(xb), cell_y(ya), cell_y(yb)};
     if (std::equal(box, box + 4, s.box)) return;  // the same cells
     auto inside = [](const int* b, int i, int j) { return i >= b[0] && i <= b[1] && j >= b[2] && j <= b[3]; };
@@ -270,12 +295,14 @@ class Refiner {
       std::sort(star.neighbours.begin(), star.neighbours.end());
       star.neighbours.erase(std::unique(star.neighbours.begin(), star.neighbours.end()), star.neighbours.end());
       std::copy(stars_[v].box, stars_[v].box + 4, star.box);
+      std::copy(stars_[v].zone, stars_[v].zone + 4, star.zone);
       stars_[v] = std::move(star);
       reach2_[v] = reach2;
       set_conflict_box(v, xa, xb, ya, yb);
       return;
     }
     std::copy(stars_[v].box, stars_[v].box + 4, star.box);
+    std::copy(stars_[v].zone, stars_[v].zone + 4, star.zone);
     stars_[v] = std::move(star);
   }
 
@@ -389,6 +416,7 @@ class Refiner {
     boundary_.resize(std::max(boundary_.size(), sites_.size()), {-1, -1});  // split() may have set it
     reach2_.push_back(initial_reach2);
     sites_cells_[cell(cell_x(q.x), cell_y(q.y))].push_back(k);
+    if (sites_.size() > 4 * static_cast<std::size_t>(g_) * g_) rebuild_grid();
     if (!update) return k;
     // Stars whose conflict zone holds q change (LU Lemma 3.5); so may their neighbours' consistency.
     zone_ = conflict_cells_[cell(cell_x(q.x), cell_y(q.y))];  // a copy: updates edit the index
