@@ -26,7 +26,9 @@ void refine(benchmark::State& state, const char* field, const char* param, doubl
 }  // namespace
 
 BENCHMARK_CAPTURE(refine, linear_10k, "linear", "hx", 0.01, 0)->Iterations(1)->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(refine, linear_100k, "linear", "hx", 0.002, 0)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(refine, linear_100k, "linear", "hx", 0.0035, 0)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(refine, linear_250k, "linear", "hx", 0.002, 0)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(refine, shock_10k, "shock", "h", 0.01, 3)->Iterations(1)->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(refine, shock_100k, "shock", "h", 0.002, 3)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(refine, shock_100k, "shock", "h", 0.0037, 3)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(refine, shock_350k, "shock", "h", 0.002, 3)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK_MAIN();
