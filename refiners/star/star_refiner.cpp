@@ -112,17 +112,18 @@ class Refiner {
     for (int v = 0; v < m; ++v) enqueue(v);
     for (std::size_t s = 0; s < segments_.size(); ++s) segment_queue_.push_back(static_cast<int>(s));
     double next_report = 1;
+    std::size_t steps = 0;
     RefineResult r;
     while (true) {
       if (sites_.size() >= p_.max_vertices) {
         r.stop_reason = "vertex budget (" + std::to_string(p_.max_vertices) + ") reached";
         break;
       }
-      if (elapsed() > p_.max_seconds) {
+      if (++steps % 64 == 0 && elapsed() > p_.max_seconds) {  // the clock is read every 64 steps
         r.stop_reason = "time budget (" + std::to_string(p_.max_seconds) + " s) reached";
         break;
       }
-      if (progress_ && elapsed() > next_report) {
+      if (progress_ && steps % 64 == 0 && elapsed() > next_report) {
         next_report += 1;
         progress_("refine: " + std::to_string(sites_.size()) + " vertices, " +
                   std::to_string(static_cast<long>(sites_.size() / elapsed())) + " per second, queue " +
@@ -245,9 +246,16 @@ class Refiner {
         R2 *= 4;
         continue;
       }
-      int first = cand[0];
+      // The M_v-nearest candidate (a Delaunay neighbour): by doubles, and by the exact comparison
+      // only among candidates whose double distances are within 10⁻¹⁰ (relative) of the least.
+      auto d2 = [&](int c) { return qform(M, sites_[c].x - pv.x, sites_[c].y - pv.y); };
+      double least = inf;
+      for (int c : cand) least = std::min(least, d2(c));
+      int first = -1;
       for (int c : cand)
-        if (predicates::compare_scaled_lengths(1.0, pv, sites_[c], M, pv, sites_[first], M) == Sign::negative) first = c;
+        if (d2(c) <= least * (1 + 1e-10) &&
+            (first < 0 || predicates::compare_scaled_lengths(1.0, pv, sites_[c], M, pv, sites_[first], M) == Sign::negative))
+          first = c;
       std::vector<int>& ring = ring_;
       ring.assign(1, first);
       bool closed = false;
