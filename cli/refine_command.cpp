@@ -38,6 +38,8 @@ std::string refine_summary(const RefineResult& r, const RefineParameters& p) {
     for (int k : r.acute_corners) o << " " << k;
     o << " (encroachment there may not end)";
   }
+  o << "\n  Pick_valid: " << r.picks_rejected << " picked points discarded as γ₀-cocircular, " << r.picks_exhausted
+    << " refinements kept a point after " << p.pick_attempts << " attempts";
   o << "\n  insertions by rule:";
   for (int k = 1; k <= 5; ++k) o << " " << refiners::star::rule_name(k) << " " << r.rule_counts[k] << (k < 5 ? "," : "\n");
   o << "  parameters: ρ₀ = " << p.rho0 << ", γ₀ = " << p.gamma0 << ", δ = " << p.delta << ", β = " << p.beta << ", size = " << p.size
@@ -125,6 +127,10 @@ void add_refine_command(CLI::App& app, int& exit_code) {
   c->add_option("--delta", o->p.delta, "picking-region ratio δ")->capture_default_str();
   c->add_option("--beta", o->p.beta, "cosphericity radius ratio β (checked against Theorem 4.5)")->capture_default_str();
   c->add_option("--size", o->p.size, "largest circumradius in the metric")->capture_default_str();
+  c->add_option("--pick-attempts", o->p.pick_attempts,
+                "Pick_valid: picked points that may be discarded as γ₀-cocircular before one is kept (0: no test)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
   c->add_option("--max-vertices", o->p.max_vertices, "vertex budget")->capture_default_str();
   c->add_option("--max-seconds", o->p.max_seconds, "time budget")->capture_default_str();
   c->add_option("--seed", o->p.seed, "random seed of the picking regions")->capture_default_str();

@@ -149,6 +149,7 @@ class Refiner {
     }
     r.seconds = elapsed();
     r.rule_counts = counts_;
+    r.picks_rejected = picks_rejected_, r.picks_exhausted = picks_exhausted_;
     r.last_rule = last_rule_;
     r.trace = std::move(trace_);
     return r;
@@ -381,9 +382,9 @@ class Refiner {
   }
 
   // The next Delaunay neighbour of v after u, counter-clockwise (ccw) or clockwise; −1 if none.
-  int wrap(int v, int u, const std::vector<int>& cand, bool ccw) const {
-    const Sym2<double>& M = metrics_[v];
-    const Point2<double>&pv = sites_[v], &pu = sites_[u];
+  int wrap(int v, int u, const std::vector<int>& cand, bool ccw) const { return wrap(sites_[v], metrics_[v], u, cand, ccw); }
+  int wrap(const Point2<double>& pv, const Sym2<double>& M, int u, const std::vector<int>& cand, bool ccw) const {
+    const Point2<double>& pu = sites_[u];
     int w = -1;
     for (int x : cand) {
       if (x == u) continue;
@@ -629,18 +630,91 @@ class Refiner {
   }
 
   // Refine(τ) in M_v: a random point of the picking region B_{M_v}(c, δr), then Insert_or_snap.
+  // LU Definition 3.6 in 2D, witnessed inside {N : γ(M, N) ≤ √γ₀} (so that γ(N, N′) ≤ γ₀ holds
+  // too): four points are γ₀-cocircular when the in-circle determinant, linear in the metric,
+  // f(N) = ⟨C, N⟩ with C = Σ cofactorᵢ vᵢvᵢᵀ, takes both signs there. With N = M^½ T M^½ and
+  // T between I/γ₀ and γ₀ I, its extremes come from the eigenvalues of M C.
+  bool cocircular_within(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c,
+                         const Point2<double>& d, const Sym2<double>& M) const {
+    const double v[3][2] = {{a.x - d.x, a.y - d.y}, {b.x - d.x, b.y - d.y}, {c.x - d.x, c.y - d.y}};
+    const double cof[3] = {v[1][0] * v[2][1] - v[1][1] * v[2][0], v[2][0] * v[0][1] - v[2][1] * v[0][0],
+                           v[0][0] * v[1][1] - v[0][1] * v[1][0]};
+    double c11 = 0, c12 = 0, c22 = 0;
+    for (int i = 0; i < 3; ++i) c11 += cof[i] * v[i][0] * v[i][0], c12 += cof[i] * v[i][0] * v[i][1], c22 += cof[i] * v[i][1] * v[i][1];
+    const double p11 = M.m11 * c11 + M.m12 * c12, p12 = M.m11 * c12 + M.m12 * c22;  // M C
+    const double p21 = M.m12 * c11 + M.m22 * c12, p22 = M.m12 * c12 + M.m22 * c22;
+    const double tr = p11 + p22, det = p11 * p22 - p12 * p21, disc = std::sqrt(std::max(0.0, tr * tr / 4 - det));
+    const double l1 = tr / 2 + disc, l2 = tr / 2 - disc, g = p_.gamma0;
+    auto extreme = [&](bool high) {
+      double f = 0;
+      for (double l : {l1, l2}) f += l * ((l > 0) == high ? g : 1 / g);
+      return f;
+    };
+    return extreme(false) < 0 && extreme(true) > 0;
+  }
+
+  // Pick_valid (LU §4.1): a point of the picking region is discarded while it would make a new
+  // triangle xpq with γ(xpq) < γ₀ that is γ₀-cocircular with a site s, with radius < β r_τ and
+  // radius-edge ratio < ρ₀. The new triangles are x's prospective fan in M_x. After
+  // `pick_attempts` discarded points the last one is kept, and counted (0: no test).
+  bool forbidden(const Point2<double>& x, double r_tau) {
+    const Sym2<double> Mx = field_.at(x.x, x.y);
+    const double R2 = 4 * r_tau * r_tau;  // the new fan lies within about (1 + δ) r_τ of x
+    const auto [ex, ey] = ellipse_extent(Mx, R2);
+    std::vector<int>& cand = pick_cand_;
+    cand = sites_in(x.x - ex, x.x + ex, x.y - ey, x.y + ey);
+    if (cand.size() < 3) return false;
+    int first = cand[0];
+    for (int c : cand)
+      if (qform(Mx, sites_[c].x - x.x, sites_[c].y - x.y) < qform(Mx, sites_[first].x - x.x, sites_[first].y - x.y)) first = c;
+    std::vector<int>& ring = pick_ring_;
+    ring.assign(1, first);
+    for (std::size_t guard = 0; guard <= cand.size(); ++guard) {
+      const int w = wrap(x, Mx, ring.back(), cand, true);
+      if (w < 0 || w == first) break;
+      ring.push_back(w);
+    }
+    const double g2 = p_.gamma0 * p_.gamma0, beta_r2 = p_.beta * p_.beta * r_tau * r_tau, rho2 = p_.rho0 * p_.rho0;
+    for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
+      const int a = ring[i], b = ring[i + 1];
+      const Sym2<double>& M = Mx;
+      if (tau2(Mx, metrics_[a]) >= g2 || tau2(Mx, metrics_[b]) >= g2 || tau2(metrics_[a], metrics_[b]) >= g2) continue;
+      const Circle c = circumcircle(x, sites_[a], sites_[b], M);
+      if (!(c.r2 < beta_r2)) continue;
+      for (int sx : cand) {
+        if (sx == a || sx == b) continue;
+        const Point2<double>& ps = sites_[sx];
+        double shortest = std::min({qform(M, sites_[a].x - x.x, sites_[a].y - x.y), qform(M, sites_[b].x - x.x, sites_[b].y - x.y),
+                                    qform(M, ps.x - x.x, ps.y - x.y), qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y),
+                                    qform(M, ps.x - sites_[a].x, ps.y - sites_[a].y), qform(M, ps.x - sites_[b].x, ps.y - sites_[b].y)});
+        if (!(c.r2 < rho2 * shortest)) continue;
+        if (cocircular_within(x, sites_[a], sites_[b], ps, M)) return true;
+      }
+    }
+    return false;
+  }
+
   void refine(int v, const Action& act) {
     const Sym2<double>& M = metrics_[v];
     const Circle c = circumcircle(sites_[v], sites_[act.a], sites_[act.b], M);
     // M = LLᵀ; a point of the M-ball: c + L⁻ᵀ (δ r u) with |u| < 1.
     const double l11 = std::sqrt(M.m11), l21 = M.m12 / l11, l22 = std::sqrt(M.m22 - l21 * l21);
     std::uniform_real_distribution<double> unit(-1, 1);
-    double ux, uy;
-    do ux = unit(rng_), uy = unit(rng_);
-    while (ux * ux + uy * uy >= 1);
     const double s = p_.delta * std::sqrt(c.r2);
-    const double zy = s * uy / l22, zx = (s * ux - l21 * zy) / l11;
-    Point2<double> x{c.cx + zx, c.cy + zy};
+    Point2<double> x;
+    for (int attempt = 0;; ++attempt) {
+      double ux, uy;
+      do ux = unit(rng_), uy = unit(rng_);
+      while (ux * ux + uy * uy >= 1);
+      const double zy = s * uy / l22, zx = (s * ux - l21 * zy) / l11;
+      x = {c.cx + zx, c.cy + zy};
+      if (p_.pick_attempts == 0 || !std::isfinite(x.x) || !std::isfinite(x.y) || !forbidden(x, std::sqrt(c.r2))) break;
+      ++picks_rejected_;
+      if (attempt + 1 == p_.pick_attempts) {
+        ++picks_exhausted_;
+        break;
+      }
+    }
     if (!std::isfinite(x.x) || !std::isfinite(x.y)) {  // a nearly flat triangle: its centroid instead
       x = {(sites_[v].x + sites_[act.a].x + sites_[act.b].x) / 3, (sites_[v].y + sites_[act.a].y + sites_[act.b].y) / 3};
     }
@@ -730,6 +804,8 @@ class Refiner {
   std::vector<int> cand_, ring_, zone_, before_;
   std::vector<char> in_;
   std::vector<std::array<int, 2>> fan_;
+  std::vector<int> pick_cand_, pick_ring_;
+  std::size_t picks_rejected_ = 0, picks_exhausted_ = 0;
   std::deque<int> segment_queue_, site_queue_;
   std::array<std::size_t, 6> counts_{};
   int last_rule_ = 0;

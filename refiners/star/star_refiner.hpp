@@ -10,9 +10,9 @@
 //   3 radius-edge ratio > ρ₀ in M_v;
 //   4 size: circumradius in M_v > `size` (so that the mesh fits the field);
 //   5 inconsistency: an edge vw in S_v but not in S_w (LU Definition 3.3).
-// Refine(τ) picks a random point in the picking region B_{M_v}(c, δr) (Pick_valid, without the
-// γ₀-cosphericity rejection) and Insert_or_snap splits the boundary subsegment it would encroach
-// instead. Floating point throughout, with exact filtered predicates for every combinatorial
+// Refine(τ) picks a random point in the picking region B_{M_v}(c, δr), discarded while it would
+// form a forbidden γ₀-cocircular configuration (Pick_valid, LU Definition 3.6), and
+// Insert_or_snap splits the boundary subsegment it would encroach instead. Floating point throughout, with exact filtered predicates for every combinatorial
 // decision (in-circle, orientation, distance comparisons), so stars never disagree by rounding.
 // The refiners never include the oracle (DESIGN.md § Layers); the exact certifier judges the output.
 #include "refiners/star/metric_field.hpp"
@@ -26,6 +26,9 @@ namespace anisocert::refiners::star {
 
 struct RefineParameters {
   double rho0 = 3, gamma0 = 1.5, delta = 0.1, beta = 3, size = 1;
+  // Pick_valid: how many picked points may be discarded as γ₀-cocircular before one is kept
+  // (0 turns the test off). The test is only selective for γ₀ near 1, as LU Theorem 4.5 assumes.
+  int pick_attempts = 4;
   std::size_t max_vertices = 200000;
   double max_seconds = 120;
   unsigned seed = 1;
@@ -60,6 +63,8 @@ struct RefineResult {
   // where the angle in the corner's metric is not (e₁ᵀ M e₂ ≥ 0 for the two edge directions).
   std::vector<int> acute_corners;
   std::array<std::size_t, 6> rule_counts{};
+  // Pick_valid: points discarded as γ₀-cocircular, and refinements where every attempt was.
+  std::size_t picks_rejected = 0, picks_exhausted = 0;
   double seconds = 0;
   std::vector<Insertion> trace;
 };
