@@ -243,11 +243,8 @@ int Builder::owner_of_edge_point(int edge, const LocatedPoint& a, const LocatedP
     const Rational x = attempt == 0 ? lo : lo + (lo - (increasing ? a.point.x().hi() : b.point.x().hi())) / -(attempt + 1);
     const Rational y = sa.y + (sb.y - sa.y) * (x - sa.x) / (sb.x - sa.x);
     const LocatedPoint p = LocatedPoint::rational(x, y);
-    int v = 0;
-    for (int u = 1; u < static_cast<int>(distance_.size()); ++u)
-      if (p.sign_of(bisector_conic(d_.sheared, u, v)) == Sign::negative) v = u;
-    const Nearest n = nearest(p, v);
-    if (n.owners.size() == 1) return v;
+    const Nearest n = nearest_rational(p);
+    if (n.owners.size() == 1) return n.owners[0];
   }
   throw std::logic_error("oracle: no point with a unique nearest site on a boundary piece of edge " + std::to_string(edge));
 }

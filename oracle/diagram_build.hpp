@@ -37,7 +37,8 @@ class Builder {
   int register_node(Node::Kind kind, const LocatedPoint& p, const std::vector<int>& owners);
   // `equal`: sites known (by construction of p) to be at v's distance, not compared again.
   Nearest nearest(const LocatedPoint& p, int v, const std::vector<int>& equal = {}) const;
-  Nearest nearest_rational(const LocatedPoint& p) const;  // any point; scans for a nearest site first
+  // The nearest sites of any point (a nearest site is found by exact comparisons first).
+  Nearest nearest_rational(const LocatedPoint& p) const;
   // one-dimensional ties (diagram_ties.cpp): exact checks, throwing std::domain_error by name
   void decline_if_tied_on_edge(int v, int w, int edge) const;
   void decline_if_tied_on_line(int a, int b, int c, const Conic& G) const;

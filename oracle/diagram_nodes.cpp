@@ -87,12 +87,7 @@ int Builder::register_node(Node::Kind kind, const LocatedPoint& p, const std::ve
 void Builder::add_corners() {
   for (const Point2<Rational>& c : d_.sheared.domain) {
     const LocatedPoint p = LocatedPoint::rational(c.x, c.y);
-    // The owners of a corner: its nearest sites (the site with the least certified upper bound
-    // is among them unless another is strictly closer, which nearest() reports).
-    int v = 0;
-    for (int u = 1; u < static_cast<int>(distance_.size()); ++u)
-      if (p.sign_of(bisector_conic(d_.sheared, u, v)) == Sign::negative) v = u;
-    register_node(Node::Kind::corner, p, nearest(p, v).owners);
+    register_node(Node::Kind::corner, p, nearest_rational(p).owners);  // its nearest sites
   }
 }
 
