@@ -1,5 +1,7 @@
 #include "refiners/star/star_refiner.hpp"
 
+#include "refiners/star/quasi_cocircular.hpp"
+
 #include "numbers/rational.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/length_compare.hpp"
@@ -10,7 +12,6 @@
 #include <cmath>
 #include <deque>
 #include <limits>
-#include <map>
 #include <random>
 
 namespace anisocert::refiners::star {
@@ -567,6 +568,16 @@ class Refiner {
     int a = -1, b = -1;  // the triangle (v, a, b)
   };
 
+  // LU's total distortion γ(τ) is the largest distortion between two points of Ω in one of τ's
+  // circumballs; it is estimated from below on samples of the star's own circumball: the three
+  // vertices and, when it lies in Ω, the circumcentre (the other vertices' stars sample theirs).
+  bool distorted(const Sym2<double>& Mv, const Sym2<double>& Ma, const Sym2<double>& Mb, const Circle& c, double g2) const {
+    if (tau2(Mv, Ma) >= g2 || tau2(Mv, Mb) >= g2 || tau2(Ma, Mb) >= g2) return true;
+    if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !inside_polygon(domain_, c.cx, c.cy)) return false;
+    const Sym2<double> Mc = field_.at(c.cx, c.cy);
+    return tau2(Mc, Mv) >= g2 || tau2(Mc, Ma) >= g2 || tau2(Mc, Mb) >= g2;
+  }
+
   Action check(int v) const {
     const Star& s = stars_[v];
     const Sym2<double>& M = metrics_[v];
@@ -579,9 +590,8 @@ class Refiner {
     };
     for (const auto& t : s.triangles) {
       const int a = t[0], b = t[1];
-      if (tau2(M, metrics_[a]) >= g2 || tau2(M, metrics_[b]) >= g2 || tau2(metrics_[a], metrics_[b]) >= g2)
-        consider(distortion, a, b);
       const Circle c = circumcircle(sites_[v], sites_[a], sites_[b], M);
+      if (distorted(M, metrics_[a], metrics_[b], c, g2)) consider(distortion, a, b);
       const double shortest = std::min({qform(M, sites_[a].x - sites_[v].x, sites_[a].y - sites_[v].y),
                                         qform(M, sites_[b].x - sites_[v].x, sites_[b].y - sites_[v].y),
                                         qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y)});
@@ -629,67 +639,40 @@ class Refiner {
     return false;
   }
 
-  // Refine(τ) in M_v: a random point of the picking region B_{M_v}(c, δr), then Insert_or_snap.
-  // LU Definition 3.6 in 2D, witnessed inside {N : γ(M, N) ≤ √γ₀} (so that γ(N, N′) ≤ γ₀ holds
-  // too): four points are γ₀-cocircular when the in-circle determinant, linear in the metric,
-  // f(N) = ⟨C, N⟩ with C = Σ cofactorᵢ vᵢvᵢᵀ, takes both signs there. With N = M^½ T M^½ and
-  // T between I/γ₀ and γ₀ I, its extremes come from the eigenvalues of M C.
-  bool cocircular_within(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c,
-                         const Point2<double>& d, const Sym2<double>& M) const {
-    const double v[3][2] = {{a.x - d.x, a.y - d.y}, {b.x - d.x, b.y - d.y}, {c.x - d.x, c.y - d.y}};
-    const double cof[3] = {v[1][0] * v[2][1] - v[1][1] * v[2][0], v[2][0] * v[0][1] - v[2][1] * v[0][0],
-                           v[0][0] * v[1][1] - v[0][1] * v[1][0]};
-    double c11 = 0, c12 = 0, c22 = 0;
-    for (int i = 0; i < 3; ++i) c11 += cof[i] * v[i][0] * v[i][0], c12 += cof[i] * v[i][0] * v[i][1], c22 += cof[i] * v[i][1] * v[i][1];
-    const double p11 = M.m11 * c11 + M.m12 * c12, p12 = M.m11 * c12 + M.m12 * c22;  // M C
-    const double p21 = M.m12 * c11 + M.m22 * c12, p22 = M.m12 * c12 + M.m22 * c22;
-    const double tr = p11 + p22, det = p11 * p22 - p12 * p21, disc = std::sqrt(std::max(0.0, tr * tr / 4 - det));
-    const double l1 = tr / 2 + disc, l2 = tr / 2 - disc, g = p_.gamma0;
-    auto extreme = [&](bool high) {
-      double f = 0;
-      for (double l : {l1, l2}) f += l * ((l > 0) == high ? g : 1 / g);
-      return f;
-    };
-    return extreme(false) < 0 && extreme(true) > 0;
-  }
-
   // Pick_valid (LU §4.1): a point of the picking region is discarded while it would make a new
   // triangle xpq with γ(xpq) < γ₀ that is γ₀-cocircular with a site s, with radius < β r_τ and
-  // radius-edge ratio < ρ₀. The new triangles are x's prospective fan in M_x. After
-  // `pick_attempts` discarded points the last one is kept, and counted (0: no test).
-  bool forbidden(const Point2<double>& x, double r_tau) {
-    const Sym2<double> Mx = field_.at(x.x, x.y);
-    const double R2 = 4 * r_tau * r_tau;  // the new fan lies within about (1 + δ) r_τ of x
-    const auto [ex, ey] = ellipse_extent(Mx, R2);
-    std::vector<int>& cand = pick_cand_;
-    cand = sites_in(x.x - ex, x.x + ex, x.y - ey, x.y + ey);
+  // radius-edge ratio < ρ₀ (both measured on xpq, which bounds LU Definition 3.9's minimum over
+  // the four triples from above: every configuration found here is one LU forbids). The new
+  // triangles are x's prospective fan in M_x, wrapped counter-clockwise from x's nearest site and
+  // tested as they are found, so a forbidden point costs only the triangles before the first hit.
+  // `cand`: the sites within about 2 r_τ of the picking region, where x's new fan lies.
+  bool forbidden(const Point2<double>& x, double r_tau, const std::vector<int>& cand) const {
     if (cand.size() < 3) return false;
+    const Sym2<double> M = field_.at(x.x, x.y);
+    auto d2 = [&](const Point2<double>& p, const Point2<double>& q) { return qform(M, p.x - q.x, p.y - q.y); };
     int first = cand[0];
     for (int c : cand)
-      if (qform(Mx, sites_[c].x - x.x, sites_[c].y - x.y) < qform(Mx, sites_[first].x - x.x, sites_[first].y - x.y)) first = c;
-    std::vector<int>& ring = pick_ring_;
-    ring.assign(1, first);
-    for (std::size_t guard = 0; guard <= cand.size(); ++guard) {
-      const int w = wrap(x, Mx, ring.back(), cand, true);
-      if (w < 0 || w == first) break;
-      ring.push_back(w);
-    }
+      if (d2(sites_[c], x) < d2(sites_[first], x)) first = c;
     const double g2 = p_.gamma0 * p_.gamma0, beta_r2 = p_.beta * p_.beta * r_tau * r_tau, rho2 = p_.rho0 * p_.rho0;
-    for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
-      const int a = ring[i], b = ring[i + 1];
-      const Sym2<double>& M = Mx;
-      if (tau2(Mx, metrics_[a]) >= g2 || tau2(Mx, metrics_[b]) >= g2 || tau2(metrics_[a], metrics_[b]) >= g2) continue;
-      const Circle c = circumcircle(x, sites_[a], sites_[b], M);
-      if (!(c.r2 < beta_r2)) continue;
-      for (int sx : cand) {
-        if (sx == a || sx == b) continue;
-        const Point2<double>& ps = sites_[sx];
-        double shortest = std::min({qform(M, sites_[a].x - x.x, sites_[a].y - x.y), qform(M, sites_[b].x - x.x, sites_[b].y - x.y),
-                                    qform(M, ps.x - x.x, ps.y - x.y), qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y),
-                                    qform(M, ps.x - sites_[a].x, ps.y - sites_[a].y), qform(M, ps.x - sites_[b].x, ps.y - sites_[b].y)});
-        if (!(c.r2 < rho2 * shortest)) continue;
-        if (cocircular_within(x, sites_[a], sites_[b], ps, M)) return true;
+    int a = first;
+    for (std::size_t guard = 0; guard <= cand.size(); ++guard) {
+      const int b = wrap(x, M, a, cand, true);
+      if (b < 0) return false;
+      const Point2<double>&pa = sites_[a], &pb = sites_[b];
+      if (tau2(M, metrics_[a]) < g2 && tau2(M, metrics_[b]) < g2 && tau2(metrics_[a], metrics_[b]) < g2) {
+        const Circle c = circumcircle(x, pa, pb, M);
+        const double edges = std::min({d2(pa, x), d2(pb, x), d2(pa, pb)});
+        if (c.r2 < beta_r2)
+          for (int sx : cand) {
+            if (sx == a || sx == b) continue;
+            const Point2<double>& ps = sites_[sx];
+            if (c.r2 < rho2 * std::min({edges, d2(ps, x), d2(ps, pa), d2(ps, pb)}) &&
+                quasi_cocircular(x, pa, pb, ps, M, p_.gamma0))
+              return true;
+          }
       }
+      if (b == first) return false;
+      a = b;
     }
     return false;
   }
@@ -702,18 +685,23 @@ class Refiner {
     std::uniform_real_distribution<double> unit(-1, 1);
     const double s = p_.delta * std::sqrt(c.r2);
     Point2<double> x;
+    if (p_.pick_attempts > 0) {
+      const auto [ex, ey] = ellipse_extent(M, std::pow(2 + p_.delta, 2) * c.r2);
+      pick_cand_ = sites_in(c.cx - ex, c.cx + ex, c.cy - ey, c.cy + ey);
+    }
+    // Up to 1 + pick_attempts points are drawn; every forbidden one but the last is discarded.
     for (int attempt = 0;; ++attempt) {
       double ux, uy;
       do ux = unit(rng_), uy = unit(rng_);
       while (ux * ux + uy * uy >= 1);
       const double zy = s * uy / l22, zx = (s * ux - l21 * zy) / l11;
       x = {c.cx + zx, c.cy + zy};
-      if (p_.pick_attempts == 0 || !std::isfinite(x.x) || !std::isfinite(x.y) || !forbidden(x, std::sqrt(c.r2))) break;
-      ++picks_rejected_;
-      if (attempt + 1 == p_.pick_attempts) {
+      if (p_.pick_attempts == 0 || !std::isfinite(x.x) || !std::isfinite(x.y) || !forbidden(x, std::sqrt(c.r2), pick_cand_)) break;
+      if (attempt == p_.pick_attempts) {
         ++picks_exhausted_;
         break;
       }
+      ++picks_rejected_;
     }
     if (!std::isfinite(x.x) || !std::isfinite(x.y)) {  // a nearly flat triangle: its centroid instead
       x = {(sites_[v].x + sites_[act.a].x + sites_[act.b].x) / 3, (sites_[v].y + sites_[act.a].y + sites_[act.b].y) / 3};
@@ -763,15 +751,17 @@ class Refiner {
 
   // --- merge ----------------------------------------------------------------------------------
   void merge(RefineResult& r) const {
-    std::map<std::array<int, 3>, int> seen;  // rotated to the least index first
+    std::vector<std::array<int, 3>> seen;  // every star triangle, rotated to the least index first
     for (int v = 0; v < static_cast<int>(stars_.size()); ++v)
       for (const auto& t : stars_[v].triangles) {
         std::array<int, 3> k{v, t[0], t[1]};
         std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());
-        ++seen[k];
+        seen.push_back(k);
       }
-    for (const auto& [t, n] : seen) {
-      if (n == 3) r.triangles.push_back(t);
+    std::sort(seen.begin(), seen.end());
+    for (std::size_t i = 0, j; i < seen.size(); i = j) {
+      for (j = i + 1; j < seen.size() && seen[j] == seen[i];) ++j;
+      if (j - i == 3) r.triangles.push_back(seen[i]);
       else ++r.inconsistent_triangles;
     }
     r.consistent = r.inconsistent_triangles == 0;
@@ -804,7 +794,7 @@ class Refiner {
   std::vector<int> cand_, ring_, zone_, before_;
   std::vector<char> in_;
   std::vector<std::array<int, 2>> fan_;
-  std::vector<int> pick_cand_, pick_ring_;
+  std::vector<int> pick_cand_;
   std::size_t picks_rejected_ = 0, picks_exhausted_ = 0;
   std::deque<int> segment_queue_, site_queue_;
   std::array<std::size_t, 6> counts_{};

@@ -28,7 +28,7 @@ struct RefineParameters {
   double rho0 = 3, gamma0 = 1.5, delta = 0.1, beta = 3, size = 1;
   // Pick_valid: how many picked points may be discarded as γ₀-cocircular before one is kept
   // (0 turns the test off). The test is only selective for γ₀ near 1, as LU Theorem 4.5 assumes.
-  int pick_attempts = 4;
+  int pick_attempts = 3;
   std::size_t max_vertices = 200000;
   double max_seconds = 120;
   unsigned seed = 1;
