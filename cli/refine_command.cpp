@@ -93,7 +93,12 @@ int run_refine(const RefineOptions& o) {
   auto progress = [&](const std::string& line) {
     if (!o.quiet) std::cerr << "anisocert: " << line << "\n";
   };
-  const RefineResult r = refiners::star::refine_star(domain, field, o.p, progress);
+  RefineResult r;
+  try {
+    r = refiners::star::refine_star(domain, field, o.p, progress);
+  } catch (const std::invalid_argument& e) {  // a domain the refiner cannot split exactly
+    throw UsageError(o.domain + ": " + e.what());
+  }
   const io::MeshData m = mesh_data(r);
   if (!o.output.empty()) write_file_atomically(o.output, io::mesh_json(m));
   if (!o.svg.empty()) write_file_atomically(o.svg, io::mesh_svg(m, "star refiner, field " + o.field + ": " + std::to_string(r.sites.size()) + " vertices"));

@@ -1,5 +1,6 @@
 #include "refiners/star/star_refiner.hpp"
 
+#include "refiners/star/exact_split.hpp"
 #include "refiners/star/quasi_cocircular.hpp"
 
 #include "numbers/rational.hpp"
@@ -8,11 +9,13 @@
 #include "predicates/orientation.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <deque>
 #include <limits>
 #include <random>
+#include <stdexcept>
 
 namespace anisocert::refiners::star {
 
@@ -34,6 +37,12 @@ const char* rule_name(int rule) {
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
+
+// The shortest decimal that reads back as x.
+std::string decimal(double x) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+}
 
 double qform(const Sym2<double>& M, double dx, double dy) { return dx * (M.m11 * dx + M.m12 * dy) + dy * (M.m12 * dx + M.m22 * dy); }
 
@@ -171,6 +180,35 @@ class Refiner {
         for (int s : sites_cells_[cell(i, j)])
           if (sites_[s].x >= xa && sites_[s].x <= xb && sites_[s].y >= ya && sites_[s].y <= yb) out.push_back(s);
     return out;
+  }
+
+  // The squared M-distance from q to the M-nearest site (∞ when there is none), by rings of grid
+  // cells around q's: a site outside the ring at distance k is Euclidean-farther than the gap g
+  // from q to that ring's border, so M-farther than λ_min(M) g², and the search stops there.
+  double nearest_site2(const Point2<double>& q, const Sym2<double>& M) const {
+    const double half_trace = (M.m11 + M.m22) / 2, det = M.m11 * M.m22 - M.m12 * M.m12;
+    const double lmin = half_trace - std::sqrt(std::max(0.0, half_trace * half_trace - det));
+    const int ci = cell_x(q.x), cj = cell_y(q.y);
+    double best = inf;
+    auto visit = [&](int i, int j) {
+      if (i < 0 || j < 0 || i >= g_ || j >= g_) return;
+      for (int s : sites_cells_[cell(i, j)]) best = std::min(best, qform(M, sites_[s].x - q.x, sites_[s].y - q.y));
+    };
+    for (int k = 0;; ++k) {
+      for (int i = ci - k; i <= ci + k; ++i) {
+        visit(i, cj - k);
+        if (k > 0) visit(i, cj + k);
+      }
+      for (int j = cj - k + 1; j < cj + k; ++j) {
+        visit(ci - k, j);
+        visit(ci + k, j);
+      }
+      // Sides with no cells beyond them hide no site.
+      const double gap = std::min({ci - k > 0 ? q.x - (x0_ + (ci - k) * cw_) : inf, ci + k < g_ - 1 ? x0_ + (ci + k + 1) * cw_ - q.x : inf,
+                                   cj - k > 0 ? q.y - (y0_ + (cj - k) * ch_) : inf, cj + k < g_ - 1 ? y0_ + (cj + k + 1) * ch_ - q.y : inf});
+      if (gap == inf || best <= lmin * gap * gap * (1 - 1e-12)) break;
+    }
+    return best;
   }
 
   // A grid of about two sites per cell, rebuilt when the sites outgrow it: every index (sites,
@@ -410,8 +448,7 @@ class Refiner {
     double nearest = inf, initial_reach2 = 0;
     const Sym2<double> Mq = field_.at(q.x, q.y);
     if (update) {
-      const auto [ex, ey] = ellipse_extent(Mq, 9);
-      for (int s : sites_in(q.x - ex, q.x + ex, q.y - ey, q.y + ey)) nearest = std::min(nearest, qform(Mq, sites_[s].x - q.x, sites_[s].y - q.y));
+      nearest = nearest_site2(q, Mq);
       trace_.push_back({rule, q.x, q.y, std::sqrt(nearest), star, radius});
       if (std::isfinite(nearest)) initial_reach2 = 4 * nearest;
       ++counts_[rule];
@@ -431,6 +468,8 @@ class Refiner {
     // Stars whose conflict zone holds q change (LU Lemma 3.5); so may their neighbours' consistency.
     zone_ = conflict_cells_[cell(cell_x(q.x), cell_y(q.y))];  // a copy: updates edit the index
     for (int v : zone_) {
+      const double* z = stars_[v].zone;  // the box the index filed v under, not just its cells
+      if (q.x < z[0] || q.x > z[1] || q.y < z[2] || q.y > z[3]) continue;
       before_ = stars_[v].neighbours;
       const int change = update_star(v, k);
       if (change == 0) continue;
@@ -531,14 +570,16 @@ class Refiner {
 
   void split(int s) {
     const auto [a, b] = segments_[s];
-    const Point2<double> m{(sites_[a].x + sites_[b].x) / 2, (sites_[a].y + sites_[b].y) / 2};  // exactly on ab
-    if ((m.x == sites_[a].x && m.y == sites_[a].y) || (m.x == sites_[b].x && m.y == sites_[b].y)) {
-      // Endless encroachment at a corner: LU Lemma 4.1 needs boundary angles > 90° in the metric.
-      stalled_ = "a boundary segment near (" + std::to_string(m.x) + ", " + std::to_string(m.y) +
-                 ") was split down to the resolution of doubles: encroachment does not end there (LU Lemma 4.1 "
+    const std::optional<Point2<double>> exact = exact_midpoint(sites_[a], sites_[b]);
+    if (!exact) {
+      // The domain allows at least `min_halvings` exact splits of every edge (refine_star), so
+      // this is endless encroachment at a corner: LU Lemma 4.1 needs boundary angles > 90° in the metric.
+      stalled_ = "a boundary segment near (" + std::to_string(sites_[a].x) + ", " + std::to_string(sites_[a].y) +
+                 ") was split until its midpoint is no longer a double: encroachment does not end there (LU Lemma 4.1 "
                  "needs every boundary angle > 90° in the metric)";
       return;
     }
+    const Point2<double> m = *exact;
     const int k = static_cast<int>(sites_.size());
     segments_[s] = {a, k};
     segments_.push_back({k, b});
@@ -686,8 +727,10 @@ class Refiner {
     const double s = p_.delta * std::sqrt(c.r2);
     Point2<double> x;
     if (p_.pick_attempts > 0) {
-      const auto [ex, ey] = ellipse_extent(M, std::pow(2 + p_.delta, 2) * c.r2);
+      const double reach2 = std::pow(2 + p_.delta, 2) * c.r2;
+      const auto [ex, ey] = ellipse_extent(M, reach2);
       pick_cand_ = sites_in(c.cx - ex, c.cx + ex, c.cy - ey, c.cy + ey);
+      std::erase_if(pick_cand_, [&](int w) { return qform(M, sites_[w].x - c.cx, sites_[w].y - c.cy) > reach2; });
     }
     // Up to 1 + pick_attempts points are drawn; every forbidden one but the last is discarded.
     for (int attempt = 0;; ++attempt) {
@@ -744,6 +787,12 @@ class Refiner {
         if (d < closest) closest = d, crossed = static_cast<int>(s2);
       }
       split(crossed >= 0 ? crossed : nearest_segment);
+      return;
+    }
+    if (!sites_in(x.x, x.x, x.y, x.y).empty()) {
+      // The picking region is below the resolution of doubles there: stop rather than duplicate.
+      stalled_ = "refining a triangle at site " + std::to_string(v) + " near (" + decimal(x.x) + ", " + decimal(x.y) +
+                 ") picked an existing site: the mesh there is finer than doubles resolve (" + rule_name(act.rule) + ")";
       return;
     }
     insert(x, act.rule, true, v, std::sqrt(c.r2));
@@ -806,6 +855,17 @@ class Refiner {
 
 RefineResult refine_star(const std::vector<Point2<double>>& domain, const MetricField& field, const RefineParameters& p,
                          const std::function<void(const std::string&)>& progress) {
+  for (std::size_t i = 0; i < domain.size(); ++i) {
+    const Point2<double>&a = domain[i], &b = domain[(i + 1) % domain.size()];
+    const int k = exact_halvings(a, b);
+    if (k < min_halvings)
+      throw std::invalid_argument(
+          "domain edge " + std::to_string(i) + " from (" + decimal(a.x) + ", " + decimal(a.y) + ") to (" +
+          decimal(b.x) + ", " + decimal(b.y) + ") can be halved exactly in doubles only " + std::to_string(k) +
+          " times (" + std::to_string(min_halvings) +
+          " needed: split points must lie exactly on the boundary); give the domain coordinates with fewer binary digits, "
+          "e.g. 0.375 or 13/32 rather than 0.4");
+  }
   return Refiner(domain, field, p, progress).run();
 }
 

@@ -1,0 +1,55 @@
+#include "refiners/star/exact_split.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+
+namespace anisocert::refiners::star {
+
+namespace {
+
+// s + e = a + b exactly (Knuth's TwoSum).
+std::pair<double, double> two_sum(double a, double b) {
+  const double s = a + b, bb = s - a;
+  return {s, (a - (s - bb)) + (b - bb)};
+}
+
+// The exponent t of the largest power of two 2ᵗ dividing x (x ≠ 0 and finite).
+int trailing_exponent(double x) {
+  int e;
+  const double m = std::frexp(std::abs(x), &e);  // x = m 2ᵉ, m ∈ [1/2, 1)
+  const auto mantissa = static_cast<std::uint64_t>(std::ldexp(m, 53));
+  return e - 53 + std::countr_zero(mantissa);
+}
+
+// The points u + k (w − u)/2ʲ are multiples of 2^min(t_u, t_d − j) (t_d for the exact difference)
+// of magnitude < 2ᴱ; all are doubles when E − min(t_u, t_d − j) ≤ 53.
+int halvings(double u, double w) {
+  if (u == w) return INT_MAX;
+  const auto [hi, lo] = two_sum(w, -u);
+  const int td = trailing_exponent(lo != 0 ? lo : hi);
+  const int E = std::ilogb(std::max(std::abs(u), std::abs(w))) + 1;
+  const int tu = u != 0 ? trailing_exponent(u) : INT_MAX;
+  if (tu != INT_MAX && E - tu > 53) return 0;
+  return std::max(0, 53 - E + td);
+}
+
+}  // namespace
+
+int exact_halvings(const predicates::Point2<double>& a, const predicates::Point2<double>& b) {
+  return std::min(halvings(a.x, b.x), halvings(a.y, b.y));
+}
+
+std::optional<predicates::Point2<double>> exact_midpoint(const predicates::Point2<double>& a,
+                                                         const predicates::Point2<double>& b) {
+  const auto [sx, ex] = two_sum(a.x, b.x);
+  const auto [sy, ey] = two_sum(a.y, b.y);
+  const predicates::Point2<double> m{sx / 2, sy / 2};
+  // The sum is exact and halving it loses nothing (no underflow into subnormals).
+  if (ex != 0 || ey != 0 || m.x * 2 != sx || m.y * 2 != sy) return std::nullopt;
+  return m;
+}
+
+}  // namespace anisocert::refiners::star

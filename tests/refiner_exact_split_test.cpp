@@ -1,0 +1,89 @@
+// Exact boundary splitting (refiners/star/exact_split): the halving count is a true lower bound,
+// checked point by point in rational arithmetic (every point a + k(b − a)/2ʲ a double), and an
+// exact midpoint lies exactly on the segment.
+#include "numbers/rational.hpp"
+#include "refiners/star/exact_split.hpp"
+
+#include <gtest/gtest.h>
+
+#include <climits>
+#include <cmath>
+#include <random>
+
+namespace {
+
+using anisocert::Rational;
+using anisocert::rational_from_double;
+using anisocert::predicates::Point2;
+using anisocert::refiners::star::exact_halvings;
+using anisocert::refiners::star::exact_midpoint;
+
+bool is_double(const Rational& q) { return rational_from_double(q.convert_to<double>()) == q; }
+
+// Every point a + k(b − a)/2ʲ, 0 < k < 2ʲ, is a double (both coordinates).
+bool level_is_exact(const Point2<double>& a, const Point2<double>& b, int j) {
+  const Rational ax = rational_from_double(a.x), ay = rational_from_double(a.y);
+  const Rational dx = rational_from_double(b.x) - ax, dy = rational_from_double(b.y) - ay;
+  const Rational step = Rational(1) / Rational(1L << j);
+  for (long k = 1; k < (1L << j); k += 2)
+    if (!is_double(ax + dx * step * k) || !is_double(ay + dy * step * k)) return false;
+  return true;
+}
+
+TEST(ExactSplit, HalvingCountIsALowerBound) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-2, 2);
+  std::uniform_int_distribution<int> bits(1, 60);
+  int limited = 0;
+  for (int n = 0; n < 400; ++n) {
+    // Coordinates with a random number of binary digits: from dyadic with few bits to full doubles.
+    auto coordinate = [&] {
+      const int b = bits(rng);
+      return b > 52 ? u(rng) : std::ldexp(std::round(std::ldexp(u(rng), b)), -b);
+    };
+    const Point2<double> a{coordinate(), coordinate()}, b{coordinate(), coordinate()};
+    const int k = exact_halvings(a, b);
+    ASSERT_GE(k, 0);
+    if (k < 10) ++limited;
+    for (int j = 1; j <= std::min(k, 10); ++j) EXPECT_TRUE(level_is_exact(a, b, j)) << "case " << n << " level " << j;
+  }
+  EXPECT_GT(limited, 20);  // full-precision coordinates do limit it
+}
+
+TEST(ExactSplit, ClosedForms) {
+  // The unit square's edges: multiples of 2⁻ʲ in [0, 1] are doubles for j ≤ 52 (hand count:
+  // E = 1, t_d = 0, so 53 − 1 + 0).
+  EXPECT_EQ(exact_halvings({0, 0}, {1, 0}), 52);
+  // 0.375 = 3/8 and 1: the grid 2⁻³ at depth 0, multiples of 5/8 · 2⁻ʲ: 53 − 1 − 3 = 49.
+  EXPECT_EQ(exact_halvings({1, 0.375}, {0.375, 1}), 49);
+  // 0.4 (an odd multiple of 2⁻⁵⁴) and 1: no double point with y ∈ [1/2, 1), so not even once.
+  EXPECT_EQ(exact_halvings({1, 0.4}, {0.4, 1}), 0);
+  EXPECT_FALSE(exact_midpoint({1, 0.4}, {0.4, 1}));
+  EXPECT_FALSE(level_is_exact({1, 0.4}, {0.4, 1}, 1));
+}
+
+TEST(ExactSplit, MidpointIsExactlyOnTheSegmentOrRefused) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(-2, 2);
+  int refused = 0, given = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const int b = n % 2 ? 60 : 20;
+    auto coordinate = [&] { return b > 52 ? u(rng) : std::ldexp(std::round(std::ldexp(u(rng), b)), -b); };
+    const Point2<double> a{coordinate(), coordinate()}, c{coordinate(), coordinate()};
+    const Rational mx = (rational_from_double(a.x) + rational_from_double(c.x)) / 2;
+    const Rational my = (rational_from_double(a.y) + rational_from_double(c.y)) / 2;
+    const auto m = exact_midpoint(a, c);
+    if (m) {
+      ++given;
+      EXPECT_EQ(rational_from_double(m->x), mx);
+      EXPECT_EQ(rational_from_double(m->y), my);
+    } else {
+      ++refused;
+      EXPECT_FALSE(is_double(mx) && is_double(my)) << "case " << n << ": an exact midpoint was refused";
+    }
+  }
+  EXPECT_GT(given, 500);
+  EXPECT_GT(refused, 80);
+}
+
+}  // namespace
