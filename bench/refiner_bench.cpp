@@ -3,6 +3,7 @@
 // α = 9), at sizes around 10k and 100k vertices (the field parameter sets the size; the count is
 // reported). Default refinement parameters (ρ₀ = 3, γ₀ = 1.5, δ = 0.1, Pick_valid on).
 // Run: build/bin/refiner_bench (figures in docs/bench.md).
+#include "predicates/filtered_sign.hpp"
 #include "refiners/star/star_refiner.hpp"
 
 #include <benchmark/benchmark.h>
@@ -18,7 +19,13 @@ void refine(benchmark::State& state, const char* field, const char* param, doubl
   RefineParameters p;
   p.max_vertices = 400000, p.max_seconds = 600;
   RefineResult r;
+  const auto before = anisocert::predicates::filter_stats();
   for (auto _ : state) r = refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, f, p);
+  // Predicate calls the static filter could not decide (interval stage), and those the interval
+  // could not either (exact rationals), per vertex.
+  const auto after = anisocert::predicates::filter_stats();
+  state.counters["interval_per_vertex"] = static_cast<double>(after.interval_stage - before.interval_stage) / r.sites.size();
+  state.counters["exact_per_vertex"] = static_cast<double>(after.exact_stage - before.exact_stage) / r.sites.size();
   state.counters["vertices"] = static_cast<double>(r.sites.size());
   state.counters["vertices_per_s"] = r.sites.size() / r.seconds;
   state.counters["consistent"] = r.consistent;

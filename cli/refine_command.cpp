@@ -39,7 +39,9 @@ std::string refine_summary(const RefineResult& r, const RefineParameters& p) {
     o << " (encroachment there may not end)";
   }
   o << "\n  Pick_valid: " << r.picks_rejected << " picked points discarded as γ₀-cocircular, " << r.picks_exhausted
-    << " refinements kept a point after " << p.pick_attempts << " attempts";
+    << " of " << r.refinements << " refinements kept a forbidden point after " << p.pick_attempts << " discards";
+  if (p.pick_attempts > 0 && 2 * r.picks_exhausted > r.refinements)
+    o << " (most: at this γ₀ the forbidden set covers most of each picking region; LU Lemma 3.15 needs γ₀ close to 1)";
   o << "\n  insertions by rule:";
   for (int k = 1; k <= 5; ++k) o << " " << refiners::star::rule_name(k) << " " << r.rule_counts[k] << (k < 5 ? "," : "\n");
   o << "  parameters: ρ₀ = " << p.rho0 << ", γ₀ = " << p.gamma0 << ", δ = " << p.delta << ", β = " << p.beta << ", size = " << p.size

@@ -159,7 +159,7 @@ class Refiner {
     }
     r.seconds = elapsed();
     r.rule_counts = counts_;
-    r.picks_rejected = picks_rejected_, r.picks_exhausted = picks_exhausted_;
+    r.picks_rejected = picks_rejected_, r.picks_exhausted = picks_exhausted_, r.refinements = refinements_;
     r.last_rule = last_rule_;
     r.trace = std::move(trace_);
     return r;
@@ -719,6 +719,7 @@ class Refiner {
   }
 
   void refine(int v, const Action& act) {
+    ++refinements_;
     const Sym2<double>& M = metrics_[v];
     const Circle c = circumcircle(sites_[v], sites_[act.a], sites_[act.b], M);
     // M = LLᵀ; a point of the M-ball: c + L⁻ᵀ (δ r u) with |u| < 1.
@@ -844,7 +845,7 @@ class Refiner {
   std::vector<char> in_;
   std::vector<std::array<int, 2>> fan_;
   std::vector<int> pick_cand_;
-  std::size_t picks_rejected_ = 0, picks_exhausted_ = 0;
+  std::size_t picks_rejected_ = 0, picks_exhausted_ = 0, refinements_ = 0;
   std::deque<int> segment_queue_, site_queue_;
   std::array<std::size_t, 6> counts_{};
   int last_rule_ = 0;

@@ -63,8 +63,9 @@ struct RefineResult {
   // where the angle in the corner's metric is not (e₁ᵀ M e₂ ≥ 0 for the two edge directions).
   std::vector<int> acute_corners;
   std::array<std::size_t, 6> rule_counts{};
-  // Pick_valid: points discarded as γ₀-cocircular, and refinements where every attempt was.
+  // Pick_valid: points discarded as γ₀-cocircular, and refinements that kept a forbidden point.
   std::size_t picks_rejected = 0, picks_exhausted = 0;
+  std::size_t refinements = 0;  // calls of Refine(τ) (rules 2–5), whatever they inserted or split
   double seconds = 0;
   std::vector<Insertion> trace;
 };
