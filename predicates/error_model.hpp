@@ -42,6 +42,15 @@ class ErrorModel {
     e.count_ = 1;
     return e;
   }
+  // A leaf given as the rounded difference c = fl(x − o) of two doubles, standing for the exact
+  // x − o: |c| <= max_g, so |x − o| <= max_g/(1 − u) and |c − (x − o)| <= u |x − o|; 1 + 2u and
+  // 2u bound both. (A difference that underflows is exact, by Hauser's theorem.)
+  static constexpr ErrorModel rounded_leaf(int group) {
+    ErrorModel e = leaf(group);
+    e.terms_[0].mag = 1 + 2 * u;
+    e.terms_[0].err = 2 * u;
+    return e;
+  }
 
   constexpr int size() const { return count_; }
   constexpr const Monomial& operator[](int k) const { return terms_[k]; }

@@ -17,6 +17,7 @@ struct InCircleKernel {
   static constexpr std::array<int, arity> groups{0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1};
   static constexpr std::array<const char*, arity> inputs{"a.x", "a.y", "b.x", "b.y",   "c.x",  "c.y",
                                                          "d.x", "d.y", "M.m11", "M.m12", "M.m22"};
+  static constexpr std::array<int, arity> origin{6, 7, 6, 7, 6, 7, 6, 7, -1, -1, -1};  // differences from d
   template <class T>
   static constexpr T eval(const std::array<T, arity>& x) {
     const T adx = x[0] - x[6], ady = x[1] - x[7], bdx = x[2] - x[6], bdy = x[3] - x[7], cdx = x[4] - x[6],

@@ -13,6 +13,7 @@ struct OrientationKernel {
   static constexpr std::size_t arity = 6;
   static constexpr std::array<int, arity> groups{0, 0, 0, 0, 0, 0};
   static constexpr std::array<const char*, arity> inputs{"a.x", "a.y", "b.x", "b.y", "c.x", "c.y"};
+  static constexpr std::array<int, arity> origin{0, 1, 0, 1, 0, 1};  // differences from a
   template <class T>
   static constexpr T eval(const std::array<T, arity>& x) {
     return (x[2] - x[0]) * (x[5] - x[1]) - (x[3] - x[1]) * (x[4] - x[0]);

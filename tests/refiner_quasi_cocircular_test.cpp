@@ -113,8 +113,9 @@ TEST(QuasiCocircular, ShrinksToExactCocircularityAsGammaTendsToOne) {
   std::mt19937 rng(7);
   for (int n = 0; n < 500; ++n) {
     const Configuration k = random_configuration(rng);
-    if (anisocert::predicates::incircle(k.a, k.b, k.c, k.d, k.M) != Sign::zero)
+    if (anisocert::predicates::incircle(k.a, k.b, k.c, k.d, k.M) != Sign::zero) {
       EXPECT_FALSE(quasi_cocircular(k.a, k.b, k.c, k.d, k.M, 1)) << "case " << n;
+    }
   }
   // The unit square's corners are cocircular for M = I; for M = diag(1, 4) (γ(I, M) = 2 > √1.2)
   // they are not, but any γ₀ > 1 makes them quasi-cocircular for M = I.
