@@ -62,6 +62,11 @@ concept Translatable = requires { K::origin; };
 template <class K>
   requires Translatable<K>
 inline constexpr ErrorModel translated_error_model = [] {
+  for (std::size_t i = 0; i < K::arity; ++i) {
+    const int o = K::origin[i];
+    // An origin is its own origin, and lies in the group of the inputs measured from it.
+    if (o >= 0 && (K::origin[o] != o || K::groups[o] != K::groups[i])) throw "Translatable: malformed origin";
+  }
   std::array<ErrorModel, K::arity> leaves{};
   for (std::size_t i = 0; i < K::arity; ++i) {
     const int o = K::origin[i];

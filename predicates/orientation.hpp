@@ -24,7 +24,10 @@ template <class S>
 Sign orientation(const Point2<S>& a, const Point2<S>& b, const Point2<S>& c) {
   // Points on one axis-parallel line (boundary sites of a box) are collinear: exact, and it spares
   // the exact fall-back that the filter cannot avoid for a zero.
-  if ((a.x == b.x && b.x == c.x) || (a.y == b.y && b.y == c.y)) return Sign::zero;
+  if ((a.x == b.x && b.x == c.x) || (a.y == b.y && b.y == c.y)) {
+    require_finite<S>("orientation", {{"a.x", a.x}, {"a.y", a.y}, {"b.x", b.x}, {"b.y", b.y}, {"c.x", c.x}, {"c.y", c.y}});
+    return Sign::zero;
+  }
   return filtered_sign<OrientationKernel>(std::array<S, 6>{a.x, a.y, b.x, b.y, c.x, c.y});
 }
 

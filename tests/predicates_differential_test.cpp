@@ -286,6 +286,10 @@ TEST(BadInput, EarlyDecisionsStillRejectNonFiniteInputs) {
   EXPECT_THROW(radius_edge_at_most(0.1, b, {a, Point2<double>{0, 1}, Point2<double>{NAN, 0}}, {I, I, I}),
                NonFiniteInput);
   EXPECT_THROW(tau_at_most(Sym2<double>{1, 0, 1}, Sym2<double>{4, NAN, 1}, 1.0), NonFiniteInput);
+  // Review finding: orientation's shortcut for points on one axis-parallel line (x = +∞ thrice,
+  // or a NaN in the other coordinate) must not answer "collinear".
+  EXPECT_THROW(orientation(Point2<double>{INFINITY, 0}, Point2<double>{INFINITY, 1}, Point2<double>{INFINITY, 2}), NonFiniteInput);
+  EXPECT_THROW(orientation(Point2<double>{1, NAN}, Point2<double>{1, 0}, Point2<double>{1, 2}), NonFiniteInput);
   // τ of matrices that are not positive definite is refused, not answered.
   EXPECT_THROW(compare_tau_squared(Sym2<Rational>{0, 0, 0}, Sym2<Rational>{1, 0, 1}, Rational(2)), NotPositiveDefinite);
   EXPECT_THROW(compare_tau(Sym2<Rational>{1, 0, -1}, Sym2<Rational>{1, 0, 1}, Sym2<Rational>{1, 0, 1},

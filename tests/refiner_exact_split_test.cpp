@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <climits>
+#include <limits>
 #include <cmath>
 #include <random>
 
@@ -60,6 +61,21 @@ TEST(ExactSplit, ClosedForms) {
   EXPECT_EQ(exact_halvings({1, 0.4}, {0.4, 1}), 0);
   EXPECT_FALSE(exact_midpoint({1, 0.4}, {0.4, 1}));
   EXPECT_FALSE(level_is_exact({1, 0.4}, {0.4, 1}, 1));
+  // Review findings: subnormal coordinates (2⁻¹⁰⁷⁵ is not a double), non-finite ones, a
+  // difference beyond the doubles, and a sum that overflows although the midpoint is a double.
+  EXPECT_EQ(exact_halvings({0, 0}, {0x1p-1074, 0}), 0);
+  EXPECT_EQ(exact_halvings({0, 0}, {0x1p-1070, 0}), 4);  // multiples of 2⁻¹⁰⁷⁴ below 2⁻¹⁰⁷⁰
+  EXPECT_EQ(exact_halvings({0, 0}, {INFINITY, 0}), 0);
+  EXPECT_EQ(exact_halvings({-0x1p1023, 0}, {0x1p1023, 0}), 0);
+  EXPECT_FALSE(exact_midpoint({0, 0}, {0x1p-1074, 0}));
+  EXPECT_FALSE(exact_midpoint({0, 0}, {NAN, 0}));
+  const double big = std::numeric_limits<double>::max();
+  const auto m = exact_midpoint({big, 0}, {big, 0});
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->x, big);
+  const auto m2 = exact_midpoint({big, 0}, {std::nextafter(std::nextafter(big, 0), 0), 0});
+  ASSERT_TRUE(m2);
+  EXPECT_EQ(m2->x, std::nextafter(big, 0));
 }
 
 TEST(ExactSplit, MidpointIsExactlyOnTheSegmentOrRefused) {

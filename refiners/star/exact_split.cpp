@@ -26,14 +26,17 @@ int trailing_exponent(double x) {
 
 // The points u + k (w − u)/2ʲ are multiples of 2^min(t_u, t_d − j) (t_d for the exact difference)
 // of magnitude < 2ᴱ; all are doubles when E − min(t_u, t_d − j) ≤ 53.
+// (and, for subnormal ones, when min(t_u, t_d − j) ≥ −1074).
 int halvings(double u, double w) {
+  if (!std::isfinite(u) || !std::isfinite(w)) return 0;
   if (u == w) return INT_MAX;
   const auto [hi, lo] = two_sum(w, -u);
+  if (!std::isfinite(hi)) return 0;  // |w − u| beyond the doubles
   const int td = trailing_exponent(lo != 0 ? lo : hi);
   const int E = std::ilogb(std::max(std::abs(u), std::abs(w))) + 1;
   const int tu = u != 0 ? trailing_exponent(u) : INT_MAX;
   if (tu != INT_MAX && E - tu > 53) return 0;
-  return std::max(0, 53 - E + td);
+  return std::max(0, std::min(53 - E + td, td + 1074));
 }
 
 }  // namespace
@@ -44,12 +47,22 @@ int exact_halvings(const predicates::Point2<double>& a, const predicates::Point2
 
 std::optional<predicates::Point2<double>> exact_midpoint(const predicates::Point2<double>& a,
                                                          const predicates::Point2<double>& b) {
-  const auto [sx, ex] = two_sum(a.x, b.x);
-  const auto [sy, ey] = two_sum(a.y, b.y);
-  const predicates::Point2<double> m{sx / 2, sy / 2};
-  // The sum is exact and halving it loses nothing (no underflow into subnormals).
-  if (ex != 0 || ey != 0 || m.x * 2 != sx || m.y * 2 != sy) return std::nullopt;
-  return m;
+  // (u + w)/2 when it is a double: an exact sum halved without loss (no underflow into
+  // subnormals), or, when the sum overflows (both beyond 2⁹⁷⁰, so their halves are exact), an
+  // exact sum of the halves.
+  auto half_sum = [](double u, double w) -> std::optional<double> {
+    if (!std::isfinite(u) || !std::isfinite(w)) return std::nullopt;
+    if (const auto [s, e] = two_sum(u, w); std::isfinite(s)) {
+      if (e != 0 || (s / 2) * 2 != s) return std::nullopt;
+      return s / 2;
+    }
+    const auto [s, e] = two_sum(u / 2, w / 2);
+    if (e != 0) return std::nullopt;
+    return s;
+  };
+  const auto x = half_sum(a.x, b.x), y = half_sum(a.y, b.y);
+  if (!x || !y) return std::nullopt;
+  return predicates::Point2<double>{*x, *y};
 }
 
 }  // namespace anisocert::refiners::star
