@@ -87,6 +87,13 @@ TEST(CliDiagram, DemoWritesItsPicture) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("49 sites"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(svg));
+  // The refined mesh is certified exactly, with parameters meeting every decided condition of
+  // LU Theorem 4.5.
+  EXPECT_NE(r.out.find(": certified"), std::string::npos) << r.out;
+  const auto conditions = r.out.find("LU Theorem 4.5 conditions");
+  ASSERT_NE(conditions, std::string::npos);
+  const std::string line = r.out.substr(conditions, r.out.find('\n', conditions) - conditions);
+  EXPECT_EQ(line.find(" no"), std::string::npos) << line;
 }
 
 }  // namespace
