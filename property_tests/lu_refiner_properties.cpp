@@ -4,6 +4,7 @@
 // by rules 2–5 lies in the picking region B_{M_v}(c, δr) of an empty circumellipse, so every
 // earlier site is at M_v-distance ≥ (1 − δ) r: the insertion-radius bound all four lemmas start
 // from, checked on the run's trace against every earlier site (not only the star's).
+// Domains: two fixed ones and random star-shaped polygons, convex or not (random_domain).
 // LU.T45: parameters meeting Theorem 4.5's decided conditions, on a constant field and a domain
 // meeting Lemma 4.1, terminate with the bounds.
 #include "io/mesh_output.hpp"
@@ -29,15 +30,46 @@ const std::vector<Polygon> kDomains = {
     {{1, -0.375}, {1, 0.375}, {0.375, 1}, {-0.375, 1}, {-1, 0.375}, {-1, -0.375}, {-0.375, -1}, {0.375, -1}},
     {{0, 0}, {2, 0}, {2.5, 1}, {1, 1.75}, {-0.5, 1}}};
 
+// A random polygon, star-shaped around the origin, on the 1/64 grid (so every edge can be split
+// exactly): 5 to 9 vertices at jittered angles and radii, convex, or 8 to 9 with one vertex pushed
+// in to radius 0.6 (a reflex corner, checked); discarded unless every convex corner is obtuse,
+// decided exactly on the grid ((prev − v)·(next − v) < 0), which is Lemma 4.1 for near-isotropic
+// metrics. (About 1 in 20 convex and 1 in 7 non-convex draws are discarded.)
+Polygon random_domain(bool reflex) {
+  const int n = reflex ? *rc::gen::inRange(8, 10) : *rc::gen::inRange(5, 10);
+  std::vector<std::array<long, 2>> q;
+  for (int i = 0; i < n; ++i) {
+    const double theta = 2 * M_PI * (i + 0.03 * *rc::gen::inRange(-10, 11)) / n;
+    const double r = reflex ? (i == 0 ? 0.6 : 0.9 + 0.01 * *rc::gen::inRange(0, 11)) : 0.8 + 0.01 * *rc::gen::inRange(0, 21);
+    q.push_back({std::lround(64 * r * std::cos(theta)), std::lround(64 * r * std::sin(theta))});
+  }
+  bool has_reflex = false;
+  for (int i = 0; i < n; ++i) {
+    const auto &a = q[(i + n - 1) % n], &v = q[i], &b = q[(i + 1) % n];
+    const long turn = (v[0] - a[0]) * (b[1] - v[1]) - (v[1] - a[1]) * (b[0] - v[0]);
+    RC_PRE(turn != 0);
+    if (turn > 0) RC_PRE((a[0] - v[0]) * (b[0] - v[0]) + (a[1] - v[1]) * (b[1] - v[1]) < 0);
+    has_reflex = has_reflex || turn < 0;
+  }
+  RC_PRE(has_reflex == reflex);
+  Polygon p;
+  for (const auto& v : q) p.push_back({v[0] / 64.0, v[1] / 64.0});
+  return p;
+}
+
 struct Run {
   RefineParameters p;
   RefineResult r;
   std::string field;
+  std::string domain = "fixed domain";
 };
 
 Run random_run() {
   Run run;
-  const int domain = *rc::gen::inRange(0, 2);
+  const int choice = *rc::gen::inRange(0, 4);  // the two fixed domains, or a random one
+  const bool reflex = choice == 3;
+  const Polygon domain = choice < 2 ? kDomains[choice] : random_domain(reflex);
+  if (choice >= 2) run.domain = reflex ? "random non-convex" : "random convex";
   const int kind = *rc::gen::inRange(0, 3);
   std::map<std::string, double> params;
   if (kind == 0) {
@@ -53,7 +85,7 @@ Run random_run() {
   run.p.delta = 0.02 + *rc::gen::inRange(0, 10) * 0.02;
   run.p.seed = *rc::gen::inRange(0, 1 << 20);
   run.p.max_vertices = 1500, run.p.max_seconds = 1;
-  run.r = refiners::star::refine_star(kDomains[domain], refiners::star::make_field(run.field, params), run.p);
+  run.r = refiners::star::refine_star(domain, refiners::star::make_field(run.field, params), run.p);
   return run;
 }
 
@@ -68,9 +100,10 @@ oracle::CertifyReport certify(const Run& run) {
 
 RC_GTEST_PROP(LU_A41, ConsistentStarsMergeIntoACertifiedMesh, ()) {
   const Run run = random_run();
-  RC_TAG(run.field, run.r.consistent ? "consistent" : "stopped", run.r.acute_corners.empty() ? "Lemma 4.1 holds" : "acute corner");
-  if (!run.r.consistent) {
-    RC_ASSERT(run.r.stop_reason.find("budget") != std::string::npos || run.r.stop_reason.find("LU Lemma 4.1") != std::string::npos);
+  RC_TAG(run.field, run.domain, run.r.consistent ? "consistent" : "stopped", run.r.acute_corners.empty() ? "Lemma 4.1 holds" : "acute corner");
+  if (!run.r.consistent) {  // a stop names its reason: a budget, a corner, or the resolution of doubles
+    RC_ASSERT(run.r.stop_reason.find("budget") != std::string::npos || run.r.stop_reason.find("LU Lemma 4.1") != std::string::npos ||
+              run.r.stop_reason.find("finer than doubles resolve") != std::string::npos);
     return;
   }
   if (!run.r.acute_corners.empty()) return;
@@ -84,15 +117,24 @@ RC_GTEST_PROP(LU_A41, ConsistentStarsMergeIntoACertifiedMesh, ()) {
 RC_GTEST_PROP(LU_L41_L44, InsertionRadiusOnTheTrace, ()) {
   const Run run = random_run();
   const auto& r = run.r;
+  RC_LOG() << run.field << ", " << run.domain << ", " << r.sites.size() << " sites, stop: " << r.stop_reason << "\n";
+  for (const auto& q : r.domain) RC_LOG() << "(" << q.x << ", " << q.y << ") ";
   const std::size_t first = r.sites.size() - r.trace.size();  // the corners come first, untraced
   int checked = 0;
   for (std::size_t k = 0; k < r.trace.size(); ++k) {
     const auto& t = r.trace[k];
     if (t.rule == refiners::star::encroachment) continue;
     const auto& M = r.metrics[t.star];
-    const double bound = (1 - run.p.delta) * t.radius * (1 - 1e-9);  // relative slack: r itself is a double
+    // Slack: r itself is a double (relative 10⁻⁹), and the picked point is stored rounded to
+    // doubles, half an ulp per coordinate, which moves it by at most √λ_max(M)·ulp in M's length
+    // (this matters only for runs refined down to the resolution of doubles).
+    const double lmax = (M.m11 + M.m22) / 2 + std::hypot((M.m11 - M.m22) / 2, M.m12);
+    const double ulp = std::ldexp(1.0, std::ilogb(std::max(std::abs(t.x), std::abs(t.y))) - 52);
+    const double bound = (1 - run.p.delta) * t.radius * (1 - 1e-9) - std::sqrt(lmax) * ulp;
     for (std::size_t s = 0; s < first + k; ++s) {
       const double dx = r.sites[s].x - t.x, dy = r.sites[s].y - t.y;
+      if (!(std::sqrt(dx * (M.m11 * dx + M.m12 * dy) + dy * (M.m12 * dx + M.m22 * dy)) >= bound))
+        RC_LOG() << "\ninsertion " << k << " rule " << t.rule << " at (" << t.x << ", " << t.y << "), r = " << t.radius << ", site " << s << "\n";
       RC_ASSERT(std::sqrt(dx * (M.m11 * dx + M.m12 * dy) + dy * (M.m12 * dx + M.m22 * dy)) >= bound);
     }
     ++checked;
