@@ -149,14 +149,8 @@ class Refiner {
       }
     }
     merge(r);
-    for (int k = 0; k < m; ++k) {
-      const auto& c = domain_[k];
-      const auto& a = domain_[(k + m - 1) % m];
-      const auto& b = domain_[(k + 1) % m];
-      const Sym2<double>& M = metrics_[k];
-      const double ex = a.x - c.x, ey = a.y - c.y, fx = b.x - c.x, fy = b.y - c.y;
-      if (ex * (M.m11 * fx + M.m12 * fy) + ey * (M.m12 * fx + M.m22 * fy) >= 0) r.acute_corners.push_back(k);
-    }
+    for (int k = 0; k < m; ++k)
+      if (acute_corner(k)) r.acute_corners.push_back(k);
     r.seconds = elapsed();
     r.rule_counts = counts_;
     r.picks_rejected = picks_rejected_, r.picks_exhausted = picks_exhausted_, r.refinements = refinements_;
@@ -574,15 +568,34 @@ class Refiner {
     return false;
   }
 
+  // LU Lemma 4.1 fails at corner k (the domain's corners are sites 0 … m − 1): the angle between
+  // its two edges is not obtuse in the corner's metric, e₁ᵀ M e₂ ≥ 0.
+  bool acute_corner(int k) const {
+    const int m = static_cast<int>(domain_.size());
+    const auto &c = domain_[k], &a = domain_[(k + m - 1) % m], &b = domain_[(k + 1) % m];
+    const Sym2<double>& M = metrics_[k];
+    const double ex = a.x - c.x, ey = a.y - c.y, fx = b.x - c.x, fy = b.y - c.y;
+    return ex * (M.m11 * fx + M.m12 * fy) + ey * (M.m12 * fx + M.m22 * fy) >= 0;
+  }
+
   void split(int s) {
     const auto [a, b] = segments_[s];
     const std::optional<Point2<double>> exact = exact_midpoint(sites_[a], sites_[b]);
     if (!exact) {
       // The domain allows at least `min_halvings` exact splits of every edge (refine_star), so
-      // this is endless encroachment at a corner: LU Lemma 4.1 needs boundary angles > 90° in the metric.
-      stalled_ = "a boundary segment near (" + std::to_string(sites_[a].x) + ", " + std::to_string(sites_[a].y) +
-                 ") was split until its midpoint is no longer a double: encroachment does not end there (LU Lemma 4.1 "
-                 "needs every boundary angle > 90° in the metric)";
+      // encroachment does not end at a corner: name it, and say whether Lemma 4.1 explains it.
+      const int m = static_cast<int>(domain_.size());
+      int k = 0;
+      for (int i = 1; i < m; ++i)
+        if (std::hypot(domain_[i].x - sites_[a].x, domain_[i].y - sites_[a].y) <
+            std::hypot(domain_[k].x - sites_[a].x, domain_[k].y - sites_[a].y))
+          k = i;
+      const std::string corner = "corner " + std::to_string(k) + " (" + decimal(domain_[k].x) + ", " + decimal(domain_[k].y) + ")";
+      const bool reflex = predicates::orientation(domain_[(k + m - 1) % m], domain_[k], domain_[(k + 1) % m]) == Sign::negative;
+      stalled_ = "boundary segments near " + corner + " were split until their midpoints are no longer doubles: " +
+                 (acute_corner(k) ? "encroachment does not end at a corner whose angle is not obtuse in the metric (LU Lemma 4.1 needs > 90°)"
+                  : reflex        ? "refinement does not end at this reflex corner although LU Lemma 4.1 holds there (a known limitation of this refiner, docs/refiners.md)"
+                                  : "encroachment does not end there although LU Lemma 4.1 holds at that corner");
       return;
     }
     const Point2<double> m = *exact;
