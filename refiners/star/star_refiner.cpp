@@ -86,6 +86,7 @@ bool inside_polygon(const std::vector<Point2<double>>& poly, double x, double y)
 
 struct Star {
   std::vector<std::array<int, 2>> triangles;  // (a, b): triangle (v, a, b) counter-clockwise
+  std::vector<std::array<int, 2>> outside;    // the rest of v's Delaunay fan, outside Ω
   std::vector<int> neighbours;                // sorted
   int box[4] = {0, -1, 0, -1};                // grid cells covered by the conflict zone
   double zone[4] = {0, -1, 0, -1};            // the conflict zone's bounding box (empty: x0 > x1)
@@ -316,12 +317,15 @@ class Refiner {
         const int a = ring[i], b = ring[(i + 1) % k];
         const Circle c = circumcircle(pv, sites_[a], sites_[b], M);
         const double reach = std::sqrt(qform(M, c.cx - pv.x, c.cy - pv.y)) + std::sqrt(c.r2);
-        if (!triangle_in_domain(v, a, b)) continue;  // restricted to Ω: the rest does not matter
         reach2 = std::max(reach2, reach * reach);
         if (!(reach * reach * 1.0001 < R2)) fits = false;
-        star.triangles.push_back({a, b});
+        // The conflict zone covers every triangle of the fan, also those outside Ω (across a
+        // reflex corner): a new site in their circumellipses changes the star too. (Without them
+        // a reflex corner's first star, whose only triangle spans the exterior, stayed empty for
+        // good, and its neighbours' triangles at the corner were refined forever.)
         const auto [hx, hy] = ellipse_extent(M, c.r2);
         xa = std::min(xa, c.cx - hx), xb = std::max(xb, c.cx + hx), ya = std::min(ya, c.cy - hy), yb = std::max(yb, c.cy + hy);
+        (triangle_in_domain(v, a, b) ? star.triangles : star.outside).push_back({a, b});  // restricted to Ω
       }
       // A fan is complete when it closes around v, or when both of its open ends are boundary
       // subsegments at v (the rest is outside Ω); otherwise the search region was too small.
@@ -370,6 +374,12 @@ class Refiner {
   // it was updated, 2 when it must be recomputed (a tie, a non-convex Ω, or an unexpected shape).
   int update_star(int v, int k) {
     Star& s = stars_[v];
+    if (!convex_) {  // recomputed when k conflicts with any triangle of the fan, in Ω or not
+      for (const auto* list : {&s.triangles, &s.outside})
+        for (const auto& t : *list)
+          if (predicates::incircle(sites_[v], sites_[t[0]], sites_[t[1]], sites_[k], metrics_[v]) != Sign::negative) return 2;
+      return 0;
+    }
     const Point2<double>& pv = sites_[v];
     const std::size_t n = s.triangles.size();
     std::vector<char>& in = in_;
@@ -382,7 +392,7 @@ class Refiner {
       total += in[i];
     }
     if (total == 0) return 0;
-    if (!convex_ || total == n) return 2;
+    if (total == n) return 2;
     const bool closed = s.triangles.back()[1] == s.triangles.front()[0];
     std::size_t first = n;
     for (std::size_t i = 0; i < n && first == n; ++i)
