@@ -558,19 +558,13 @@ class Refiner {
     for (int j = c[2]; j <= c[3]; ++j)
       for (int i = c[0]; i <= c[1]; ++i) segment_grid_[cell(i, j)].push_back(s);
   }
-  // Whether x lies on Ω's side of subsegment s's line (or on it): only such points can encroach
-  // s. Across a reflex corner the other edge lies on the far side, and a metric that makes the
-  // exterior wedge acute would otherwise let the two edges encroach each other forever.
-  bool inner_side(const Point2<double>& x, int s) const {
-    return convex_ || predicates::orientation(sites_[segments_[s].first], sites_[segments_[s].second], x) != Sign::negative;
-  }
   bool near_segment(const Point2<double>& x, int s) const {
     const auto& b = segment_box_[s];
     return x.x >= b[0] && x.x <= b[1] && x.y >= b[2] && x.y <= b[3];
   }
 
   bool encroaches(const Point2<double>& x, const Sym2<double>& Mx, int s) const {
-    if (!near_segment(x, s) || !inner_side(x, s)) return false;
+    if (!near_segment(x, s)) return false;
     const auto [a, b] = segments_[s];
     const double mx = (sites_[a].x + sites_[b].x) / 2, my = (sites_[a].y + sites_[b].y) / 2;
     for (const Sym2<double>* M : {&Mx, &metrics_[a], &metrics_[b]})
@@ -795,7 +789,7 @@ class Refiner {
       const double mx = (sites_[a].x + sites_[b].x) / 2 - x.x, my = (sites_[a].y + sites_[b].y) / 2 - x.y;
       const double half = qform(M, sites_[b].x - sites_[a].x, sites_[b].y - sites_[a].y) / 4;
       const double d = qform(M, mx, my);
-      if ((d < half && inner_side(x, s2)) || encroaches(x, Mx, s2)) {
+      if (d < half || encroaches(x, Mx, s2)) {
         split(s2);
         return;
       }
