@@ -60,9 +60,7 @@ std::string summary(const oracle::Diagram& d, const std::string& name) {
 }
 
 int run(const oracle::DiagramInput& in, const std::string& name, const DiagramOptions& o) {
-  auto progress = [&](const std::string& line) {
-    if (!o.quiet) std::cerr << "anisocert: " << line << "\n";
-  };
+  const auto progress = progress_printer(o.quiet);
   oracle::Diagram d;
   try {
     d = oracle::compute_diagram(in, progress);
@@ -144,11 +142,10 @@ std::string refine_and_certify(const std::string& svg_path, bool quiet) {
   p.rho0 = 5, p.beta = 5, p.gamma0 = 1.2;
   p.max_seconds = 60;
   const auto field = refiners::star::make_field("shock", {{"h", 0.05}, {"alpha", 3}});
-  auto progress = [&](const std::string& line) {
-    if (!quiet) std::cerr << "anisocert: " << line << "\n";
-  };
+  const auto progress = progress_printer(quiet);
   const refiners::star::RefineResult r = refiners::star::refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, field, p, progress);
-  const oracle::Mesh mesh = io::exact_mesh(mesh_data(r));
+  const io::MeshData data = mesh_data(r);
+  const oracle::Mesh mesh = io::exact_mesh(data);
   oracle::CertifyOptions o;
   o.rho0 = rational_from_double(p.rho0), o.gamma0 = rational_from_double(p.gamma0);
   const oracle::CertifyReport c = oracle::certify_mesh(mesh, o);
@@ -158,7 +155,7 @@ std::string refine_and_certify(const std::string& svg_path, bool quiet) {
       << (c.uniform_violations.empty() ? "holds" : "FAILS") << " (" << c.uniform_ties.size() << " ties), radius-edge ≤ "
       << p.rho0 << " " << (c.rho_violations.empty() ? "holds" : "FAILS") << ", distortion ≤ " << p.gamma0 << " "
       << (c.gamma_violations.empty() ? "holds" : "FAILS") << ": " << (c.holds(o) ? "certified" : "NOT certified") << "\n";
-  write_file_atomically(svg_path, io::mesh_svg(mesh_data(r), "star refiner, shock field: " + std::to_string(r.sites.size()) +
+  write_file_atomically(svg_path, io::mesh_svg(data, "star refiner, shock field: " + std::to_string(r.sites.size()) +
                                                                  " vertices, " + (c.holds(o) ? "certified" : "not certified")));
   out << "  picture: " << svg_path << "\n";
   return out.str();

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 
 namespace anisocert::cli {
 
@@ -61,6 +62,11 @@ ConditionReport report_conditions(const std::vector<Condition>& conditions) {
 void emit(const std::string& text) {
   std::fwrite(text.data(), 1, text.size(), stdout);
   std::fflush(stdout);
+}
+
+std::function<void(const std::string&)> progress_printer(bool quiet) {
+  if (quiet) return {};
+  return [](const std::string& line) { std::cerr << "anisocert: " << line << "\n"; };
 }
 
 std::string render(const Json& j) { return j.dump(2) + "\n"; }

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,8 @@ ConditionReport report_conditions(const std::vector<Condition>& conditions);
 
 // Writes all of `text` to standard output at once: nothing is printed half-way.
 void emit(const std::string& text);
+// The progress callback of long runs: "anisocert: LINE" on standard error, or nothing when quiet.
+std::function<void(const std::string&)> progress_printer(bool quiet);
 std::string render(const Json& j);
 // Writes `content` to `path` through a temporary file in the same directory and a rename, so
 // that the file is either absent, or complete (DESIGN.md: nothing is written half-way).

@@ -7,7 +7,6 @@
 #include "io/site_set.hpp"
 #include "theory/lu_theorem45.hpp"
 
-#include <iostream>
 #include <sstream>
 
 namespace anisocert::cli {
@@ -92,9 +91,7 @@ int run_refine(const RefineOptions& o) {
   }
   if (!(o.p.gamma0 > 1) || !(o.p.rho0 > 0) || !(o.p.delta > 0 && o.p.delta < 1) || !(o.p.beta > 0) || !(o.p.size > 0))
     throw UsageError("parameters out of range: need γ₀ > 1, ρ₀ > 0, 0 < δ < 1, β > 0, size > 0");
-  auto progress = [&](const std::string& line) {
-    if (!o.quiet) std::cerr << "anisocert: " << line << "\n";
-  };
+  const auto progress = progress_printer(o.quiet);
   RefineResult r;
   try {
     r = refiners::star::refine_star(domain, field, o.p, progress);

@@ -181,26 +181,34 @@ template <class K>
   return {tree_max<i0, 0, i0.size()>(x), tree_max<i1, 0, i1.size()>(x), tree_max<i2, 0, i2.size()>(x)};
 }
 
-// The interval and exact stages, out of line: rare, and large.
-// The translated static stage (see Translatable): tried only when the plain one fails, so that
-// the common case does not pay for the differences. A NaN or an infinity makes a difference NaN
-// or leaves the static range, and falls through.
+// A static stage: K evaluated in doubles against the bound that `model` gives for the inputs'
+// group maxima; nothing when that bound does not decide, or a group leaves the static range
+// (which a NaN or an infinity does too, or it makes the value NaN).
+template <class K, const ErrorModel& model>
+[[gnu::always_inline]] inline std::optional<Sign> static_sign(const std::array<double, K::arity>& x) {
+  const std::array<double, magnitude_groups> max = group_maxima<K>(x);
+  if (in_static_range<K>(max)) [[likely]] {
+    const double value = K::template eval<double>(x);
+    const double bound = error_bound<model>(max);
+    if (value > bound) return Sign::positive;
+    if (value < -bound) return Sign::negative;
+  }
+  return std::nullopt;
+}
+
+// The translated static stage (see Translatable), on the rounded differences: tried only when
+// the plain one fails, so that the common case does not pay for the differences.
 template <class K>
 std::optional<Sign> translated_static_sign(const std::array<double, K::arity>& x) {
   if constexpr (Translatable<K>) {
     std::array<double, K::arity> t;
     for (std::size_t i = 0; i < K::arity; ++i) t[i] = K::origin[i] < 0 ? x[i] : x[i] - x[K::origin[i]];
-    const std::array<double, magnitude_groups> max = group_maxima<K>(t);
-    if (in_static_range<K>(max)) {
-      const double value = K::template eval<double>(t);
-      const double bound = error_bound<translated_error_model<K>>(max);
-      if (value > bound) return Sign::positive;
-      if (value < -bound) return Sign::negative;
-    }
+    return static_sign<K, translated_error_model<K>>(t);
   }
   return std::nullopt;
 }
 
+// The translated, interval and exact stages, out of line: rare, and large.
 template <class K>
 [[gnu::noinline]] Sign filtered_sign_slow(const std::array<double, K::arity>& x) {
   if (const auto s = translated_static_sign<K>(x)) return *s;
@@ -220,13 +228,7 @@ template <class K>
 // NonFiniteInput for a NaN or an infinity.
 template <class K>
 [[gnu::always_inline]] inline Sign filtered_sign(const std::array<double, K::arity>& x) {
-  const std::array<double, magnitude_groups> max = group_maxima<K>(x);
-  if (in_static_range<K>(max)) [[likely]] {
-    const double value = K::template eval<double>(x);
-    const double bound = error_bound<static_error_model<K>>(max);
-    if (value > bound) return Sign::positive;
-    if (value < -bound) return Sign::negative;
-  }
+  if (const auto s = static_sign<K, static_error_model<K>>(x)) [[likely]] return *s;
   return filtered_sign_slow<K>(x);
 }
 

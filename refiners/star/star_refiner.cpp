@@ -69,6 +69,11 @@ double tau2(const Sym2<double>& A, const Sym2<double>& B) {
   return std::max(largest(A, B), largest(B, A));
 }
 
+// τ² < g2 for each pair of the three metrics of a triangle's vertices.
+bool pairs_within(const Sym2<double>& A, const Sym2<double>& B, const Sym2<double>& C, double g2) {
+  return tau2(A, B) < g2 && tau2(A, C) < g2 && tau2(B, C) < g2;
+}
+
 // Half-widths of the bounding box of {x : (x − c)ᵀ M (x − c) ≤ r²}.
 std::pair<double, double> ellipse_extent(const Sym2<double>& M, double r2) {
   const double det = M.m11 * M.m22 - M.m12 * M.m12;
@@ -595,11 +600,9 @@ class Refiner {
             std::hypot(domain_[k].x - sites_[a].x, domain_[k].y - sites_[a].y))
           k = i;
       const std::string corner = "corner " + std::to_string(k) + " (" + decimal(domain_[k].x) + ", " + decimal(domain_[k].y) + ")";
-      const bool reflex = predicates::orientation(domain_[(k + m - 1) % m], domain_[k], domain_[(k + 1) % m]) == Sign::negative;
       stalled_ = "boundary segments near " + corner + " were split until their midpoints are no longer doubles: " +
                  (acute_corner(k) ? "encroachment does not end at a corner whose angle is not obtuse in the metric (LU Lemma 4.1 needs > 90°)"
-                  : reflex        ? "refinement does not end at this reflex corner although LU Lemma 4.1 holds there (a known limitation of this refiner, docs/refiners.md)"
-                                  : "encroachment does not end there although LU Lemma 4.1 holds at that corner");
+                                  : "refinement does not end there although LU Lemma 4.1 holds at that corner (a refiner failure)");
       return;
     }
     const Point2<double> m = *exact;
@@ -636,7 +639,7 @@ class Refiner {
   // circumballs; it is estimated from below on samples of the star's own circumball: the three
   // vertices and, when it lies in Ω, the circumcentre (the other vertices' stars sample theirs).
   bool distorted(const Sym2<double>& Mv, const Sym2<double>& Ma, const Sym2<double>& Mb, const Circle& c, double g2) const {
-    if (tau2(Mv, Ma) >= g2 || tau2(Mv, Mb) >= g2 || tau2(Ma, Mb) >= g2) return true;
+    if (!pairs_within(Mv, Ma, Mb, g2)) return true;
     if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !inside_polygon(domain_, c.cx, c.cy)) return false;
     const Sym2<double> Mc = field_.at(c.cx, c.cy);
     return tau2(Mc, Mv) >= g2 || tau2(Mc, Ma) >= g2 || tau2(Mc, Mb) >= g2;
@@ -723,7 +726,7 @@ class Refiner {
       const int b = wrap(x, M, a, cand, true);
       if (b < 0) return false;
       const Point2<double>&pa = sites_[a], &pb = sites_[b];
-      if (tau2(M, metrics_[a]) < g2 && tau2(M, metrics_[b]) < g2 && tau2(metrics_[a], metrics_[b]) < g2) {
+      if (pairs_within(M, metrics_[a], metrics_[b], g2)) {
         const Circle c = circumcircle(x, pa, pb, M);
         const double edges = std::min({d2(pa, x), d2(pb, x), d2(pa, pb)});
         if (c.r2 < beta_r2)
