@@ -324,10 +324,10 @@ class Refiner {
         const double reach = std::sqrt(qform(M, c.cx - pv.x, c.cy - pv.y)) + std::sqrt(c.r2);
         reach2 = std::max(reach2, reach * reach);
         if (!(reach * reach * 1.0001 < R2)) fits = false;
-        // The conflict zone covers every triangle of the fan, also those outside Ω (across a
-        // reflex corner): a new site in their circumellipses changes the star too. (Without them
-        // a reflex corner's first star, whose only triangle spans the exterior, stayed empty for
-        // good, and its neighbours' triangles at the corner were refined forever.)
+        // The search region and the conflict zone cover every triangle of the fan, also those
+        // outside Ω (across a reflex corner): a site in their circumellipses changes the star too.
+        // (Without them a reflex corner's first star, whose only triangle spans the exterior,
+        // stayed empty for good, and the triangles at the corner were refined forever.)
         const auto [hx, hy] = ellipse_extent(M, c.r2);
         xa = std::min(xa, c.cx - hx), xb = std::max(xb, c.cx + hx), ya = std::min(ya, c.cy - hy), yb = std::max(yb, c.cy + hy);
         (triangle_in_domain(v, a, b) ? star.triangles : star.outside).push_back({a, b});  // restricted to Ω
