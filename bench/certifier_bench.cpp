@@ -38,7 +38,7 @@ Mesh lattice(int k, bool anisotropic) {
     for (int i = 0; i < k; ++i) {
       const int a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
       // Diagonal ac unless d is inside the circumellipse of abc.
-      if (anisocert::predicates::incircle(pd(a), pd(b), pd(c), pd(d), Md) > anisocert::predicates::Sign::zero)
+      if (anisocert::predicates::incircle(pd(a), pd(b), pd(c), pd(d), Md) > anisocert::Sign::zero)
         m.triangles.push_back({a, b, d}), m.triangles.push_back({b, c, d});
       else
         m.triangles.push_back({a, b, c}), m.triangles.push_back({a, c, d});

@@ -19,6 +19,7 @@
 
 using anisocert::Rational;
 using namespace anisocert::predicates;
+using anisocert::Sign;
 
 namespace {
 

@@ -1,7 +1,7 @@
 #include "cli/output.hpp"
 
 #include "cli/usage_error.hpp"
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 #include "theory/precision.hpp"
 
 #include <algorithm>
@@ -29,17 +29,17 @@ Rational parse_option(const std::string& name, const std::string& text) {
   }
 }
 
-Json enclosure_json(const theory::Interval& x, int digits) {
-  theory::DecimalEnclosure d = theory::to_decimal(x, digits);
+Json enclosure_json(const anisocert::Interval& x, int digits) {
+  anisocert::DecimalEnclosure d = anisocert::to_decimal(x, digits);
   return Json{{"lo", d.lo}, {"hi", d.hi}};
 }
 
-Json enclosure_json(const std::optional<theory::Interval>& x, int digits) {
+Json enclosure_json(const std::optional<anisocert::Interval>& x, int digits) {
   return x ? enclosure_json(*x, digits) : Json(nullptr);
 }
 
-std::string enclosure_text(const theory::Interval& x, int digits, std::size_t width) {
-  std::string s = theory::certified_digits(theory::to_decimal(x, digits));
+std::string enclosure_text(const anisocert::Interval& x, int digits, std::size_t width) {
+  std::string s = anisocert::certified_digits(anisocert::to_decimal(x, digits));
   const bool truncated = s.ends_with("…");
   if (truncated) s.erase(s.size() - std::string("…").size());
   // Shorten to `width` characters (all ASCII now), never into the integer part.

@@ -3,7 +3,7 @@
 // of a certified enclosure {"lo": "...", "hi": "..."}.
 
 #include "numbers/rational.hpp"
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -29,12 +29,12 @@ void add_output_options(CLI::App& command, OutputOptions& options);
 Rational parse_option(const std::string& name, const std::string& text);
 
 // {"lo": "...", "hi": "..."}: decimal strings rounded outward to `digits` significant digits.
-Json enclosure_json(const theory::Interval& x, int digits);
-Json enclosure_json(const std::optional<theory::Interval>& x, int digits);  // null when absent
+Json enclosure_json(const anisocert::Interval& x, int digits);
+Json enclosure_json(const std::optional<anisocert::Interval>& x, int digits);  // null when absent
 
 // The certified leading digits of x for tables: at most `width` characters after which a
 // trailing … marks truncation, but never cut inside the integer part.
-std::string enclosure_text(const theory::Interval& x, int digits, std::size_t width = 24);
+std::string enclosure_text(const anisocert::Interval& x, int digits, std::size_t width = 24);
 
 // One decided condition of a theorem: its JSON key, its statement, and whether it holds.
 struct Condition {

@@ -5,7 +5,7 @@
 #include "cli/theory_command.hpp"
 #include "cli/usage_error.hpp"
 #include "theory/bwy_section4.hpp"
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_theorem9.hpp"
 
 #include <sstream>
@@ -14,7 +14,6 @@
 namespace anisocert::cli {
 namespace {
 
-using theory::Interval;
 
 struct BwyOptions {
   std::string B, G;
@@ -26,7 +25,7 @@ int run_bwy(const BwyOptions& o) {
   const Rational B = parse_option("--B", o.B);
   if (!(B > 1)) throw UsageError("--B " + o.B + ": BWY Lemma 2 needs a shape bound B > 1");
   const Interval gamma_max = theory::bwy_lemma2_gamma_max(B, out.precision());
-  const theory::DecimalEnclosure printed = theory::to_decimal(gamma_max, out.digits);
+  const anisocert::DecimalEnclosure printed = anisocert::to_decimal(gamma_max, out.digits);
   if (!theory::bwy_lemma2_gamma_max_bracket_verified(B, parse_rational(printed.lo), parse_rational(printed.hi)))
     throw std::logic_error("printed enclosure of BWY γ_max(" + to_exact_string(B) + ") fails its exact check");
   Json j{{"B", to_exact_string(B)}, {"BWY_L2_gamma_max", enclosure_json(gamma_max, out.digits)}};

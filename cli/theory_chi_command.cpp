@@ -10,7 +10,6 @@
 namespace anisocert::cli {
 namespace {
 
-using theory::Interval;
 
 struct ChiOptions {
   std::string beta, gamma;

@@ -5,7 +5,7 @@
 
 #include "cli/output.hpp"
 #include "cli/usage_error.hpp"
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_lemma_factors.hpp"
 #include "theory/ls_theorem11.hpp"
 
@@ -16,7 +16,6 @@
 namespace anisocert::cli {
 namespace {
 
-using theory::Interval;
 
 struct TheoryOptions {
   std::vector<std::string> thetas;
@@ -36,7 +35,7 @@ Rational admissible_theta(const std::string& text, const Interval& theta_max, in
 // Rejects an enclosure whose printed decimals do not bracket the root (never expected: the
 // decimals are rounded outward from a certified bracket; this re-checks what is printed).
 void verify_printed_gamma(const Rational& theta, const Interval& gamma, int digits) {
-  theory::DecimalEnclosure d = theory::to_decimal(gamma, digits);
+  anisocert::DecimalEnclosure d = anisocert::to_decimal(gamma, digits);
   // At γ's own precision, which ls_t11_gamma raises near θ_max.
   if (!theory::ls_t11_gamma_bracket_verified(theta, parse_rational(d.lo), parse_rational(d.hi), gamma.precision()))
     throw std::logic_error("printed enclosure of γ(" + to_exact_string(theta) + ") does not bracket the root");

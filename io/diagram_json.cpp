@@ -7,7 +7,6 @@ namespace anisocert::io {
 using oracle::AlgebraicPoint;
 using oracle::Conic;
 using oracle::Diagram;
-using predicates::Sign;
 
 namespace {
 

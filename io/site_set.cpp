@@ -23,7 +23,6 @@ namespace {
 using Json = nlohmann::json;
 using Point = predicates::Point2<Rational>;
 using predicates::orientation;
-using predicates::Sign;
 
 // ---- the document -------------------------------------------------------------------------------
 

@@ -1,6 +1,6 @@
 #include "oracle/candidate_subdivision.hpp"
 
-#include "predicates/filter_interval.hpp"
+#include "numbers/filter_interval.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -10,7 +10,6 @@ namespace anisocert::oracle {
 
 namespace {
 
-using predicates::FilterInterval;
 
 struct SiteBox {
   FilterInterval x, y, m11, m12, m22;

@@ -25,7 +25,7 @@ void Builder::run() {
   width_ = extent / Rational(Integer(1) << 52);
   for (std::size_t i = 0; i < d_.sheared.sites.size(); ++i) {
     const Conic q = distance_conic(d_.sheared.sites[i], d_.sheared.metrics[i]);
-    auto c = [](const Rational& r) { return predicates::FilterInterval::around(r); };
+    auto c = [](const Rational& r) { return anisocert::FilterInterval::around(r); };
     distance_.push_back({c(q.a), c(q.b), c(q.c), c(q.d), c(q.e), c(q.f)});
   }
 

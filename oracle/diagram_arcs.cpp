@@ -58,8 +58,8 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
   for (std::size_t k = 0; k < m; ++k) {
     const auto& a = orig[k];
     const auto& b = orig[(k + 1) % m];
-    const auto ax = predicates::FilterInterval::around(a.x), ay = predicates::FilterInterval::around(a.y);
-    const auto bx = predicates::FilterInterval::around(b.x), by = predicates::FilterInterval::around(b.y);
+    const auto ax = anisocert::FilterInterval::around(a.x), ay = anisocert::FilterInterval::around(a.y);
+    const auto bx = anisocert::FilterInterval::around(b.x), by = anisocert::FilterInterval::around(b.y);
     const BoxBounds edge_box{std::min(ax.lo, bx.lo), std::max(ax.hi, bx.hi), std::min(ay.lo, by.lo), std::max(ay.hi, by.hi)};
     if (!boxes_meet(edge_box, region)) continue;
     const auto& sa = d_.sheared.domain[k];

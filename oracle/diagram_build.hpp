@@ -2,7 +2,7 @@
 // Internal to the oracle: the pieces of work compute_diagram is made of, shared by its files.
 #include "oracle/candidate_subdivision.hpp"
 #include "oracle/diagram.hpp"
-#include "predicates/filter_interval.hpp"
+#include "numbers/filter_interval.hpp"
 
 #include <map>
 
@@ -62,7 +62,7 @@ class Builder {
   std::function<void(const std::string&)> progress_;
   CandidateSets cand_;
   Rational width_;                                   // box width for located points
-  std::vector<std::array<predicates::FilterInterval, 6>> distance_;  // Q_u as interval conics
+  std::vector<std::array<anisocert::FilterInterval, 6>> distance_;  // Q_u as interval conics
   std::map<std::pair<int, int>, std::vector<int>> nodes_of_pair_;
   // germs per node, in counter-clockwise order (diagram_faces.cpp)
   struct Germ {

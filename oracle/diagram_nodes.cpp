@@ -10,7 +10,6 @@
 
 namespace anisocert::oracle::build {
 
-using predicates::FilterInterval;
 
 DomainPosition domain_position(const DiagramInput& sh, const LocatedPoint& p) {
   DomainPosition pos;

@@ -2,7 +2,6 @@
 
 namespace anisocert::oracle {
 
-using predicates::FilterInterval;
 
 namespace {
 

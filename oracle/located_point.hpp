@@ -3,13 +3,13 @@
 // a conic at the point is read from its interval value on the box when that excludes zero, and
 // decided exactly otherwise (DESIGN.md: a filter may only speed up, never change, an answer).
 #include "oracle/algebraic_point.hpp"
-#include "predicates/filter_interval.hpp"
+#include "numbers/filter_interval.hpp"
 
 namespace anisocert::oracle {
 
 struct LocatedPoint {
   AlgebraicPoint point;
-  predicates::FilterInterval x, y;  // boxes containing the exact coordinates
+  anisocert::FilterInterval x, y;  // boxes containing the exact coordinates
 
   // Refines the coordinates' isolating intervals below `width` (a positive rational).
   LocatedPoint(AlgebraicPoint p, const Rational& width);
@@ -17,7 +17,7 @@ struct LocatedPoint {
 
   Sign sign_of(const Conic& G) const;
   // Interval value of G on the box (for callers that compare several values first).
-  predicates::FilterInterval value(const Conic& G) const;
+  anisocert::FilterInterval value(const Conic& G) const;
   // Whether the boxes of two points are disjoint (then the points differ).
   bool apart_from(const LocatedPoint& q) const;
 };

@@ -1,7 +1,7 @@
 #include "oracle/mesh_certifier.hpp"
 
 #include "predicates/distortion.hpp"
-#include "predicates/filter_interval.hpp"
+#include "numbers/filter_interval.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orientation.hpp"
 
@@ -12,9 +12,7 @@
 
 namespace anisocert::oracle {
 
-using predicates::FilterInterval;
 using predicates::Point2;
-using predicates::Sign;
 using predicates::Sym2;
 
 namespace {

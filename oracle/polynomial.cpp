@@ -34,7 +34,7 @@ Sign Polynomial::sign_at(const Rational& x) const {
     power *= b;
     v = v * a + integral_[i] * power;
   }
-  return predicates::sign_of(Rational(v));
+  return anisocert::sign_of(Rational(v));
 }
 
 std::pair<Rational, Rational> Polynomial::range(const Rational& lo, const Rational& hi) const {

@@ -4,14 +4,13 @@
 // algebraic of degree <= 4; DESIGN.md § Numbers and exactness).
 
 #include "numbers/rational.hpp"
-#include "predicates/sign.hpp"
+#include "numbers/sign.hpp"
 
 #include <utility>
 #include <vector>
 
 namespace anisocert::oracle {
 
-using predicates::Sign;
 
 class Polynomial {
  public:

@@ -1,6 +1,6 @@
 #include "oracle/real_algebraic.hpp"
 
-#include "predicates/filter_interval.hpp"
+#include "numbers/filter_interval.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -191,12 +191,12 @@ void RealAlgebraic::refine_below(const Rational& width) const {
 
 Sign RealAlgebraic::sign_of(const Polynomial& q) const {
   if (q.is_zero()) return Sign::zero;
-  std::vector<predicates::FilterInterval> coefficients;  // outward double enclosures, for a filter
-  for (const Rational& c : q.coefficients()) coefficients.push_back(predicates::FilterInterval::around(c));
+  std::vector<anisocert::FilterInterval> coefficients;  // outward double enclosures, for a filter
+  for (const Rational& c : q.coefficients()) coefficients.push_back(anisocert::FilterInterval::around(c));
   const auto decided = [&]() -> std::optional<Sign> {
     if (is_exact()) return q.sign_at(lo_);
-    const predicates::FilterInterval x{predicates::FilterInterval::around(lo_).lo, predicates::FilterInterval::around(hi_).hi};
-    predicates::FilterInterval v = coefficients.back();
+    const anisocert::FilterInterval x{anisocert::FilterInterval::around(lo_).lo, anisocert::FilterInterval::around(hi_).hi};
+    anisocert::FilterInterval v = coefficients.back();
     for (std::size_t i = coefficients.size() - 1; i-- > 0;) v = v * x + coefficients[i];
     if (const auto s = v.sign(); s && *s != Sign::zero) return *s;
     const auto [a, b] = q.range(lo_, hi_);
@@ -242,7 +242,7 @@ std::string RealAlgebraic::decimal(int digits) const {
 }
 
 Sign compare(const RealAlgebraic& a, const RealAlgebraic& b) {
-  if (a.is_exact() && b.is_exact()) return predicates::sign_of(a.lo() - b.lo());
+  if (a.is_exact() && b.is_exact()) return anisocert::sign_of(a.lo() - b.lo());
   // Equal ⇔ both are roots of g = gcd(p_a, p_b) and their intervals share that root.
   const Polynomial g = gcd(a.polynomial(), b.polynomial());
   if (g.degree() >= 1 && brackets_root(g, a.lo(), a.hi()) && brackets_root(g, b.lo(), b.hi())) {
@@ -252,7 +252,7 @@ Sign compare(const RealAlgebraic& a, const RealAlgebraic& b) {
   while (!(a.hi() < b.lo() || b.hi() < a.lo())) {
     a.refine();
     b.refine();
-    if (a.is_exact() && b.is_exact()) return predicates::sign_of(a.lo() - b.lo());
+    if (a.is_exact() && b.is_exact()) return anisocert::sign_of(a.lo() - b.lo());
   }
   return a.hi() < b.lo() ? Sign::negative : Sign::positive;
 }

@@ -8,7 +8,6 @@
 namespace anisocert::oracle {
 
 using predicates::Point2;
-using predicates::Sign;
 
 namespace {
 

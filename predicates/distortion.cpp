@@ -25,9 +25,4 @@ Sign compare_tau_squared(const Sym2<Rational>& Mp, const Sym2<Rational>& Mq, con
   return sign_of_root_sum(t.B - g * t.m, Rational(1), t.D);
 }
 
-theory::Interval tau_squared_enclosure(const Sym2<Rational>& Mp, const Sym2<Rational>& Mq, mpfr_prec_t prec) {
-  const TauSquared t = tau_squared(Mp, Mq);
-  return (theory::Interval(t.B, prec) + sqrt(theory::Interval(t.D, prec))) / theory::Interval(t.m, prec);
-}
-
 }  // namespace anisocert::predicates

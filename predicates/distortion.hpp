@@ -6,7 +6,6 @@
 
 #include "predicates/filtered_sign.hpp"
 #include "predicates/point.hpp"
-#include "theory/interval.hpp"
 
 namespace anisocert::predicates {
 
@@ -68,8 +67,5 @@ Sign compare_tau(const Sym2<Rational>& Mp, const Sym2<Rational>& Mq, const Sym2<
 
 // sign(τ(p, q)² − g) for a rational g, exact (agrees with tau_at_most; a second code path).
 Sign compare_tau_squared(const Sym2<Rational>& Mp, const Sym2<Rational>& Mq, const Rational& g);
-
-// A certified enclosure of τ(p, q)², e.g. to pick a rational γ² just above it.
-theory::Interval tau_squared_enclosure(const Sym2<Rational>& Mp, const Sym2<Rational>& Mq, mpfr_prec_t prec);
 
 }  // namespace anisocert::predicates

@@ -12,8 +12,8 @@
 // Rational — the same code for all three.
 
 #include "predicates/error_model.hpp"
-#include "predicates/filter_interval.hpp"
-#include "predicates/sign.hpp"
+#include "numbers/filter_interval.hpp"
+#include "numbers/sign.hpp"
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 // at construction (LS §2: M_p symmetric positive definite).
 
 #include "predicates/point.hpp"
-#include "predicates/sign.hpp"
+#include "numbers/sign.hpp"
 
 #include <optional>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // Exact signs of sums of square roots with rational coefficients, for comparisons of
 // quadratic irrationals (τ², LS Proposition 1; the LS Lemma 8 and Lemma 22 comparisons).
 
-#include "predicates/sign.hpp"
+#include "numbers/sign.hpp"
 
 namespace anisocert::predicates {
 

@@ -132,7 +132,7 @@ RC_GTEST_PROP(BWY_L2, EdgesOfVZAreWedged, ()) {
     // r(q)² ≤ B² δ² ⇔ Q_a(q) − B² δ_lo² ≤ 0 (δ_lo ≤ δ makes this a sufficient check).
     Conic q = distance_conic(dg.sheared.sites[a], dg.sheared.metrics[a]);
     q.f -= B * B * (is_c ? d2_abc : d2_abd);
-    RC_PRE(n.at.sign_of(q) != anisocert::predicates::Sign::positive);
+    RC_PRE(n.at.sign_of(q) != anisocert::Sign::positive);
   }
   RC_PRE(found == 2);
   for (const Arc& arc : dg.arcs) RC_ASSERT(arc.wedged);

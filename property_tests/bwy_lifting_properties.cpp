@@ -12,6 +12,7 @@
 
 using anisocert::Rational;
 using namespace anisocert::predicates;
+using anisocert::sign_of;
 using namespace anisocert::gen;
 
 namespace {

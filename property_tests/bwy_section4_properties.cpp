@@ -3,7 +3,7 @@
 
 #include "property_tests/generators/rationals.hpp"
 #include "theory/bwy_section4.hpp"
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_theorem11.hpp"
 #include "theory/ls_theorem9.hpp"
 
@@ -15,6 +15,7 @@ using anisocert::Rational;
 using anisocert::gen::rational_in;
 using anisocert::gen::ten_to_minus;
 using namespace anisocert::theory;
+using namespace anisocert;
 
 namespace {
 const mpfr_prec_t prec = 256;

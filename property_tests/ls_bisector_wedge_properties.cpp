@@ -11,6 +11,8 @@
 
 using anisocert::Rational;
 using namespace anisocert::predicates;
+using anisocert::Sign;
+using anisocert::sign_of;
 using namespace anisocert::gen;
 
 namespace {

@@ -12,6 +12,7 @@
 
 using anisocert::Rational;
 using namespace anisocert::predicates;
+using anisocert::Sign;
 using namespace anisocert::gen;
 using anisocert::gen::ten_to_minus;
 

@@ -11,6 +11,7 @@
 
 using anisocert::Rational;
 using namespace anisocert::predicates;
+using anisocert::Sign;
 using namespace anisocert::gen;
 
 namespace {
@@ -36,7 +37,7 @@ RC_GTEST_PROP(LS_P1, TauIsAtLeastOneSymmetricAndExactlyOneForEqualMetrics, ()) {
 RC_GTEST_PROP(LS_P1, TwoComputationsOfTauAgree, ()) {
   const auto [p, q] = *metric_pair();
   RC_TAG(p.kind);
-  const anisocert::theory::Interval t2 = tau_squared_enclosure(p.M, q.M, prec);
+  const anisocert::Interval t2 = tau_squared_enclosure(p.M, q.M, prec);
   for (const Rational& g : std::vector<Rational>{rational_above(t2), rational_below(t2), Rational(1), *rational_in(Rational(1), Rational(3))})
     RC_ASSERT(tau_at_most(p.M, q.M, g) == (compare_tau_squared(p.M, q.M, g) != Sign::positive));
   RC_ASSERT(tau_at_most(p.M, q.M, rational_above(t2)));
@@ -67,7 +68,7 @@ RC_GTEST_PROP(LS_P1, TauComparisonAgreesWithEnclosures, ()) {
   const auto [a, b] = *metric_pair();
   RC_TAG(p.kind + "/" + a.kind);
   const Sign s = compare_tau(p.M, q.M, a.M, b.M);
-  const anisocert::theory::Interval t1 = tau_squared_enclosure(p.M, q.M, prec), t2 = tau_squared_enclosure(a.M, b.M, prec);
+  const anisocert::Interval t1 = tau_squared_enclosure(p.M, q.M, prec), t2 = tau_squared_enclosure(a.M, b.M, prec);
   if (certainly_less(t1, t2)) RC_ASSERT(s == Sign::negative);
   if (certainly_less(t2, t1)) RC_ASSERT(s == Sign::positive);
   if (s == Sign::zero) RC_ASSERT(!certainly_less(t1, t2) && !certainly_less(t2, t1));
@@ -85,7 +86,7 @@ RC_GTEST_PROP(BWY_D21, DistortionFromFramesAgreesWithMetrics, ()) {
     const Sym2<Rational> AtA{c1.x * c1.x + c1.y * c1.y, c1.x * c2.x + c1.y * c2.y, c2.x * c2.x + c2.y * c2.y};
     return scaled_difference_psd(g, Sym2<Rational>{1, 0, 1}, AtA);
   };
-  const anisocert::theory::Interval t2 = tau_squared_enclosure(p.M, q.M, prec);
+  const anisocert::Interval t2 = tau_squared_enclosure(p.M, q.M, prec);
   for (const Rational& g : std::vector<Rational>{rational_above(t2), rational_below(t2), *rational_in(Rational(1), Rational(4))})
     RC_ASSERT(tau_at_most(p.M, q.M, g) == (spectral_at_most(q.F, p.F, g) && spectral_at_most(p.F, q.F, g)));
 }

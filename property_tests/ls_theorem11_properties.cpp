@@ -2,7 +2,7 @@
 // and their enclosures, over generated θ_bound including values within 10⁻⁷⁰ of θ_max.
 
 #include "property_tests/generators/rationals.hpp"
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_lemma_factors.hpp"
 #include "theory/ls_theorem11.hpp"
 #include "theory/ls_theorem9.hpp"
@@ -16,6 +16,7 @@ using anisocert::Rational;
 using anisocert::gen::Theta;
 using anisocert::gen::ten_to_minus;
 using namespace anisocert::theory;
+using namespace anisocert;
 
 namespace {
 // θ comes within 10⁻⁷⁰ of θ_max, where γ − 1 and angle − 60° are about 10⁻⁷¹: 512 bits

@@ -20,6 +20,7 @@
 
 using anisocert::Rational;
 using namespace anisocert::predicates;
+using anisocert::Sign;
 using namespace anisocert::gen;
 
 namespace {
@@ -60,7 +61,7 @@ rc::Gen<Configuration> configuration() {
 
 bool orientation_nonzero(const Configuration& c) { return orientation(c.v[0], c.v[1], c.v[2]) != Sign::zero; }
 
-Rational sqrt_above(const Rational& x) { return rational_above(sqrt(anisocert::theory::Interval(x, prec))); }
+Rational sqrt_above(const Rational& x) { return rational_above(sqrt(anisocert::Interval(x, prec))); }
 
 }  // namespace
 

@@ -12,6 +12,7 @@ using anisocert::Rational;
 using anisocert::gen::rational_in;
 using anisocert::gen::ten_to_minus;
 using namespace anisocert::theory;
+using namespace anisocert;
 
 namespace {
 

@@ -15,6 +15,7 @@
 
 using anisocert::Rational;
 using namespace anisocert::predicates;
+using anisocert::Sign;
 using namespace anisocert::gen;
 
 namespace {

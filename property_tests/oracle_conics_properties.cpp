@@ -13,6 +13,8 @@
 
 using anisocert::Rational;
 using namespace anisocert::oracle;
+using anisocert::Sign;
+using anisocert::sign_of;
 namespace qq = anisocert::second_engine;
 
 namespace {

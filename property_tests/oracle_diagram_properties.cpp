@@ -94,7 +94,7 @@ RC_GTEST_PROP(LS_L6, WedgedVertexTrianglesArePositive, ()) {
     if (!n.wedged || !n.boundary_edges.empty() || n.sites.size() != 3) continue;
     const auto& s = c.input.sites;
     RC_ASSERT(anisocert::predicates::orientation(s[t.sites[0]], s[t.sites[1]], s[t.sites[2]]) ==
-              anisocert::predicates::Sign::positive);
+              anisocert::Sign::positive);
   }
 }
 

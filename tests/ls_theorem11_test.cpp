@@ -1,6 +1,6 @@
 // LS Theorem 11 against closed forms and against the digits printed in the paper.
 
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_theorem11.hpp"
 
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 using anisocert::parse_rational;
 using anisocert::Rational;
 using namespace anisocert::theory;
+using namespace anisocert;
 
 namespace {
 const mpfr_prec_t prec = 256;

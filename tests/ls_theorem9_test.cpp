@@ -9,6 +9,7 @@
 using anisocert::parse_rational;
 using anisocert::Rational;
 using namespace anisocert::theory;
+using namespace anisocert;
 
 namespace {
 const mpfr_prec_t prec = 200;

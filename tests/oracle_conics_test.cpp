@@ -9,6 +9,8 @@
 using anisocert::parse_rational;
 using anisocert::Rational;
 using namespace anisocert::oracle;
+using anisocert::Sign;
+using anisocert::sign_of;
 
 namespace {
 

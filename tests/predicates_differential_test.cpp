@@ -21,6 +21,8 @@
 
 using anisocert::Rational;
 using namespace anisocert::predicates;
+using anisocert::Sign;
+using anisocert::FilterInterval;
 
 namespace {
 

@@ -11,6 +11,8 @@
 using anisocert::parse_rational;
 using anisocert::Rational;
 using namespace anisocert::predicates;
+using anisocert::Sign;
+using anisocert::sign_of;
 
 namespace {
 Sym2<Rational> S2(const char* a, const char* b, const char* c) {

@@ -15,7 +15,7 @@
 namespace {
 
 using anisocert::predicates::Point2;
-using anisocert::predicates::Sign;
+using anisocert::Sign;
 using anisocert::predicates::Sym2;
 using anisocert::refiners::star::quasi_cocircular;
 

@@ -132,7 +132,7 @@ TEST(StarRefiner, ShareOfTrianglesThatAreTheLabelleShewchukDual) {
 TEST(StarRefiner, ReflexCornerConverges) {
   const Polygon nonagon = {{0.59375, -0.03125}, {0.78125, 0.53125}, {0.34375, 0.828125}, {-0.53125, 0.75}, {-0.875, 0.28125},
                            {-0.953125, -0.15625}, {-0.609375, -0.671875}, {0.171875, -0.96875}, {0.59375, -0.75}};
-  ASSERT_EQ(predicates::orientation(nonagon[8], nonagon[0], nonagon[1]), predicates::Sign::negative);  // reflex at corner 0
+  ASSERT_EQ(predicates::orientation(nonagon[8], nonagon[0], nonagon[1]), anisocert::Sign::negative);  // reflex at corner 0
   for (const double alpha : {0.0, 1.0}) {
     RefineParameters p;
     p.max_vertices = 5000;

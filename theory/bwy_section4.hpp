@@ -2,7 +2,7 @@
 // Boissonnat, Wormser & Yvinec, "Anisotropic diagrams: Labelle Shewchuk approach revisited",
 // §4: the overlap condition of Lemma 2 and the minimal-interdistance conditions of §4.2.
 
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 #include <optional>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The distance factors of LS §10 (Labelle & Shewchuk 2003), as certified intervals of γ.
 
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 namespace anisocert::theory {
 

@@ -3,7 +3,7 @@
 // between adjoining segments, the minimal-distance factor, and the upper limit of θ_bound.
 // Angles are in degrees; θ is an exact rational number of degrees.
 
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 namespace anisocert::theory {
 

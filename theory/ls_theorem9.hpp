@@ -2,7 +2,7 @@
 // LS Theorem 9 and Corollary 10 (Labelle & Shewchuk 2003, §6): the quality parameter χ and
 // the angle bounds it gives. Angles in degrees.
 
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 namespace anisocert::theory {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Certified enclosure of a root by bisection on sign changes of an interval extension.
 
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 #include <functional>
 

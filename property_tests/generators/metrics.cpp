@@ -1,7 +1,7 @@
 #include "property_tests/generators/metrics.hpp"
 
 #include "predicates/distortion.hpp"
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 
 namespace anisocert::gen {
 
@@ -96,12 +96,17 @@ Rational d2(const Sym2<Rational>& M, const Point2<Rational>& a, const Point2<Rat
   return predicates::quadratic_form(M.m11, M.m12, M.m22, Rational(b.x - a.x), Rational(b.y - a.y));
 }
 
-Rational tau2_above(const Sym2<Rational>& P, const Sym2<Rational>& Q) {
-  return rational_above(predicates::tau_squared_enclosure(P, Q, 200));
+anisocert::Interval tau_squared_enclosure(const Sym2<Rational>& P, const Sym2<Rational>& Q, mpfr_prec_t prec) {
+  const predicates::TauSquared t = predicates::tau_squared(P, Q);
+  return (anisocert::Interval(t.B, prec) + sqrt(anisocert::Interval(t.D, prec))) / anisocert::Interval(t.m, prec);
 }
 
-Rational rational_above(const theory::Interval& x) { return parse_rational(theory::to_decimal(x, 30).hi); }
-Rational rational_below(const theory::Interval& x) { return parse_rational(theory::to_decimal(x, 30).lo); }
+Rational tau2_above(const Sym2<Rational>& P, const Sym2<Rational>& Q) {
+  return rational_above(tau_squared_enclosure(P, Q, 200));
+}
+
+Rational rational_above(const anisocert::Interval& x) { return parse_rational(anisocert::to_decimal(x, 30).hi); }
+Rational rational_below(const anisocert::Interval& x) { return parse_rational(anisocert::to_decimal(x, 30).lo); }
 
 std::ostream& operator<<(std::ostream& os, const Tagged& t) { return os << t.M << " (" << t.kind << ")"; }
 

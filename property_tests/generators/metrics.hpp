@@ -5,7 +5,7 @@
 
 #include "predicates/point.hpp"
 #include "property_tests/generators/rationals.hpp"
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 #include <string>
 #include <utility>
@@ -55,12 +55,15 @@ Point2<Rational> at_distance(const Point2<Rational>& q, const Frame& F, const Ra
 
 Rational d2(const Sym2<Rational>& M, const Point2<Rational>& a, const Point2<Rational>& b);  // d_M(a, b)²
 
+// A certified enclosure of τ(P, Q)² = (B + √D)/m from its exact data (predicates::tau_squared).
+anisocert::Interval tau_squared_enclosure(const Sym2<Rational>& P, const Sym2<Rational>& Q, mpfr_prec_t prec);
+
 // A rational γ² >= τ(P, Q)², from a certified enclosure of τ².
 Rational tau2_above(const Sym2<Rational>& P, const Sym2<Rational>& Q);
 
 // A rational just above (or below) the certified enclosure x: its upper (lower) end in 30 digits.
-Rational rational_above(const theory::Interval& x);
-Rational rational_below(const theory::Interval& x);
+Rational rational_above(const anisocert::Interval& x);
+Rational rational_below(const anisocert::Interval& x);
 
 }  // namespace anisocert::gen
 

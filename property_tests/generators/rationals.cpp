@@ -1,6 +1,6 @@
 #include "property_tests/generators/rationals.hpp"
 
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_theorem11.hpp"
 
 namespace anisocert::gen {
@@ -21,7 +21,7 @@ rc::Gen<Rational> rational_in(const Rational& lo, const Rational& hi) {
 
 Rational theta_max_truncated(int decimals) {
   static const Rational theta_max_lo =
-      parse_rational(theory::to_decimal(theory::ls_t11_theta_max_deg(600), 150).lo);
+      parse_rational(anisocert::to_decimal(theory::ls_t11_theta_max_deg(600), 150).lo);
   const Integer scale = boost::multiprecision::pow(Integer{10}, decimals);
   const Rational scaled = theta_max_lo * scale;
   const Integer truncated = boost::multiprecision::numerator(scaled) / boost::multiprecision::denominator(scaled);

@@ -20,7 +20,6 @@
 namespace anisocert::refiners::star {
 
 using predicates::Point2;
-using predicates::Sign;
 using predicates::Sym2;
 
 const char* rule_name(int rule) {

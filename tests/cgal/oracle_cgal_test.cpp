@@ -568,7 +568,7 @@ TEST(CertifierVsCgal, DelaunayMeshesAreValidAndLocallyUniformAndAFlipIsCaught) {
       const int a = e.first, b = e.second, p = tp.second, q = back->second.second;
       const auto& S = m.sites;
       if (orientation(S[p], S[q], S[a]) * orientation(S[p], S[q], S[b]) >= 0) continue;  // not strictly convex
-      if (anisocert::predicates::incircle(S[a], S[b], S[p], S[q], m.metrics[0]) == anisocert::predicates::Sign::zero)
+      if (anisocert::predicates::incircle(S[a], S[b], S[p], S[q], m.metrics[0]) == anisocert::Sign::zero)
         continue;
       oracle::Mesh g = m;
       g.triangles[tp.first] = {p, q, b};  // the quadrilateral a, q, b, p split by pq instead of ab

@@ -13,7 +13,7 @@
 
 #include <mpfi.h>
 
-namespace anisocert::theory {
+namespace anisocert {
 
 class Interval {
  public:
@@ -71,4 +71,4 @@ bool certainly_less(const Interval& a, const Interval& b);
 Interval degrees(const Interval& radians);
 Interval radians(const Interval& degrees);
 
-}  // namespace anisocert::theory
+}  // namespace anisocert

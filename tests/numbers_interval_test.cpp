@@ -1,14 +1,14 @@
 // The interval layer of theory/: inclusion of exact rationals, domain errors instead of
 // undefined enclosures, and the order predicates.
 
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
 using anisocert::Rational;
-using anisocert::theory::Interval;
+using anisocert::Interval;
 
 TEST(Interval, EnclosesRationalsThatBinaryCannotRepresent) {
   Interval third(Rational(1, 3), 64);

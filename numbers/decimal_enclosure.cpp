@@ -1,11 +1,11 @@
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 
 #include <cstdlib>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 
-namespace anisocert::theory {
+namespace anisocert {
 namespace {
 
 std::string positional(mpfr_srcptr x, int digits, mpfr_rnd_t rnd) {
@@ -88,4 +88,4 @@ int common_significant_digits(const DecimalEnclosure& e) {
   return count;
 }
 
-}  // namespace anisocert::theory
+}  // namespace anisocert

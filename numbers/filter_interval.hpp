@@ -5,14 +5,14 @@
 // most half the smallest subnormal), so the widened interval contains every exact result.
 // Overflow gives infinite endpoints, which only makes the interval undecided.
 
-#include "predicates/sign.hpp"
+#include "numbers/sign.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 
-namespace anisocert::predicates {
+namespace anisocert {
 
 struct FilterInterval {
   double lo, hi;
@@ -58,4 +58,4 @@ struct FilterInterval {
   }
 };
 
-}  // namespace anisocert::predicates
+}  // namespace anisocert

@@ -2,11 +2,11 @@
 // Decimal text of a certified interval: lo rounded toward -inf, hi toward +inf, so that the
 // decimal interval [lo, hi] still contains the exact value (it can only grow).
 
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 #include <string>
 
-namespace anisocert::theory {
+namespace anisocert {
 
 struct DecimalEnclosure {
   std::string lo;  // plain positional notation, e.g. "1.12783848", "-0.0031", "250"
@@ -25,4 +25,4 @@ std::string certified_digits(const DecimalEnclosure& e);
 // correct digits of either endpoint as an approximation of the exact value.
 int common_significant_digits(const DecimalEnclosure& e);
 
-}  // namespace anisocert::theory
+}  // namespace anisocert

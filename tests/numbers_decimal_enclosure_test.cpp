@@ -1,12 +1,12 @@
 // Decimal text of enclosures: outward directed rounding and the certified prefix.
 // Expected strings are written by hand from the rationals' decimal expansions.
 
-#include "theory/decimal_enclosure.hpp"
+#include "numbers/decimal_enclosure.hpp"
 
 #include <gtest/gtest.h>
 
 using anisocert::Rational;
-using namespace anisocert::theory;
+using namespace anisocert;
 
 TEST(DecimalEnclosure, RoundsOutward) {
   DecimalEnclosure third = to_decimal(Interval(Rational(1, 3), 128), 10);

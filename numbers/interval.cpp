@@ -1,10 +1,10 @@
-#include "theory/interval.hpp"
+#include "numbers/interval.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
 
-namespace anisocert::theory {
+namespace anisocert {
 namespace {
 
 mpfr_prec_t joint(const Interval& a, const Interval& b) { return std::max(a.precision(), b.precision()); }
@@ -151,4 +151,4 @@ bool certainly_less(const Interval& a, const Interval& b) { return mpfr_cmp(a.up
 Interval degrees(const Interval& radians) { return 180 * radians / Interval::pi(radians.precision()); }
 Interval radians(const Interval& degrees) { return degrees * Interval::pi(degrees.precision()) / 180; }
 
-}  // namespace anisocert::theory
+}  // namespace anisocert

@@ -1,0 +1,55 @@
+#include "geometry/polygon.hpp"
+
+namespace anisocert::geometry {
+namespace {
+
+using Point = Point2<Rational>;
+
+// The crossing point of two properly crossing segments: p1 + t (p2 − p1) with
+// t = P(q1, q2, p1) / (P(q1, q2, p1) − P(q1, q2, p2)), P the orientation polynomial; the
+// denominator is non-zero since the two values have opposite signs.
+Point crossing_point(const Point& p1, const Point& p2, const Point& q1, const Point& q2) {
+  const auto P = [](const Point& a, const Point& b, const Point& c) {
+    return predicates::OrientationKernel::eval<Rational>({a.x, a.y, b.x, b.y, c.x, c.y});
+  };
+  const Rational s = P(q1, q2, p1), t = s / (s - P(q1, q2, p2));
+  return {p1.x + t * (p2.x - p1.x), p1.y + t * (p2.y - p1.y)};
+}
+
+// Where two touching segments meet: the first endpoint of one that lies on the other.
+Point touching_point(const Point& p1, const Point& p2, const Point& q1, const Point& q2) {
+  if (on_segment(q1, p1, p2)) return q1;
+  if (on_segment(q2, p1, p2)) return q2;
+  if (on_segment(p1, q1, q2)) return p1;
+  return p2;
+}
+
+}  // namespace
+
+std::optional<PolygonDefect> simplicity_defect(const Polygon<Rational>& v) {
+  using Kind = PolygonDefect::Kind;
+  const std::size_t m = v.size();
+  for (std::size_t k = 0; k < m; ++k)
+    if (v[k].x == v[(k + 1) % m].x && v[k].y == v[(k + 1) % m].y) return PolygonDefect{Kind::zero_length_edge, k};
+  for (std::size_t k = 0; k < m; ++k) {
+    const Point &a = v[(k + m - 1) % m], &b = v[k], &c = v[(k + 1) % m];
+    if (predicates::orientation(a, b, c) == Sign::zero && (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) < 0)
+      return PolygonDefect{Kind::folds_back, k};
+  }
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 2; j < m; ++j) {
+      if (i == 0 && j == m - 1) continue;  // adjacent through corner 0
+      const Point &p1 = v[i], &p2 = v[i + 1], &q1 = v[j], &q2 = v[(j + 1) % m];
+      switch (segments_meet(p1, p2, q1, q2)) {
+        case Meeting::none: break;
+        case Meeting::crossing: return PolygonDefect{Kind::edges_meet, i, j, true, crossing_point(p1, p2, q1, q2)};
+        case Meeting::touching: return PolygonDefect{Kind::edges_meet, i, j, false, touching_point(p1, p2, q1, q2)};
+      }
+    }
+  Rational twice_area = 0;
+  for (std::size_t k = 0; k < m; ++k) twice_area += v[k].x * v[(k + 1) % m].y - v[(k + 1) % m].x * v[k].y;
+  if (twice_area < 0) return PolygonDefect{Kind::clockwise};
+  return std::nullopt;
+}
+
+}  // namespace anisocert::geometry
