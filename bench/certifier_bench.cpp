@@ -4,7 +4,7 @@
 // check holds and runs to the end; "isotropic" with M = I, "anisotropic" with M = diag(16, 1) on
 // a lattice 4 times finer in x (the same mesh seen through the metric).
 // Run: build/bin/certifier_bench (figures in docs/bench.md).
-#include "oracle/mesh_certifier.hpp"
+#include "oracle/certify/mesh_certifier.hpp"
 #include "predicates/incircle.hpp"
 
 #include <benchmark/benchmark.h>
@@ -18,8 +18,8 @@ using anisocert::predicates::Sym2;
 
 namespace {
 
-Mesh lattice(int k, bool anisotropic) {
-  Mesh m;
+Mesh<Rational> lattice(int k, bool anisotropic) {
+  Mesh<Rational> m;
   const double sx = anisotropic ? 0.25 : 1.0;
   const Sym2<Rational> M = anisotropic ? Sym2<Rational>{16, 0, 1} : Sym2<Rational>{1, 0, 1};
   std::mt19937 rng(5);
@@ -48,7 +48,7 @@ Mesh lattice(int k, bool anisotropic) {
 }
 
 void uniform(benchmark::State& state, bool anisotropic) {
-  const Mesh m = lattice(static_cast<int>(state.range(0)), anisotropic);
+  const Mesh<Rational> m = lattice(static_cast<int>(state.range(0)), anisotropic);
   CertifyOptions o;
   o.valid = false;
   CertifyReport r;
@@ -59,7 +59,7 @@ void uniform(benchmark::State& state, bool anisotropic) {
 }
 
 void valid(benchmark::State& state) {
-  const Mesh m = lattice(static_cast<int>(state.range(0)), false);
+  const Mesh<Rational> m = lattice(static_cast<int>(state.range(0)), false);
   CertifyOptions o;
   o.uniform = false;
   CertifyReport r;

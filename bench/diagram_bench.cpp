@@ -3,7 +3,7 @@
 // eigen-directions turn with x and whose anisotropy (ratio of unit-ball axes) varies smoothly
 // from 1:1 to 10:1 with y. Each phase's time is reported as a counter (seconds).
 // Run: build/bin/diagram_bench (figures in docs/bench.md); peak memory: /usr/bin/time -v.
-#include "oracle/diagram.hpp"
+#include "oracle/diagram/diagram.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -15,8 +15,8 @@ using namespace anisocert::oracle;
 
 namespace {
 
-DiagramInput random_input(int n, unsigned seed) {
-  DiagramInput in;
+Mesh<Rational> random_input(int n, unsigned seed) {
+  Mesh<Rational> in;
   in.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   std::mt19937 rng(seed);
   std::uniform_int_distribution<int> coord(1, 99999);
@@ -36,7 +36,7 @@ DiagramInput random_input(int n, unsigned seed) {
 }
 
 void diagram(benchmark::State& state) {
-  const DiagramInput in = random_input(static_cast<int>(state.range(0)), 2026);
+  const Mesh<Rational> in = random_input(static_cast<int>(state.range(0)), 2026);
   Diagram d;
   for (auto _ : state) d = compute_diagram(in);
   state.counters["candidates_s"] = d.stats.seconds_candidates;

@@ -3,7 +3,7 @@
 // and through the exact path (the gcd zero test, for a polynomial that vanishes there).
 // Run: build/bin/oracle_bench (figures in docs/bench.md).
 
-#include "oracle/conic_intersection.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -4,7 +4,7 @@
 #include "cli/theory_command.hpp"
 #include "cli/usage_error.hpp"
 #include "io/site_set.hpp"
-#include "oracle/mesh_certifier.hpp"
+#include "oracle/certify/mesh_certifier.hpp"
 
 #include <sstream>
 
@@ -52,7 +52,7 @@ int run_certify(const CertifyCommandOptions& c) {
     throw UsageError(e.what());
   }
   if (s.triangles.empty()) throw UsageError(c.input + ": triangles: a mesh needs a non-empty \"triangles\" array");
-  oracle::Mesh mesh{s.sites, {}, s.domain, s.segments, s.triangles};
+  oracle::Mesh<Rational> mesh{s.sites, {}, s.domain, s.segments, s.triangles};
   for (const auto& m : s.metrics) mesh.metrics.push_back(m.entries());
   const oracle::CertifyReport r = oracle::certify_mesh(mesh, o);
   const bool holds = r.holds(o);

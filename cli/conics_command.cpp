@@ -3,7 +3,7 @@
 
 #include "cli/output.hpp"
 #include "cli/usage_error.hpp"
-#include "oracle/conic_intersection.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
 
 #include <sstream>
 

@@ -8,7 +8,7 @@
 #include "io/diagram_json.hpp"
 #include "io/diagram_svg.hpp"
 #include "io/site_set.hpp"
-#include "oracle/mesh_certifier.hpp"
+#include "oracle/certify/mesh_certifier.hpp"
 
 #include <cmath>
 #include <iostream>
@@ -23,8 +23,8 @@ struct DiagramOptions {
   bool quiet = false;
 };
 
-oracle::DiagramInput diagram_input(const io::SiteSet& s) {
-  oracle::DiagramInput in;
+oracle::Mesh<Rational> diagram_input(const io::SiteSet& s) {
+  oracle::Mesh<Rational> in;
   in.sites = s.sites;
   for (const auto& m : s.metrics) in.metrics.push_back(m.entries());
   in.domain = s.domain;
@@ -59,7 +59,7 @@ std::string summary(const oracle::Diagram& d, const std::string& name) {
   return o.str();
 }
 
-int run(const oracle::DiagramInput& in, const std::string& name, const DiagramOptions& o) {
+int run(const oracle::Mesh<Rational>& in, const std::string& name, const DiagramOptions& o) {
   const auto progress = progress_printer(o.quiet);
   oracle::Diagram d;
   try {
@@ -87,8 +87,8 @@ int run(const oracle::DiagramInput& in, const std::string& name, const DiagramOp
 // The demo's anisotropic field: the built-in shock field (refiners/star/metric_field.hpp) with
 // δ = 0.25, h = 1, α = 9: first eigen-direction along ∇f, lengths across the level lines of f
 // shrinking by up to 10; entries rounded to 2 decimals, exact as given.
-oracle::DiagramInput demo_input() {
-  oracle::DiagramInput in;
+oracle::Mesh<Rational> demo_input() {
+  oracle::Mesh<Rational> in;
   in.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   const auto field = refiners::star::make_field("shock", {{"delta", 0.25}, {"h", 1}, {"alpha", 9}});
   unsigned state = 12345;
@@ -145,7 +145,7 @@ std::string refine_and_certify(const std::string& svg_path, bool quiet) {
   const auto progress = progress_printer(quiet);
   const refiners::star::RefineResult r = refiners::star::refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, field, p, progress);
   const io::MeshData data = mesh_data(r);
-  const oracle::Mesh mesh = io::exact_mesh(data);
+  const oracle::Mesh<Rational> mesh = io::exact_mesh(data);
   oracle::CertifyOptions o;
   o.rho0 = rational_from_double(p.rho0), o.gamma0 = rational_from_double(p.gamma0);
   const oracle::CertifyReport c = oracle::certify_mesh(mesh, o);

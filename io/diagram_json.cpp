@@ -1,6 +1,6 @@
 #include "io/diagram_json.hpp"
 
-#include "oracle/conic_intersection.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
 
 namespace anisocert::io {
 

@@ -2,7 +2,7 @@
 // The diagram output of `anisocert diagram --json` (DESIGN.md § Command line and files; every
 // field is documented in docs/oracle.md), and the exact certificates of its witness points
 // (DESIGN.md § Certificates).
-#include "oracle/diagram.hpp"
+#include "oracle/diagram/diagram.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,7 @@
 // A picture of D|Ω (SVG): the domain, each face tinted by its site, orphans hatched and outlined,
 // each site with its metric's unit ellipse (scaled), arcs (wedged blue, unwedged red), Voronoi
 // vertices, the dual triangles, and the witness points of wedge violations.
-#include "oracle/diagram.hpp"
+#include "oracle/diagram/diagram.hpp"
 
 #include <string>
 

@@ -4,7 +4,7 @@
 // expansion so that `anisocert certify` reads exactly the numbers the refiner produced), Medit
 // .mesh + .sol (the per-vertex metric as a symmetric tensor m11 m12 m22, the format MMG reads),
 // and an SVG picture.
-#include "oracle/mesh_certifier.hpp"
+#include "oracle/certify/mesh_certifier.hpp"
 #include "predicates/point.hpp"
 
 #include <array>
@@ -23,7 +23,7 @@ struct MeshData {
 
 std::string mesh_json(const MeshData& m);
 // The same mesh with every double taken as the rational it denotes (for the exact certifier).
-oracle::Mesh exact_mesh(const MeshData& m);
+oracle::Mesh<Rational> exact_mesh(const MeshData& m);
 std::string medit_mesh(const MeshData& m);
 std::string medit_sol(const MeshData& m);
 std::string mesh_svg(const MeshData& m, const std::string& caption);

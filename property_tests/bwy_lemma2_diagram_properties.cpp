@@ -5,7 +5,7 @@
 // polygon P ⊆ Z: the intersection of polygons inscribed in the four balls of a rational radius
 // r ≤ 5Bδ_lo, where δ_lo ≤ δ is the shortest edge measured by any of the four metrics (so P ⊆ Z
 // whichever metric the paper measures δ with, since 1 + 4γ ≥ 5).
-#include "oracle/diagram.hpp"
+#include "oracle/diagram/diagram.hpp"
 #include "predicates/orientation.hpp"
 #include "property_tests/generators/metrics.hpp"
 #include "theory/bwy_section4.hpp"
@@ -84,7 +84,7 @@ RC_GTEST_PROP(BWY_L2, EdgesOfVZAreWedged, ()) {
   const int hc = *rc::gen::inRange(10, 17), hd = *rc::gen::inRange(10, 17), sc = *rc::gen::inRange(-3, 4),
             sd = *rc::gen::inRange(-3, 4);
   const std::vector<Point2<Rational>> u{{0, 0}, {1, 0}, {Rational(8 + sc, 16), Rational(hc, 16)}, {Rational(8 + sd, 16), Rational(-hd, 16)}};
-  DiagramInput in;
+  Mesh<Rational> in;
   std::vector<Frame> frames;
   for (int i = 0; i < 4; ++i) {
     in.sites.push_back(F.inverse(u[i]));

@@ -8,7 +8,7 @@
 // LU.T45: parameters meeting Theorem 4.5's decided conditions, on a constant field and a domain
 // meeting Lemma 4.1, terminate with the bounds.
 #include "io/mesh_output.hpp"
-#include "oracle/mesh_certifier.hpp"
+#include "oracle/certify/mesh_certifier.hpp"
 #include "refiners/star/star_refiner.hpp"
 #include "theory/lu_theorem45.hpp"
 

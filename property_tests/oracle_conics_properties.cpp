@@ -3,7 +3,7 @@
 // points (each qqbar point is proved equal to ours: it is a root of our defining polynomial
 // inside our isolating interval), the same multiplicities, order and signs of polynomials.
 
-#include "oracle/conic_intersection.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
 #include "property_tests/generators/rationals.hpp"
 #include "property_tests/second_engine/qqbar_conics.hpp"
 

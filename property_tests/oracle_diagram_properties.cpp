@@ -3,7 +3,7 @@
 // rational points), LS.T4 (a face whose boundary is wedged is star-shaped from its site, hence
 // no orphan), LS.L6 (a wedged vertex's dual triangle is positively oriented), LS.T7 (the
 // preconditions imply that the dual is a triangulation of Ω, checked exactly).
-#include "oracle/diagram.hpp"
+#include "oracle/diagram/diagram.hpp"
 #include "predicates/orientation.hpp"
 #include "property_tests/generators/diagram_inputs.hpp"
 
@@ -22,7 +22,7 @@ bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.
 
 // The diagram, or a discarded case when the oracle declines a one-dimensional tie by name
 // (docs/oracle.md § Limits; RapidCheck counts discards and fails if they dominate).
-Diagram diagram_or_discard(const DiagramInput& in) {
+Diagram diagram_or_discard(const Mesh<Rational>& in) {
   try {
     return compute_diagram(in);
   } catch (const std::domain_error& e) {

@@ -1,7 +1,7 @@
 // The exact mesh certifier (oracle/mesh_certifier.hpp) on meshes with known answers: closed-form
 // radius-edge ratios and distortions, a non-Delaunay quadrilateral, cocircular ties, and broken
 // triangulations (a hole, an overlap, a clockwise triangle, a segment that is not a union of edges).
-#include "oracle/mesh_certifier.hpp"
+#include "oracle/certify/mesh_certifier.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@ using anisocert::Rational;
 using namespace anisocert::oracle;
 
 // The unit square split at an interior point c into four triangles, identity metrics.
-Mesh fan(const Rational& cx, const Rational& cy) {
-  Mesh m;
+Mesh<Rational> fan(const Rational& cx, const Rational& cy) {
+  Mesh<Rational> m;
   m.sites = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {cx, cy}};
   m.metrics.assign(5, {1, 0, 1});
   m.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -23,7 +23,7 @@ Mesh fan(const Rational& cx, const Rational& cy) {
 // Closed form: the right isosceles triangle (0,0), (1,0), (1/2,1/2) has circumradius 1/2 and
 // shortest edge √2/2, ratio 1/√2 ≈ 0.7071; the fan around the centre of the unit square has four.
 TEST(MeshCertifier, RadiusEdgeRatioAgainstTheClosedForm) {
-  const Mesh m = fan(Rational(1, 2), Rational(1, 2));
+  const Mesh<Rational> m = fan(Rational(1, 2), Rational(1, 2));
   CertifyOptions o;
   o.rho0 = Rational(708, 1000);
   EXPECT_TRUE(certify_mesh(m, o).rho_violations.empty());
@@ -35,7 +35,7 @@ TEST(MeshCertifier, RadiusEdgeRatioAgainstTheClosedForm) {
 
 // Closed form: τ(I, 4I) = 2 (LS: the largest stretch between the two unit balls).
 TEST(MeshCertifier, DistortionAgainstTheClosedForm) {
-  Mesh m = fan(Rational(1, 2), Rational(1, 3));
+  Mesh<Rational> m = fan(Rational(1, 2), Rational(1, 3));
   m.metrics[4] = {4, 0, 4};
   CertifyOptions o;
   o.gamma0 = 2;
@@ -52,7 +52,7 @@ TEST(MeshCertifier, ValidFanIsLocallyUniformAndTheSquareCentreIsATie) {
   EXPECT_TRUE(off.uniform_violations.empty());
   EXPECT_TRUE(off.uniform_ties.empty());
   // Two triangles of the unit square split by a diagonal: all four corners are cocircular.
-  Mesh sq;
+  Mesh<Rational> sq;
   sq.sites = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   sq.metrics.assign(4, {1, 0, 1});
   sq.domain = sq.sites;
@@ -65,7 +65,7 @@ TEST(MeshCertifier, ValidFanIsLocallyUniformAndTheSquareCentreIsATie) {
 
 // A quadrilateral split by its long diagonal: the other vertex is inside the circumcircle.
 TEST(MeshCertifier, NonDelaunayDiagonalIsAViolationWithWitness) {
-  Mesh m;
+  Mesh<Rational> m;
   m.sites = {{0, 0}, {4, 0}, {4, 1}, {0, 1}};
   m.metrics.assign(4, {1, 0, 1});
   m.sites[2] = {3, 1};
@@ -91,19 +91,19 @@ TEST(MeshCertifier, NonDelaunayDiagonalIsAViolationWithWitness) {
 }
 
 TEST(MeshCertifier, BrokenTriangulationsAreRejectedByName) {
-  Mesh hole = fan(Rational(1, 2), Rational(1, 3));
+  Mesh<Rational> hole = fan(Rational(1, 2), Rational(1, 3));
   hole.triangles.pop_back();
   CertifyReport r = certify_mesh(hole, {});
   EXPECT_FALSE(r.valid_holds());
-  Mesh clockwise = fan(Rational(1, 2), Rational(1, 3));
+  Mesh<Rational> clockwise = fan(Rational(1, 2), Rational(1, 3));
   std::swap(clockwise.triangles[0][0], clockwise.triangles[0][1]);
   r = certify_mesh(clockwise, {});
   ASSERT_FALSE(r.valid_holds());
   EXPECT_NE(r.valid->failures[0].find("triangle 0"), std::string::npos) << r.valid->failures[0];
-  Mesh overlap = fan(Rational(1, 2), Rational(1, 3));
+  Mesh<Rational> overlap = fan(Rational(1, 2), Rational(1, 3));
   overlap.triangles.push_back({0, 1, 4});
   EXPECT_FALSE(certify_mesh(overlap, {}).valid_holds());
-  Mesh segment = fan(Rational(1, 2), Rational(1, 3));
+  Mesh<Rational> segment = fan(Rational(1, 2), Rational(1, 3));
   segment.segments = {{0, 2}};  // the diagonal is not an edge
   r = certify_mesh(segment, {});
   ASSERT_EQ(r.segment_failures.size(), 1u);

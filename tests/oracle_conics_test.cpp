@@ -2,7 +2,7 @@
 // hand in the comment), and exact signs at the intersection points, including the trap that
 // CGAL 5.5's Algebraic_kernel_d_2::Sign_at_2 falls into (DESIGN.md § Numbers).
 
-#include "oracle/conic_intersection.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // multiplicatively weighted sites (M = w·I: bisectors are Apollonius circles), brute-force exact
 // sampling (the nearest-site set of a rational point, computed from the definition, must equal
 // the owners of whatever the oracle says contains it), and degenerate fixtures with known answers.
-#include "oracle/diagram.hpp"
+#include "oracle/diagram/diagram.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,13 +14,13 @@ namespace {
 using anisocert::Rational;
 using namespace anisocert::oracle;
 
-DiagramInput square_input(const Rational& lo, const Rational& hi) {
-  DiagramInput in;
+Mesh<Rational> square_input(const Rational& lo, const Rational& hi) {
+  Mesh<Rational> in;
   in.domain = {{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}};
   return in;
 }
 
-void add_site(DiagramInput& in, Rational x, Rational y, Rational m11, Rational m12, Rational m22) {
+void add_site(Mesh<Rational>& in, Rational x, Rational y, Rational m11, Rational m12, Rational m22) {
   in.sites.push_back({x, y});
   in.metrics.push_back({m11, m12, m22});
 }
@@ -56,7 +56,7 @@ int count_kind(const Diagram& d, Node::Kind k) {
 // radius² w_v w_w |v − w|²/(w_v − w_w)²: v = (0,0), w_v = 4, w = (3,0), w_w = 1 gives centre (−1, 0),
 // radius 2, around v. The heavier site's cell is the disc: an island bounded by a closed arc.
 TEST(OracleDiagram, WeightedPairIsAnIslandBoundedByTheApolloniusCircle) {
-  DiagramInput in = square_input(-5, 5);
+  Mesh<Rational> in = square_input(-5, 5);
   add_site(in, 0, 0, 4, 0, 4);
   add_site(in, 3, 0, 1, 0, 1);
   const Diagram d = compute_diagram(in);
@@ -81,7 +81,7 @@ TEST(OracleDiagram, WeightedTriplesAgreeWithBruteForce) {
   std::uniform_int_distribution<int> coord(1, 19), weight(1, 6);
   for (int trial = 0; trial < 12; ++trial) {
     SCOPED_TRACE(trial);
-    DiagramInput in = square_input(0, 1);
+    Mesh<Rational> in = square_input(0, 1);
     for (int i = 0; i < 4; ++i) {
       const Rational w = weight(rng);
       add_site(in, Rational(coord(rng), 20), Rational(coord(rng), 20), w, 0, w);
@@ -102,7 +102,7 @@ TEST(OracleDiagram, AnisotropicInputsAgreeWithBruteForce) {
   std::uniform_int_distribution<int> coord(1, 39), entry(-9, 9), diag(1, 10);
   for (int trial = 0; trial < 10; ++trial) {
     SCOPED_TRACE(trial);
-    DiagramInput in = square_input(0, 1);
+    Mesh<Rational> in = square_input(0, 1);
     for (int i = 0; i < 6 + trial; ++i) {
       // M = FᵀF with F = [[a, b], [0, c]] is positive definite for a, c ≠ 0.
       const Rational a(diag(rng)), b(entry(rng)), c(diag(rng));
@@ -115,7 +115,7 @@ TEST(OracleDiagram, AnisotropicInputsAgreeWithBruteForce) {
       for (int j : keep) dup = dup || (in.sites[j].x == in.sites[i].x && in.sites[j].y == in.sites[i].y);
       if (!dup) keep.push_back(static_cast<int>(i));
     }
-    DiagramInput clean = square_input(0, 1);
+    Mesh<Rational> clean = square_input(0, 1);
     for (int i : keep) clean.sites.push_back(in.sites[i]), clean.metrics.push_back(in.metrics[i]);
     const Diagram d = compute_diagram(clean);
     expect_brute_force_agrees(d, 24);
@@ -131,7 +131,7 @@ TEST(OracleDiagram, AnisotropicInputsAgreeWithBruteForce) {
 // vertex of degree 4 at the centre, its dual a convex quadrilateral, which polygonalizes Ω
 // (LS Theorem 7 with its preconditions met: corners are sites, each cut arc is owned by its edge).
 TEST(OracleDiagram, CocircularSitesGiveOneVertexOfDegreeFour) {
-  DiagramInput in;
+  Mesh<Rational> in;
   in.domain = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
   for (const auto& p : in.domain) add_site(in, p.x, p.y, 1, 0, 1);
   const Diagram d = compute_diagram(in);
@@ -150,7 +150,7 @@ TEST(OracleDiagram, CocircularSitesGiveOneVertexOfDegreeFour) {
 
 // Degenerate: the circumcentre (0, 0) of three sites at distance 1 lies exactly on ∂Ω.
 TEST(OracleDiagram, VertexExactlyOnTheDomainBoundary) {
-  DiagramInput in;
+  Mesh<Rational> in;
   in.domain = {{-2, 0}, {2, 0}, {2, 2}, {-2, 2}};
   add_site(in, Rational(-3, 5), Rational(4, 5), 1, 0, 1);
   add_site(in, Rational(3, 5), Rational(4, 5), 1, 0, 1);
@@ -168,7 +168,7 @@ TEST(OracleDiagram, VertexExactlyOnTheDomainBoundary) {
 // w = (−3, 0), w_w = 1 touches the top edge y = 2 of Ω at (1, 2): the arc runs from that point
 // around and back to it, and both cells stay connected.
 TEST(OracleDiagram, ArcTangentToTheDomainBoundary) {
-  DiagramInput in;
+  Mesh<Rational> in;
   in.domain = {{-4, -4}, {4, -4}, {4, 2}, {-4, 2}};
   add_site(in, 0, 0, 4, 0, 4);
   add_site(in, -3, 0, 1, 0, 1);
@@ -188,7 +188,7 @@ TEST(OracleDiagram, ArcTangentToTheDomainBoundary) {
 // u = (4/5, −3/5), M_u = I: all at squared distance 1 from (0, 0), and (0 − v)ᵀM_v(w − v) = 0, so
 // the vertex is on the boundary of wedge(v, w), which is open: not wedged (LS Definitions 2–3).
 TEST(OracleDiagram, VertexExactlyOnAWedgeLineIsNotWedged) {
-  DiagramInput in = square_input(-3, 3);
+  Mesh<Rational> in = square_input(-3, 3);
   add_site(in, -1, 0, 1, 0, 1);
   add_site(in, -1, 1, Rational(1, 2), 0, Rational(1, 2));
   add_site(in, Rational(4, 5), Rational(-3, 5), 1, 0, 1);
@@ -210,13 +210,13 @@ TEST(OracleDiagram, VertexExactlyOnAWedgeLineIsNotWedged) {
 
 // A single site owns Ω; two sites with equal metrics have a straight bisector.
 TEST(OracleDiagram, OneAndTwoSites) {
-  DiagramInput one = square_input(0, 1);
+  Mesh<Rational> one = square_input(0, 1);
   add_site(one, Rational(1, 3), Rational(1, 3), 2, 1, 3);
   const Diagram d1 = compute_diagram(one);
   EXPECT_EQ(d1.faces.size(), 1u);
   EXPECT_TRUE(d1.arcs.empty());
   EXPECT_FALSE(d1.dual_check.is_triangulation);
-  DiagramInput two = square_input(0, 1);
+  Mesh<Rational> two = square_input(0, 1);
   add_site(two, Rational(1, 4), Rational(1, 2), 1, 0, 1);
   add_site(two, Rational(3, 4), Rational(1, 2), 1, 0, 1);
   const Diagram d2 = compute_diagram(two);
@@ -234,7 +234,7 @@ namespace {
 // its face's boundary cycle, where ray casting cannot decide; such faces were called orphans.
 // With one constant metric every cell is convex and contains its site: no orphan at all.
 TEST(OracleDiagram, SitesOnDomainCornersAreNotOrphans) {
-  DiagramInput in;
+  Mesh<Rational> in;
   in.domain = {{0, 0}, {Rational(1, 2), 0}, {1, 0}, {1, Rational(1, 2)}, {1, 1}, {Rational(1, 2), 1}, {0, 1}, {0, Rational(1, 2)}};
   in.sites = in.domain;
   in.sites.push_back({Rational(5, 16), Rational(5, 16)});
@@ -257,7 +257,7 @@ TEST(OracleDiagram, NonConvexDomainAgreesWithBruteForce) {
   std::uniform_int_distribution<int> coord(1, 31), entry(-3, 3), diag(1, 5);
   for (int trial = 0; trial < 6; ++trial) {
     SCOPED_TRACE(trial);
-    DiagramInput in;
+    Mesh<Rational> in;
     in.domain = {{0, 0}, {1, 0}, {1, Rational(1, 2)}, {Rational(1, 2), Rational(1, 2)}, {Rational(1, 2), 1}, {0, 1}};
     add_site(in, Rational(1, 2), Rational(1, 2), 1, 0, 1);  // the reflex corner
     while (in.sites.size() < 7) {
@@ -288,7 +288,7 @@ namespace {
 // the face structure does not model): an std::domain_error naming the three sites, never a
 // wrong answer.
 TEST(OracleDiagram, ThreeSitesTiedAlongALineAreDeclinedByName) {
-  DiagramInput in = square_input(-3, 3);
+  Mesh<Rational> in = square_input(-3, 3);
   add_site(in, 0, 1, 1, 0, 1);
   add_site(in, 0, -1, 1, 0, 1);
   add_site(in, -1, 2, 1, Rational(1, 2), Rational(1, 2));
@@ -310,7 +310,7 @@ namespace {
 // edge y = 0 of the unit square where another site is nearest. (3) Three sites tied along the line
 // x = 0, outside Ω = [1/8, 1] × [0, 1]. All three are answered, and brute force agrees.
 TEST(OracleDiagram, TiesOutsideTheDiagramAreAnsweredNotDeclined) {
-  DiagramInput L;
+  Mesh<Rational> L;
   L.domain = {{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}};
   add_site(L, 1, 1, 1, 0, 1);
   add_site(L, 3, 1, 1, 0, 1);
@@ -321,13 +321,13 @@ TEST(OracleDiagram, TiesOutsideTheDiagramAreAnsweredNotDeclined) {
   EXPECT_EQ(v.owners, (std::vector<int>{0, 1, 2}));
   expect_brute_force_agrees(dl, 24);
 
-  DiagramInput e = square_input(0, 1);
+  Mesh<Rational> e = square_input(0, 1);
   add_site(e, Rational(9, 64), Rational(1, 32), 16, -2, Rational(65, 4));
   add_site(e, Rational(5, 32), Rational(1, 64), 1, Rational(-3, 2), Rational(13, 4));
   add_site(e, Rational(9, 32), Rational(1, 32), 4, -1, Rational(65, 4));
   expect_brute_force_agrees(compute_diagram(e), 32);
 
-  DiagramInput t;
+  Mesh<Rational> t;
   t.domain = {{Rational(1, 8), 0}, {1, 0}, {1, 1}, {Rational(1, 8), 1}};
   add_site(t, Rational(9, 64), Rational(1, 32), 16, -2, Rational(65, 4));
   add_site(t, Rational(9, 32), Rational(1, 32), 4, -1, Rational(65, 4));
@@ -337,7 +337,7 @@ TEST(OracleDiagram, TiesOutsideTheDiagramAreAnsweredNotDeclined) {
 
 // The genuine case stays declined, by name: two sites alone tie along the reflex edge x = 2.
 TEST(OracleDiagram, ACellBoundaryAlongTheDomainBoundaryIsDeclinedByName) {
-  DiagramInput L;
+  Mesh<Rational> L;
   L.domain = {{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}};
   add_site(L, 1, 1, 1, 0, 1);
   add_site(L, 3, 1, 1, 0, 1);

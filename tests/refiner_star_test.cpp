@@ -3,8 +3,8 @@
 // consistency must be certified exactly (valid, locally uniform, radius-edge ≤ ρ₀, distortion
 // ≤ γ₀, all decided without rounding), and a run stopped by a budget must say so.
 #include "io/mesh_output.hpp"
-#include "oracle/diagram.hpp"
-#include "oracle/mesh_certifier.hpp"
+#include "oracle/diagram/diagram.hpp"
+#include "oracle/certify/mesh_certifier.hpp"
 #include "predicates/orientation.hpp"
 #include "refiners/star/star_refiner.hpp"
 
@@ -92,7 +92,7 @@ TEST(StarRefiner, ShareOfTrianglesThatAreTheLabelleShewchukDual) {
     p.max_vertices = 400;
     const RefineResult r = refiners::star::refine_star(octagon, refiners::star::make_field(name, params), p);
     ASSERT_TRUE(r.consistent) << name << ": " << r.stop_reason;
-    const oracle::Mesh m = io::exact_mesh({r.sites, r.metrics, r.domain, r.segments, r.triangles});
+    const oracle::Mesh<Rational> m = io::exact_mesh({r.sites, r.metrics, r.domain, r.segments, r.triangles});
     const oracle::Diagram d = oracle::compute_diagram({m.sites, m.metrics, m.domain});
     std::set<std::array<int, 3>> dual;
     for (const auto& c : d.dual_triangles) {

@@ -1,6 +1,6 @@
 #pragma once
 // RapidCheck generators of whole inputs of the exact diagram (oracle/diagram.hpp).
-#include "oracle/diagram.hpp"
+#include "oracle/diagram/diagram.hpp"
 
 #include <rapidcheck.h>
 
@@ -9,7 +9,7 @@
 namespace anisocert::gen {
 
 struct DiagramCase {
-  oracle::DiagramInput input;
+  oracle::Mesh<Rational> input;
   std::string kind;  // the metric class, for RC_TAG
 };
 

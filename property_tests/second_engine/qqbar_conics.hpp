@@ -6,9 +6,9 @@
 // is that of x + t·y as a root of the resultant after the shear x → x − t·y, for an integer t
 // that separates all complex common points. It shares no code with oracle/.
 
-#include "oracle/bivariate.hpp"
+#include "oracle/algebraic/bivariate.hpp"
 
-#include "oracle/real_algebraic.hpp"
+#include "oracle/algebraic/real_algebraic.hpp"
 
 #include <memory>
 #include <vector>

@@ -31,8 +31,8 @@
 // certified subdivision. The two share only GMP. The tests stay rational by construction: the
 // inputs, F and F⁻¹ are rational, so every expected point is rational.
 
-#include "oracle/diagram.hpp"
-#include "oracle/mesh_certifier.hpp"
+#include "oracle/diagram/diagram.hpp"
+#include "oracle/certify/mesh_certifier.hpp"
 #include "predicates/incircle.hpp"
 
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -142,8 +142,8 @@ std::string list(const std::vector<int>& v) {
   return s + "}";
 }
 
-oracle::DiagramInput input_of(const Case& c) {
-  oracle::DiagramInput in;
+oracle::Mesh<Rational> input_of(const Case& c) {
+  oracle::Mesh<Rational> in;
   in.sites = c.sites;
   in.metrics.assign(c.sites.size(), metric(c));
   in.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -520,14 +520,14 @@ namespace {
 // Delaunay for M = FᵀF at every vertex (LU Definition 2.1), so with Ω the sites' convex hull it is
 // valid and locally uniform; flipping one interior edge of a strictly convex, non-cocircular
 // quadrilateral keeps it valid but must break local uniformity, with a witness at that edge.
-oracle::Mesh mesh_from_cgal(const Case& c) {
+oracle::Mesh<Rational> mesh_from_cgal(const Case& c) {
   std::vector<std::pair<K::Point_2, int>> points;
   for (std::size_t i = 0; i < c.sites.size(); ++i) {
     const P2 q = apply_F(c, c.sites[i]);
     points.push_back({K::Point_2(to_ft(q.x), to_ft(q.y)), static_cast<int>(i)});
   }
   Delaunay dt(points.begin(), points.end());
-  oracle::Mesh m;
+  oracle::Mesh<Rational> m;
   m.sites = c.sites;
   m.metrics.assign(c.sites.size(), metric(c));
   const bool flips = det(c) < 0;  // F reverses orientation: reverse every triangle
@@ -552,7 +552,7 @@ TEST(CertifierVsCgal, DelaunayMeshesAreValidAndLocallyUniformAndAFlipIsCaught) {
     const Case c = random_case(k);
     if (c.sites.size() < 4) continue;
     SCOPED_TRACE(describe(c));
-    oracle::Mesh m = mesh_from_cgal(c);
+    oracle::Mesh<Rational> m = mesh_from_cgal(c);
     if (m.domain.size() < 3) continue;  // collinear sites
     const oracle::CertifyReport r = oracle::certify_mesh(m, {});
     EXPECT_TRUE(r.valid_holds()) << (r.valid->failures.empty() ? "" : r.valid->failures[0]);
@@ -570,7 +570,7 @@ TEST(CertifierVsCgal, DelaunayMeshesAreValidAndLocallyUniformAndAFlipIsCaught) {
       if (orientation(S[p], S[q], S[a]) * orientation(S[p], S[q], S[b]) >= 0) continue;  // not strictly convex
       if (anisocert::predicates::incircle(S[a], S[b], S[p], S[q], m.metrics[0]) == anisocert::Sign::zero)
         continue;
-      oracle::Mesh g = m;
+      oracle::Mesh<Rational> g = m;
       g.triangles[tp.first] = {p, q, b};  // the quadrilateral a, q, b, p split by pq instead of ab
       g.triangles[back->second.first] = {q, p, a};
       const oracle::CertifyReport f = oracle::certify_mesh(g, {});

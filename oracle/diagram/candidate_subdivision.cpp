@@ -1,4 +1,4 @@
-#include "oracle/candidate_subdivision.hpp"
+#include "oracle/diagram/candidate_subdivision.hpp"
 
 #include "numbers/filter_interval.hpp"
 
@@ -88,7 +88,7 @@ struct Subdivider {
 
 }  // namespace
 
-CandidateSets candidate_sets(const DiagramInput& in, int max_depth) {
+CandidateSets candidate_sets(const Mesh<Rational>& in, int max_depth) {
   Subdivider s;
   s.max_depth = max_depth;
   for (std::size_t i = 0; i < in.sites.size(); ++i) {

@@ -5,8 +5,8 @@
 // The upper branch (+1) is the larger root, the lower (−1) the smaller; they meet where the
 // discriminant disc(x) = (b·x + e)² − 4c(a·x² + d·x + f) vanishes. With L = ∂G/∂y = 2c·y + b·x + e,
 // a point of G is on the upper branch iff sign(c)·L ≥ 0 and on the lower iff sign(c)·L ≤ 0.
-#include "oracle/located_point.hpp"
-#include "oracle/polynomial.hpp"
+#include "oracle/algebraic/located_point.hpp"
+#include "oracle/algebraic/polynomial.hpp"
 
 namespace anisocert::oracle {
 

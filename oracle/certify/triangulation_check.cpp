@@ -1,4 +1,4 @@
-#include "oracle/triangulation_check.hpp"
+#include "oracle/certify/triangulation_check.hpp"
 
 #include "predicates/orientation.hpp"
 

@@ -3,8 +3,8 @@
 // of the time harmless: the tie lies outside Ω, or another site is closer there. The oracle
 // handles them exactly and declines by name only when the tie is part of D|Ω (a cell boundary
 // running along ∂Ω, or three cells meeting along a curve), which the face structure does not model.
-#include "oracle/conic_intersection.hpp"
-#include "oracle/diagram_build.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/diagram/build.hpp"
 
 #include <algorithm>
 #include <stdexcept>

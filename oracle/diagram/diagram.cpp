@@ -1,4 +1,4 @@
-#include "oracle/diagram_build.hpp"
+#include "oracle/diagram/build.hpp"
 
 #include <chrono>
 
@@ -58,14 +58,14 @@ std::pair<double, double> Diagram::original_xy(const LocatedPoint& p) const {
   return {x, y};
 }
 
-Diagram compute_diagram(const DiagramInput& input, const std::function<void(const std::string&)>& progress) {
+Diagram compute_diagram(const Mesh<Rational>& input, const std::function<void(const std::string&)>& progress) {
   Diagram d;
   d.input = input;
   build::Builder(d, progress).run();
   return d;
 }
 
-std::vector<int> nearest_sites(const DiagramInput& in, const Point2<Rational>& p) {
+std::vector<int> nearest_sites(const Mesh<Rational>& in, const Point2<Rational>& p) {
   std::vector<int> best;
   Rational best_q;
   for (int u = 0; u < static_cast<int>(in.sites.size()); ++u) {

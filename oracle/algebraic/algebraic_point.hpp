@@ -6,8 +6,8 @@
 // for a real algebraic parameter u, with X_den(u), Y_den(u) ≠ 0; each coordinate also carries
 // a defining polynomial so that coordinates of different points can be compared exactly.
 
-#include "oracle/bivariate.hpp"
-#include "oracle/real_algebraic.hpp"
+#include "oracle/algebraic/bivariate.hpp"
+#include "oracle/algebraic/real_algebraic.hpp"
 
 #include <optional>
 #include <string>

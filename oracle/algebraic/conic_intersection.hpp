@@ -12,7 +12,7 @@
 // real roots u_i of R_t are in bijection with the real common points, the intersection
 // multiplicity is the multiplicity of u_i as a root of R_t, and x = u − t·y.
 
-#include "oracle/algebraic_point.hpp"
+#include "oracle/algebraic/algebraic_point.hpp"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the oracle: the pieces of work compute_diagram is made of, shared by its files.
-#include "oracle/candidate_subdivision.hpp"
-#include "oracle/diagram.hpp"
+#include "oracle/diagram/candidate_subdivision.hpp"
+#include "oracle/diagram/diagram.hpp"
 #include "numbers/filter_interval.hpp"
 
 #include <map>
@@ -15,7 +15,7 @@ struct DomainPosition {
   int corner = -1;
   bool outside() const { return !inside && edges.empty(); }
 };
-DomainPosition domain_position(const DiagramInput& sheared, const LocatedPoint& p);
+DomainPosition domain_position(const Mesh<Rational>& sheared, const LocatedPoint& p);
 
 // The nearest sites of p, given that site v is among the closest candidates: `closer` is true when
 // some site is strictly closer than v (then `owners` is empty), otherwise `owners` are all sites

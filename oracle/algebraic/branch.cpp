@@ -1,4 +1,4 @@
-#include "oracle/branch.hpp"
+#include "oracle/algebraic/branch.hpp"
 
 #include <stdexcept>
 

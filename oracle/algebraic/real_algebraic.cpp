@@ -1,4 +1,4 @@
-#include "oracle/real_algebraic.hpp"
+#include "oracle/algebraic/real_algebraic.hpp"
 
 #include "numbers/filter_interval.hpp"
 

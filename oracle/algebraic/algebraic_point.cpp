@@ -1,4 +1,4 @@
-#include "oracle/algebraic_point.hpp"
+#include "oracle/algebraic/algebraic_point.hpp"
 
 #include <stdexcept>
 

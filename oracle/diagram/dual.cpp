@@ -1,6 +1,6 @@
 // The geometric dual of D|Ω (LS §5), whether it is a triangulation (polygonalization) of Ω
 // (triangulation_check.hpp, BWY §3.2.1), and the Theorem 7 verdict (LS Theorem 7).
-#include "oracle/diagram_build.hpp"
+#include "oracle/diagram/build.hpp"
 
 #include <algorithm>
 #include <set>

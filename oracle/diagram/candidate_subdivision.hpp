@@ -13,7 +13,7 @@
 //  - every point of an arc lies in a leaf whose candidates include both owners, so each pair of
 //    sites whose cells share a point is among `pairs`.
 // The box arithmetic only decides what is kept, never an answer: a loose bound keeps more.
-#include "oracle/diagram_input.hpp"
+#include "oracle/diagram/input.hpp"
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -32,6 +32,6 @@ struct CandidateSets {
   int max_depth_reached = 0;
 };
 
-CandidateSets candidate_sets(const DiagramInput& in, int max_depth = 40);
+CandidateSets candidate_sets(const Mesh<Rational>& in, int max_depth = 40);
 
 }  // namespace anisocert::oracle

@@ -5,8 +5,8 @@
 // bisector, and the vertical tangents where the upper and lower branches meet. Between two
 // consecutive cuts of a branch the status is constant, so one exact sample decides the piece.
 // Kept pieces are chained through vertical tangents into arcs.
-#include "oracle/conic_intersection.hpp"
-#include "oracle/diagram_build.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/diagram/build.hpp"
 
 #include <algorithm>
 #include <stdexcept>

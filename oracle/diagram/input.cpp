@@ -1,4 +1,4 @@
-#include "oracle/diagram_input.hpp"
+#include "oracle/diagram/input.hpp"
 
 namespace anisocert::oracle {
 
@@ -8,7 +8,7 @@ Conic distance_conic(const Point2<Rational>& v, const Sym2<Rational>& M) {
   return {M.m11, 2 * M.m12, M.m22, -2 * gx, -2 * gy, v.x * gx + v.y * gy};
 }
 
-Conic bisector_conic(const DiagramInput& in, int v, int w) {
+Conic bisector_conic(const Mesh<Rational>& in, int v, int w) {
   const Conic a = distance_conic(in.sites[v], in.metrics[v]), b = distance_conic(in.sites[w], in.metrics[w]);
   return {a.a - b.a, a.b - b.b, a.c - b.c, a.d - b.d, a.e - b.e, a.f - b.f};
 }
@@ -19,7 +19,7 @@ Conic line_conic(const Point2<Rational>& a, const Point2<Rational>& b) {
   return {0, 0, 0, -dy, dx, dy * a.x - dx * a.y};
 }
 
-Conic wedge_form(const DiagramInput& in, int from, int to) {
+Conic wedge_form(const Mesh<Rational>& in, int from, int to) {
   const Point2<Rational>& v = in.sites[from];
   const Point2<Rational>& w = in.sites[to];
   const Sym2<Rational>& M = in.metrics[from];
@@ -32,8 +32,8 @@ Conic shear_conic(const Conic& G, const Rational& s) {
   return {G.a, 2 * s * G.a + G.b, G.a * s * s + G.b * s + G.c, G.d, G.d * s + G.e, G.f};
 }
 
-DiagramInput shear_input(const DiagramInput& in, const Rational& s) {
-  DiagramInput out;
+Mesh<Rational> shear_input(const Mesh<Rational>& in, const Rational& s) {
+  Mesh<Rational> out;
   for (const auto& p : in.sites) out.sites.push_back({p.x + s * p.y, p.y});
   for (const auto& M : in.metrics)  // S⁻ᵀ M S⁻¹, S⁻¹ = [1 −s; 0 1]
     out.metrics.push_back({M.m11, M.m12 - s * M.m11, M.m22 - 2 * s * M.m12 + s * s * M.m11});
@@ -41,7 +41,7 @@ DiagramInput shear_input(const DiagramInput& in, const Rational& s) {
   return out;
 }
 
-Rational choose_shear(const DiagramInput& in, const std::vector<std::pair<int, int>>& pairs) {
+Rational choose_shear(const Mesh<Rational>& in, const std::vector<std::pair<int, int>>& pairs) {
   // A conic G(x, y) = 0 sheared by s, G(x − s y, y), has y² coefficient a s² − b s + c = q(−s, 1).
   // Each bisector and each edge excludes at most two values of s, so the search ends.
   for (int k = 0;; ++k) {

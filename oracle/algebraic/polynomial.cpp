@@ -1,4 +1,4 @@
-#include "oracle/polynomial.hpp"
+#include "oracle/algebraic/polynomial.hpp"
 
 #include <stdexcept>
 

@@ -10,8 +10,8 @@
 //    at most ρ₀, and the distortion τ(M_a, M_b) of every pair of its vertices at most γ₀.
 // Every decision is exact (filtered predicates, rational fall-backs); the worst values reported
 // next to the verdicts are double approximations.
-#include "oracle/triangulation_check.hpp"
-#include "predicates/point.hpp"
+#include "oracle/certify/triangulation_check.hpp"
+#include "geometry/mesh.hpp"
 
 #include <array>
 #include <optional>
@@ -20,13 +20,7 @@
 
 namespace anisocert::oracle {
 
-struct Mesh {
-  std::vector<predicates::Point2<Rational>> sites;
-  std::vector<predicates::Sym2<Rational>> metrics;
-  std::vector<predicates::Point2<Rational>> domain;
-  std::vector<std::pair<int, int>> segments;
-  std::vector<std::array<int, 3>> triangles;
-};
+using geometry::Mesh;
 
 struct CertifyOptions {
   bool valid = true, uniform = true;
@@ -56,6 +50,6 @@ struct CertifyReport {
   }
 };
 
-CertifyReport certify_mesh(const Mesh& mesh, const CertifyOptions& options);
+CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& options);
 
 }  // namespace anisocert::oracle

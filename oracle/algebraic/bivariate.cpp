@@ -1,4 +1,4 @@
-#include "oracle/bivariate.hpp"
+#include "oracle/algebraic/bivariate.hpp"
 
 #include <algorithm>
 

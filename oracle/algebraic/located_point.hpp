@@ -2,7 +2,7 @@
 // An exact algebraic point together with a double box around it, for filtered signs: the sign of
 // a conic at the point is read from its interval value on the box when that excludes zero, and
 // decided exactly otherwise (DESIGN.md: a filter may only speed up, never change, an answer).
-#include "oracle/algebraic_point.hpp"
+#include "oracle/algebraic/algebraic_point.hpp"
 #include "numbers/filter_interval.hpp"
 
 namespace anisocert::oracle {

@@ -1,4 +1,4 @@
-#include "oracle/located_point.hpp"
+#include "oracle/algebraic/located_point.hpp"
 
 namespace anisocert::oracle {
 

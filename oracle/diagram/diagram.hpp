@@ -7,9 +7,9 @@
 // Coordinates: the oracle works in sheared coordinates (see diagram_input.hpp); `shear` is the s
 // used, every AlgebraicPoint and Conic below is in sheared coordinates, and the accessors for
 // output (vertex_xy, witness) map back to the input's coordinates.
-#include "oracle/branch.hpp"
-#include "oracle/diagram_input.hpp"
-#include "oracle/triangulation_check.hpp"
+#include "oracle/algebraic/branch.hpp"
+#include "oracle/diagram/input.hpp"
+#include "oracle/certify/triangulation_check.hpp"
 
 #include <functional>
 #include <optional>
@@ -103,8 +103,8 @@ struct HalfEdge {
 };
 
 struct Diagram {
-  DiagramInput input;                         // as given (original coordinates)
-  DiagramInput sheared;
+  Mesh<Rational> input;                         // as given (original coordinates)
+  Mesh<Rational> sheared;
   Rational shear;
   std::vector<Node> nodes;
   std::vector<Arc> arcs;
@@ -122,7 +122,7 @@ struct Diagram {
 };
 
 // Progress lines for long work go to `progress` (may be empty).
-Diagram compute_diagram(const DiagramInput& input, const std::function<void(const std::string&)>& progress = {});
+Diagram compute_diagram(const Mesh<Rational>& input, const std::function<void(const std::string&)>& progress = {});
 
 // Where a rational point of Ω lies in the diagram: its exact nearest-site set must equal the
 // owners of what contains it (the brute-force check of the tests).
@@ -134,6 +134,6 @@ struct Location {
 Location locate(const Diagram& d, const Point2<Rational>& p);
 
 // The sites at minimum distance from p (sorted), by exact comparison against every site.
-std::vector<int> nearest_sites(const DiagramInput& in, const Point2<Rational>& p);
+std::vector<int> nearest_sites(const Mesh<Rational>& in, const Point2<Rational>& p);
 
 }  // namespace anisocert::oracle

@@ -2,8 +2,8 @@
 // equidistant from three or more sites with no site closer), found exactly as common points of
 // two bisector conics (LS Proposition 2) for every candidate triple of the certified
 // subdivision (candidate_subdivision.hpp: the triples include every vertex's owners).
-#include "oracle/conic_intersection.hpp"
-#include "oracle/diagram_build.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/diagram/build.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -11,7 +11,7 @@
 namespace anisocert::oracle::build {
 
 
-DomainPosition domain_position(const DiagramInput& sh, const LocatedPoint& p) {
+DomainPosition domain_position(const Mesh<Rational>& sh, const LocatedPoint& p) {
   DomainPosition pos;
   const std::size_t m = sh.domain.size();
   int crossings = 0;

@@ -4,7 +4,7 @@
 // exactly: signs of polynomials (zero included, by a gcd), comparisons, equality; decimals are
 // correctly rounded.
 
-#include "oracle/polynomial.hpp"
+#include "oracle/algebraic/polynomial.hpp"
 
 #include <string>
 #include <vector>

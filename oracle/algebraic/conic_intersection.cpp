@@ -1,4 +1,4 @@
-#include "oracle/conic_intersection.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
 
 #include <algorithm>
 #include <stdexcept>

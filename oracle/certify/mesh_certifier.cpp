@@ -1,4 +1,4 @@
-#include "oracle/mesh_certifier.hpp"
+#include "oracle/certify/mesh_certifier.hpp"
 
 #include "predicates/distortion.hpp"
 #include "numbers/filter_interval.hpp"
@@ -77,7 +77,7 @@ class SiteTree {
 
 // The locally uniform check on one scalar type (double when every input is a double exactly).
 template <class S>
-void check_uniform(const std::vector<Point2<S>>& p, const std::vector<Sym2<S>>& M, const Mesh& mesh,
+void check_uniform(const std::vector<Point2<S>>& p, const std::vector<Sym2<S>>& M, const Mesh<Rational>& mesh,
                    const SiteTree& tree, CertifyReport& r) {
   auto iv = [](const S& s) {
     if constexpr (std::is_same_v<S, double>) return FilterInterval(s);
@@ -177,7 +177,7 @@ double tau_squared_approx(const Sym2<Rational>& A, const Sym2<Rational>& B) {
 
 }  // namespace
 
-CertifyReport certify_mesh(const Mesh& mesh, const CertifyOptions& o) {
+CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& o) {
   CertifyReport r;
   std::vector<Point2<double>> approx;
   for (const auto& p : mesh.sites) approx.push_back({p.x.convert_to<double>(), p.y.convert_to<double>()});

@@ -7,7 +7,7 @@
 // face on its left. A cycle is an outer boundary when at its lowest-leftmost point it turns
 // downward (counter-clockwise); a hole belongs to the innermost outer cycle of the same site that
 // contains it, decided by exact vertical ray casting.
-#include "oracle/diagram_build.hpp"
+#include "oracle/diagram/build.hpp"
 
 #include <algorithm>
 #include <stdexcept>
