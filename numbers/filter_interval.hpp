@@ -56,6 +56,23 @@ struct FilterInterval {
     }
     return widen(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}));
   }
+  // The least of two values, for every pair of points of the two intervals.
+  friend FilterInterval min(const FilterInterval& a, const FilterInterval& b) {
+    return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)};
+  }
+  // A divisor containing 0 (or NaN) gives the whole line.
+  friend FilterInterval operator/(const FilterInterval& a, const FilterInterval& b) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    if (!(b.lo > 0 || b.hi < 0)) return {-inf, inf};
+    const double q[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
+    return widen(*std::min_element(q, q + 4), *std::max_element(q, q + 4));
+  }
+  // The square root of the non-negative part (an end at or below 0 gives 0; NaN stays NaN).
+  friend FilterInterval sqrt(const FilterInterval& a) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {a.lo <= 0 ? 0 : std::max(0.0, std::nextafter(std::sqrt(a.lo), -inf)),
+            a.hi <= 0 ? 0 : std::nextafter(std::sqrt(a.hi), inf)};
+  }
 };
 
 }  // namespace anisocert

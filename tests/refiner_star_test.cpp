@@ -93,7 +93,7 @@ TEST(StarRefiner, ShareOfTrianglesThatAreTheLabelleShewchukDual) {
     const RefineResult r = refiners::star::refine_star(octagon, refiners::star::make_field(name, params), p);
     ASSERT_TRUE(r.consistent) << name << ": " << r.stop_reason;
     const oracle::Mesh<Rational> m = io::exact_mesh({r.sites, r.metrics, r.domain, r.segments, r.triangles});
-    const oracle::Diagram d = oracle::compute_diagram({m.sites, m.metrics, m.domain});
+    const oracle::Diagram d = oracle::compute_diagram(m);
     std::set<std::array<int, 3>> dual;
     for (const auto& c : d.dual_triangles) {
       std::array<int, 3> t{c.sites[0], c.sites[1], c.sites[2]};

@@ -1,7 +1,10 @@
 #include "oracle/certify/mesh_certifier.hpp"
 
-#include "predicates/distortion.hpp"
+#include "geometry/circumellipse.hpp"
+#include "geometry/distortion_estimate.hpp"
+#include "geometry/ellipse_box.hpp"
 #include "numbers/filter_interval.hpp"
+#include "predicates/distortion.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orientation.hpp"
 
@@ -18,15 +21,6 @@ using predicates::Sym2;
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
-
-// Outward interval quotient and square root (IEEE operations are correctly rounded; one ulp
-// outward covers the exact result). An interval divisor containing 0 gives everything.
-FilterInterval divide(const FilterInterval& a, const FilterInterval& b) {
-  if (!(b.lo > 0 || b.hi < 0)) return {-inf, inf};
-  const double q[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
-  return FilterInterval::widen(*std::min_element(q, q + 4), *std::max_element(q, q + 4));
-}
-double sqrt_up(double x) { return x <= 0 ? 0 : std::nextafter(std::sqrt(x), inf); }
 
 // Sites in a static k-d tree (median splits, leaves of at most 8), for the circumellipse queries:
 // adapts to clustered sites, where a uniform grid would scan crowded cells. The coordinates are
@@ -76,33 +70,33 @@ class SiteTree {
 };
 
 // The locally uniform check on one scalar type (double when every input is a double exactly).
+// An interval around a coordinate or metric entry: the double itself, or a rational enclosed.
+FilterInterval enclose(double s) { return FilterInterval(s); }
+FilterInterval enclose(const Rational& s) { return FilterInterval::around(s); }
+Point2<FilterInterval> enclose(const Point2<double>& p) { return {enclose(p.x), enclose(p.y)}; }
+Point2<FilterInterval> enclose(const Point2<Rational>& p) { return {enclose(p.x), enclose(p.y)}; }
+template <class S>
+Sym2<FilterInterval> enclose(const Sym2<S>& m) {
+  return {enclose(m.m11), enclose(m.m12), enclose(m.m22)};
+}
+
 template <class S>
 void check_uniform(const std::vector<Point2<S>>& p, const std::vector<Sym2<S>>& M, const Mesh<Rational>& mesh,
                    const SiteTree& tree, CertifyReport& r) {
-  auto iv = [](const S& s) {
-    if constexpr (std::is_same_v<S, double>) return FilterInterval(s);
-    else return FilterInterval::around(s);
-  };
   for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
     const auto& tri = mesh.triangles[t];
     if (predicates::orientation(p[tri[0]], p[tri[1]], p[tri[2]]) != Sign::positive) continue;  // `valid` reports it
     for (int v : tri) {
       const Sym2<S>& m = M[v];
-      // The M-circumellipse of the triangle, enclosed: centre a + x with [g1; g2] x = [Q(d1); Q(d2)]/2.
-      const FilterInterval ax = iv(p[tri[0]].x), ay = iv(p[tri[0]].y), m11 = iv(m.m11), m12 = iv(m.m12), m22 = iv(m.m22);
-      const FilterInterval d1x = iv(p[tri[1]].x) - ax, d1y = iv(p[tri[1]].y) - ay;
-      const FilterInterval d2x = iv(p[tri[2]].x) - ax, d2y = iv(p[tri[2]].y) - ay;
-      const FilterInterval g1x = m11 * d1x + m12 * d1y, g1y = m12 * d1x + m22 * d1y;
-      const FilterInterval g2x = m11 * d2x + m12 * d2y, g2y = m12 * d2x + m22 * d2y;
-      const FilterInterval half(0.5);
-      const FilterInterval q1 = half * (d1x * g1x + d1y * g1y), q2 = half * (d2x * g2x + d2y * g2y);
-      const FilterInterval det = g1x * g2y - g1y * g2x;
-      const FilterInterval x = divide(q1 * g2y - q2 * g1y, det), y = divide(g1x * q2 - g2x * q1, det);
-      const FilterInterval r2 = x * (m11 * x + m12 * y) + y * (m12 * x + m22 * y);
-      const FilterInterval detm = m11 * m22 - m12 * m12;
-      const FilterInterval hx2 = divide(r2 * m22, detm), hy2 = divide(r2 * m11, detm);
-      const double hx = sqrt_up(hx2.hi), hy = sqrt_up(hy2.hi);
-      const FilterInterval cx = ax + x, cy = ay + y;
+      // The M_v-circumellipse of the triangle, enclosed (geometry/circumellipse.hpp), and the box of
+      // the M_v-ball around it: the sites outside that box are outside the ellipse, the rest are
+      // decided by the exact in-circle predicate.
+      const Sym2<FilterInterval> mi = enclose(m);
+      const geometry::Circumellipse<FilterInterval> c =
+          geometry::circumellipse(enclose(p[tri[0]]), enclose(p[tri[1]]), enclose(p[tri[2]]), mi);
+      const geometry::HalfWidths<FilterInterval> h = geometry::ellipse_half_widths(mi, c.r2);
+      const double hx = h.hx.hi, hy = h.hy.hi;
+      const FilterInterval &cx = c.cx, &cy = c.cy;
       const bool bounded = std::isfinite(cx.lo) && std::isfinite(cx.hi) && std::isfinite(cy.lo) && std::isfinite(cy.hi) &&
                            std::isfinite(hx) && std::isfinite(hy);
       const double qx0 = bounded ? cx.lo - hx : -inf, qx1 = bounded ? cx.hi + hx : inf;
@@ -134,45 +128,20 @@ std::optional<Rational> parameter_on(const Point2<Rational>& a, const Point2<Rat
   return ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / len;
 }
 
-// An enclosure of the radius-edge ratio² of a triangle in metric M (outward interval arithmetic),
-// to decide "≤ ρ₀²" without rationals when it is clear.
-FilterInterval radius_edge_squared_enclosure(const std::array<Point2<Rational>, 3>& t, const Sym2<Rational>& M) {
-  auto iv = [](const Rational& q) { return FilterInterval::around(q); };
-  const FilterInterval m11 = iv(M.m11), m12 = iv(M.m12), m22 = iv(M.m22);
-  auto q = [&](const FilterInterval& dx, const FilterInterval& dy) { return dx * (m11 * dx + m12 * dy) + dy * (m12 * dx + m22 * dy); };
-  const FilterInterval ax = iv(t[0].x), ay = iv(t[0].y);
-  const FilterInterval d1x = iv(t[1].x) - ax, d1y = iv(t[1].y) - ay, d2x = iv(t[2].x) - ax, d2y = iv(t[2].y) - ay;
-  const FilterInterval g1x = m11 * d1x + m12 * d1y, g1y = m12 * d1x + m22 * d1y;
-  const FilterInterval g2x = m11 * d2x + m12 * d2y, g2y = m12 * d2x + m22 * d2y;
-  const FilterInterval half(0.5), q1 = half * q(d1x, d1y), q2 = half * q(d2x, d2y), det = g1x * g2y - g1y * g2x;
-  const FilterInterval x = divide(q1 * g2y - q2 * g1y, det), y = divide(g1x * q2 - g2x * q1, det);
-  const FilterInterval e3 = q(iv(t[2].x) - iv(t[1].x), iv(t[2].y) - iv(t[1].y));
-  const FilterInterval e1 = q(d1x, d1y), e2 = q(d2x, d2y);
-  const FilterInterval shortest{std::min({e1.lo, e2.lo, e3.lo}), std::min({e1.hi, e2.hi, e3.hi})};
-  return divide(q(x, y), shortest);
+// The radius-edge ratio² of a triangle in metric M, r² / (shortest edge)², all measured by M, with r
+// the M-radius of its circumellipse; over T = FilterInterval (an enclosure, to decide "≤ ρ₀²"
+// without rationals when it is clear) and T = Rational (exact).
+template <class T>
+T radius_edge_squared(const std::array<Point2<T>, 3>& t, const Sym2<T>& M) {
+  using std::min;
+  auto q = [&](const T& dx, const T& dy) { return predicates::quadratic_form(M.m11, M.m12, M.m22, dx, dy); };
+  const T e1 = q(t[1].x - t[0].x, t[1].y - t[0].y), e2 = q(t[2].x - t[0].x, t[2].y - t[0].y),
+          e3 = q(t[2].x - t[1].x, t[2].y - t[1].y);
+  return geometry::circumellipse(t[0], t[1], t[2], M).r2 / min(e1, min(e2, e3));
 }
 
-// Radius-edge ratio² of a triangle in metric M (exact): Q_M(centre − a) / min edge Q_M.
-Rational radius_edge_squared(const std::array<Point2<Rational>, 3>& t, const Sym2<Rational>& M) {
-  auto q = [&](const Rational& dx, const Rational& dy) { return predicates::quadratic_form(M.m11, M.m12, M.m22, dx, dy); };
-  const Rational d1x = t[1].x - t[0].x, d1y = t[1].y - t[0].y, d2x = t[2].x - t[0].x, d2y = t[2].y - t[0].y;
-  const Rational g1x = M.m11 * d1x + M.m12 * d1y, g1y = M.m12 * d1x + M.m22 * d1y;
-  const Rational g2x = M.m11 * d2x + M.m12 * d2y, g2y = M.m12 * d2x + M.m22 * d2y;
-  const Rational q1 = q(d1x, d1y) / 2, q2 = q(d2x, d2y) / 2, det = g1x * g2y - g1y * g2x;
-  const Rational x = (q1 * g2y - q2 * g1y) / det, y = (g1x * q2 - g2x * q1) / det;
-  const Rational shortest = std::min({q(d1x, d1y), q(d2x, d2y), q(t[2].x - t[1].x, t[2].y - t[1].y)});
-  return q(x, y) / shortest;
-}
-
-double tau_squared_approx(const Sym2<Rational>& A, const Sym2<Rational>& B) {
-  // Largest generalized eigenvalue of (B, A) and of (A, B): roots of det(B − λA) = 0.
-  auto largest = [](const Sym2<Rational>& P, const Sym2<Rational>& Q) {
-    const double a = P.m11.convert_to<double>(), b = P.m12.convert_to<double>(), c = P.m22.convert_to<double>();
-    const double d = Q.m11.convert_to<double>(), e = Q.m12.convert_to<double>(), f = Q.m22.convert_to<double>();
-    const double A2 = a * c - b * b, B1 = -(a * f + c * d - 2 * b * e), C0 = d * f - e * e;
-    return (-B1 + std::sqrt(std::max(0.0, B1 * B1 - 4 * A2 * C0))) / (2 * A2);
-  };
-  return std::max(largest(A, B), largest(B, A));
+Sym2<double> nearest_doubles(const Sym2<Rational>& m) {
+  return {m.m11.convert_to<double>(), m.m12.convert_to<double>(), m.m22.convert_to<double>()};
 }
 
 }  // namespace
@@ -227,7 +196,8 @@ CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& o) 
       if (predicates::orientation(pts[0], pts[1], pts[2]) == Sign::zero) continue;  // flat: `valid` reports it
       if (o.rho0)
         for (int v : tri) {
-          const FilterInterval e = radius_edge_squared_enclosure(pts, mesh.metrics[v]);
+          const FilterInterval e =
+              radius_edge_squared(std::array{enclose(pts[0]), enclose(pts[1]), enclose(pts[2])}, enclose(mesh.metrics[v]));
           const double hi = FilterInterval::around(rho2).lo;
           if (e.hi < hi) {  // decided by the enclosure: ≤ ρ₀²
             const double approx = std::sqrt((e.lo + e.hi) / 2);
@@ -245,7 +215,7 @@ CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& o) 
       if (o.gamma0)
         for (int i = 0; i < 3; ++i) {
           const int a = tri[i], b = tri[(i + 1) % 3];
-          const double g = std::sqrt(tau_squared_approx(mesh.metrics[a], mesh.metrics[b]));
+          const double g = std::sqrt(geometry::tau_squared_estimate(nearest_doubles(mesh.metrics[a]), nearest_doubles(mesh.metrics[b])));
           if (g > r.worst_gamma) r.worst_gamma = g, r.worst_gamma_triangle = t;
           if (!predicates::tau_at_most(mesh.metrics[a], mesh.metrics[b], gamma2))
             r.gamma_violations.push_back({a, t, b, "triangle " + std::to_string(t) + ": distortion between vertices " +
