@@ -4,11 +4,14 @@
 // reported). Default refinement parameters (ρ₀ = 3, γ₀ = 1.5, δ = 0.1, Pick_valid on).
 // Run: build/bin/refiner_bench (figures in docs/bench.md).
 #include "predicates/filtered_sign.hpp"
+#include "fields/registry.hpp"
 #include "refiners/star/star_refiner.hpp"
 
 #include <benchmark/benchmark.h>
 
 using namespace anisocert::refiners::star;
+using anisocert::fields::make_field;
+using anisocert::fields::MetricField;
 
 namespace {
 
@@ -18,16 +21,16 @@ void refine(benchmark::State& state, const char* field, const char* param, doubl
   const MetricField f = make_field(field, params);
   RefineParameters p;
   p.max_vertices = 400000, p.max_seconds = 600;
-  RefineResult r;
+  StarResult r;
   const auto before = anisocert::predicates::filter_stats();
   for (auto _ : state) r = refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, f, p);
   // Predicate calls the static filter could not decide (interval stage), and those the interval
   // could not either (exact rationals), per vertex.
   const auto after = anisocert::predicates::filter_stats();
-  state.counters["interval_per_vertex"] = static_cast<double>(after.interval_stage - before.interval_stage) / r.sites.size();
-  state.counters["exact_per_vertex"] = static_cast<double>(after.exact_stage - before.exact_stage) / r.sites.size();
-  state.counters["vertices"] = static_cast<double>(r.sites.size());
-  state.counters["vertices_per_s"] = r.sites.size() / r.seconds;
+  state.counters["interval_per_vertex"] = static_cast<double>(after.interval_stage - before.interval_stage) / r.mesh.sites.size();
+  state.counters["exact_per_vertex"] = static_cast<double>(after.exact_stage - before.exact_stage) / r.mesh.sites.size();
+  state.counters["vertices"] = static_cast<double>(r.mesh.sites.size());
+  state.counters["vertices_per_s"] = r.mesh.sites.size() / r.seconds;
   state.counters["consistent"] = r.consistent;
 }
 

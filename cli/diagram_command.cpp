@@ -8,6 +8,7 @@
 #include "io/diagram_json.hpp"
 #include "io/diagram_svg.hpp"
 #include "io/site_set.hpp"
+#include "fields/registry.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
 
 #include <cmath>
@@ -84,13 +85,13 @@ int run(const oracle::Mesh<Rational>& in, const std::string& name, const Diagram
   return 0;
 }
 
-// The demo's anisotropic field: the built-in shock field (refiners/star/metric_field.hpp) with
+// The demo's anisotropic field: the built-in shock field (fields/shock.cpp) with
 // δ = 0.25, h = 1, α = 9: first eigen-direction along ∇f, lengths across the level lines of f
 // shrinking by up to 10; entries rounded to 2 decimals, exact as given.
 oracle::Mesh<Rational> demo_input() {
   oracle::Mesh<Rational> in;
   in.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  const auto field = refiners::star::make_field("shock", {{"delta", 0.25}, {"h", 1}, {"alpha", 9}});
+  const auto field = fields::make_field("shock", {{"delta", 0.25}, {"h", 1}, {"alpha", 9}});
   unsigned state = 12345;
   auto jitter = [&] {  // a fixed linear congruential sequence: the same example every time
     state = state * 1103515245u + 12345u;
@@ -138,24 +139,26 @@ void add_diagram_command(CLI::App& app, int& exit_code) {
 // certifier on its output. Its parameters meet every condition of LU Theorem 4.5 that theory/
 // decides ((1 − δ)³ρ₀ > 2γ₀³ needs ρ₀ > 4.74 at γ₀ = 1.2, δ = 0.1).
 std::string refine_and_certify(const std::string& svg_path, bool quiet) {
-  refiners::star::RefineParameters p;
-  p.rho0 = 5, p.beta = 5, p.gamma0 = 1.2;
-  p.max_seconds = 60;
-  const auto field = refiners::star::make_field("shock", {{"h", 0.05}, {"alpha", 3}});
-  const auto progress = progress_printer(quiet);
-  const refiners::star::RefineResult r = refiners::star::refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, field, p, progress);
-  const io::MeshData data = mesh_data(r);
-  const oracle::Mesh<Rational> mesh = io::exact_mesh(data);
+  const refiners::RefinerEntry& star = *refiners::find_refiner("star");
+  refiners::ParameterValues values;
+  for (const auto& spec : star.parameters) values[spec.name] = spec.value;
+  values["rho0"] = 5, values["beta"] = 5, values["gamma0"] = 1.2;
+  refiners::common::Budget budget;
+  budget.max_seconds = 60;
+  const auto field = fields::make_field("shock", {{"h", 0.05}, {"alpha", 3}});
+  const refiners::Run run =
+      star.run(refiners::common::Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), field, values, budget, 1, progress_printer(quiet));
+  const io::MeshData& data = run.result.mesh;
   oracle::CertifyOptions o;
-  o.rho0 = rational_from_double(p.rho0), o.gamma0 = rational_from_double(p.gamma0);
-  const oracle::CertifyReport c = oracle::certify_mesh(mesh, o);
+  o.rho0 = rational_from_double(values["rho0"]), o.gamma0 = rational_from_double(values["gamma0"]);
+  const oracle::CertifyReport c = oracle::certify_mesh(geometry::exact(data), o);
   std::ostringstream out;
-  out << "refine: the unit square, field shock (h = 0.05, alpha = 3, delta = 0.6)\n" << refine_summary(r, p)
+  out << "refine: the unit square, field shock (h = 0.05, alpha = 3, delta = 0.6)\n" << report_text(run)
       << "certify (exact): valid " << (c.valid_holds() ? "holds" : "FAILS") << ", locally uniform "
       << (c.uniform_violations.empty() ? "holds" : "FAILS") << " (" << c.uniform_ties.size() << " ties), radius-edge ≤ "
-      << p.rho0 << " " << (c.rho_violations.empty() ? "holds" : "FAILS") << ", distortion ≤ " << p.gamma0 << " "
+      << values["rho0"] << " " << (c.rho_violations.empty() ? "holds" : "FAILS") << ", distortion ≤ " << values["gamma0"] << " "
       << (c.gamma_violations.empty() ? "holds" : "FAILS") << ": " << (c.holds(o) ? "certified" : "NOT certified") << "\n";
-  write_file_atomically(svg_path, io::mesh_svg(data, "star refiner, shock field: " + std::to_string(r.sites.size()) +
+  write_file_atomically(svg_path, io::mesh_svg(data, "star refiner, shock field: " + std::to_string(data.sites.size()) +
                                                                  " vertices, " + (c.holds(o) ? "certified" : "not certified")));
   out << "  picture: " << svg_path << "\n";
   return out.str();

@@ -1,14 +1,13 @@
 #pragma once
-// Shared by `anisocert refine` and `anisocert demo`: the refiner's summary and mesh conversion.
+// Shared by `anisocert refine` and `anisocert demo`: a refiner's mesh in the one mesh shape.
 #include "io/mesh_output.hpp"
-#include "refiners/star/star_refiner.hpp"
+#include "refiners/registry.hpp"
 
 #include <string>
 
 namespace anisocert::cli {
 
-std::string lu_conditions_text(const refiners::star::RefineParameters& p);
-std::string refine_summary(const refiners::star::RefineResult& r, const refiners::star::RefineParameters& p);
-io::MeshData mesh_data(const refiners::star::RefineResult& r);
+// The refiner's report lines as text, one per line.
+std::string report_text(const refiners::Run& run);
 
 }  // namespace anisocert::cli

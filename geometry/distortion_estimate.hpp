@@ -30,4 +30,11 @@ T tau_squared_estimate(const predicates::Sym2<T>& P, const predicates::Sym2<T>& 
   return max(largest_generalized_eigenvalue(P, Q), largest_generalized_eigenvalue(Q, P));
 }
 
+// τ² < g2 for each pair of three metrics (a triangle's vertices'), estimated.
+template <class T>
+bool pairwise_tau_squared_below(const predicates::Sym2<T>& A, const predicates::Sym2<T>& B, const predicates::Sym2<T>& C,
+                                const T& g2) {
+  return tau_squared_estimate(A, B) < g2 && tau_squared_estimate(A, C) < g2 && tau_squared_estimate(B, C) < g2;
+}
+
 }  // namespace anisocert::geometry

@@ -24,7 +24,31 @@ Point touching_point(const Point& p1, const Point& p2, const Point& q1, const Po
   return p2;
 }
 
+std::string show(const Point& p) { return "(" + to_exact_string(p.x) + ", " + to_exact_string(p.y) + ")"; }
+
 }  // namespace
+
+std::string describe(const PolygonDefect& d, const Polygon<Rational>& v, const std::string& name) {
+  const std::size_t m = v.size();
+  const auto corner = [&](std::size_t k) { return name + "[" + std::to_string(k) + "]"; };
+  const auto edge = [&](std::size_t k) {
+    return "edge " + std::to_string(k) + " (" + corner(k) + " to " + corner((k + 1) % m) + ")";
+  };
+  switch (d.kind) {
+    case PolygonDefect::Kind::zero_length_edge:
+      return corner(d.i) + " and " + corner((d.i + 1) % m) + " are the same point " + show(v[d.i]) + " (edge " +
+             std::to_string(d.i) + " has length zero)";
+    case PolygonDefect::Kind::folds_back:
+      return "the boundary folds back at " + corner(d.i) + " " + show(v[d.i]) + ": " + edge((d.i + m - 1) % m) + " and " +
+             edge(d.i) + " overlap";
+    case PolygonDefect::Kind::edges_meet:
+      return edge(d.i) + " and " + edge(d.j) + (d.crossing ? " cross" : " touch") + " at " + show(d.at) +
+             "; the domain must be a simple polygon";
+    case PolygonDefect::Kind::clockwise:
+      return "the vertices are clockwise; list the vertices counter-clockwise";
+  }
+  return "";
+}
 
 std::optional<PolygonDefect> simplicity_defect(const Polygon<Rational>& v) {
   using Kind = PolygonDefect::Kind;

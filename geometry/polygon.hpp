@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace anisocert::geometry {
@@ -28,12 +29,17 @@ bool on_segment(const Point2<S>& p, const Point2<S>& a, const Point2<S>& b) {
 // or touching (an endpoint of one lies on the other, collinear overlaps included).
 enum class Meeting { none, crossing, touching };
 
+// The crossing case alone (four orientations): what visibility across ∂Ω asks.
+template <class S>
+bool segments_cross(const Point2<S>& p1, const Point2<S>& p2, const Point2<S>& q1, const Point2<S>& q2) {
+  using predicates::orientation;
+  return orientation(p1, p2, q1) * orientation(p1, p2, q2) == Sign::negative &&
+         orientation(q1, q2, p1) * orientation(q1, q2, p2) == Sign::negative;
+}
+
 template <class S>
 Meeting segments_meet(const Point2<S>& p1, const Point2<S>& p2, const Point2<S>& q1, const Point2<S>& q2) {
-  using predicates::orientation;
-  const Sign o1 = orientation(p1, p2, q1), o2 = orientation(p1, p2, q2);
-  const Sign o3 = orientation(q1, q2, p1), o4 = orientation(q1, q2, p2);
-  if (o1 * o2 == Sign::negative && o3 * o4 == Sign::negative) return Meeting::crossing;
+  if (segments_cross(p1, p2, q1, q2)) return Meeting::crossing;
   if (on_segment(q1, p1, p2) || on_segment(q2, p1, p2) || on_segment(p1, q1, q2) || on_segment(p2, q1, q2))
     return Meeting::touching;
   return Meeting::none;
@@ -80,5 +86,8 @@ struct PolygonDefect {
   Point2<Rational> at{};         // edges_meet: where
 };
 std::optional<PolygonDefect> simplicity_defect(const Polygon<Rational>& polygon);
+
+// One line on the defect, naming corners as name[k] (e.g. "domain[3]") and points exactly.
+std::string describe(const PolygonDefect& defect, const Polygon<Rational>& polygon, const std::string& name);
 
 }  // namespace anisocert::geometry

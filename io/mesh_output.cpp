@@ -40,15 +40,6 @@ std::string mesh_json(const MeshData& m) {
   return o.str();
 }
 
-oracle::Mesh<Rational> exact_mesh(const MeshData& m) {
-  oracle::Mesh<Rational> e;
-  for (const auto& q : m.sites) e.sites.push_back({Rational(q.x), Rational(q.y)});  // exact conversions
-  for (const auto& M : m.metrics) e.metrics.push_back({Rational(M.m11), Rational(M.m12), Rational(M.m22)});
-  for (const auto& q : m.domain) e.domain.push_back({Rational(q.x), Rational(q.y)});
-  e.segments = m.segments, e.triangles = m.triangles;
-  return e;
-}
-
 std::string medit_mesh(const MeshData& m) {
   std::ostringstream o;
   o << "MeshVersionFormatted 2\nDimension 2\nVertices\n" << m.sites.size() << "\n";

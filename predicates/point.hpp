@@ -27,6 +27,11 @@ constexpr T quadratic_form(const T& m11, const T& m12, const T& m22, const T& dx
   return dx * (m11 * dx + m12 * dy) + dy * (m12 * dx + m22 * dy);
 }
 
+template <class T>
+constexpr T quadratic_form(const Sym2<T>& M, const T& dx, const T& dy) {
+  return quadratic_form(M.m11, M.m12, M.m22, dx, dy);
+}
+
 // (ax, ay) M (bx, by)ᵀ, the M-inner product.
 template <class T>
 constexpr T bilinear_form(const T& m11, const T& m12, const T& m22, const T& ax, const T& ay, const T& bx, const T& by) {

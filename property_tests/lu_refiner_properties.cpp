@@ -7,8 +7,10 @@
 // Domains: two fixed ones and random star-shaped polygons, convex or not (random_domain).
 // LU.T45: parameters meeting Theorem 4.5's decided conditions, on a constant field and a domain
 // meeting Lemma 4.1, terminate with the bounds.
-#include "io/mesh_output.hpp"
+#include "fields/registry.hpp"
+#include "geometry/mesh.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
+#include "refiners/star/rules.hpp"
 #include "refiners/star/star_refiner.hpp"
 #include "theory/lu_theorem45.hpp"
 
@@ -19,7 +21,7 @@
 
 using namespace anisocert;
 using refiners::star::RefineParameters;
-using refiners::star::RefineResult;
+using RefineResult = refiners::star::StarResult;
 
 namespace {
 
@@ -87,7 +89,7 @@ Run random_run() {
   run.p.delta = 0.02 + *rc::gen::inRange(0, 10) * 0.02;
   run.p.seed = *rc::gen::inRange(0, 1 << 20);
   run.p.max_vertices = 1500, run.p.max_seconds = 1;
-  run.r = refiners::star::refine_star(domain, refiners::star::make_field(run.field, params), run.p);
+  run.r = refiners::star::refine_star(domain, fields::make_field(run.field, params), run.p);
   return run;
 }
 
@@ -95,7 +97,7 @@ oracle::CertifyReport certify(const Run& run) {
   oracle::CertifyOptions o;
   o.rho0 = rational_from_double(run.p.rho0), o.gamma0 = rational_from_double(run.p.gamma0);
   const auto& r = run.r;
-  return oracle::certify_mesh(io::exact_mesh({r.sites, r.metrics, r.domain, r.segments, r.triangles}), o);
+  return oracle::certify_mesh(geometry::exact(r.mesh), o);
 }
 
 }  // namespace
@@ -123,14 +125,14 @@ RC_GTEST_PROP(LU_A41, ConsistentStarsMergeIntoACertifiedMesh, ()) {
 RC_GTEST_PROP(LU_L41_L44, InsertionRadiusOnTheTrace, ()) {
   const Run run = random_run();
   const auto& r = run.r;
-  RC_LOG() << run.field << ", " << run.domain << ", " << r.sites.size() << " sites, stop: " << r.stop_reason << "\n";
-  for (const auto& q : r.domain) RC_LOG() << "(" << q.x << ", " << q.y << ") ";
-  const std::size_t first = r.sites.size() - r.trace.size();  // the corners come first, untraced
+  RC_LOG() << run.field << ", " << run.domain << ", " << r.mesh.sites.size() << " sites, stop: " << r.stop_reason << "\n";
+  for (const auto& q : r.mesh.domain) RC_LOG() << "(" << q.x << ", " << q.y << ") ";
+  const std::size_t first = r.mesh.sites.size() - r.trace.size();  // the corners come first, untraced
   int checked = 0;
   for (std::size_t k = 0; k < r.trace.size(); ++k) {
     const auto& t = r.trace[k];
-    if (t.rule == refiners::star::encroachment) continue;
-    const auto& M = r.metrics[t.star];
+    if (t.rule == static_cast<int>(refiners::star::Rule::encroachment)) continue;
+    const auto& M = r.mesh.metrics[t.site];
     // Slack: r itself is a double (relative 10⁻⁹), and the picked point is stored rounded to
     // doubles, half an ulp per coordinate, which moves it by at most √λ_max(M)·ulp in M's length
     // (this matters only for runs refined down to the resolution of doubles).
@@ -138,7 +140,7 @@ RC_GTEST_PROP(LU_L41_L44, InsertionRadiusOnTheTrace, ()) {
     const double ulp = std::ldexp(1.0, std::ilogb(std::max(std::abs(t.x), std::abs(t.y))) - 52);
     const double bound = (1 - run.p.delta) * t.radius * (1 - 1e-9) - std::sqrt(lmax) * ulp;
     for (std::size_t s = 0; s < first + k; ++s) {
-      const double dx = r.sites[s].x - t.x, dy = r.sites[s].y - t.y;
+      const double dx = r.mesh.sites[s].x - t.x, dy = r.mesh.sites[s].y - t.y;
       if (!(std::sqrt(dx * (M.m11 * dx + M.m12 * dy) + dy * (M.m12 * dx + M.m22 * dy)) >= bound))
         RC_LOG() << "\ninsertion " << k << " rule " << t.rule << " at (" << t.x << ", " << t.y << "), r = " << t.radius << ", site " << s << "\n";
       RC_ASSERT(std::sqrt(dx * (M.m11 * dx + M.m12 * dy) + dy * (M.m12 * dx + M.m22 * dy)) >= bound);
@@ -160,10 +162,10 @@ RC_GTEST_PROP(LU_T45, ConditionsGiveTerminationWithTheBounds, ()) {
       {rational_from_double(p.rho0), rational_from_double(p.gamma0), rational_from_double(p.delta), rational_from_double(p.beta)});
   RC_PRE(conditions.all());
   const double a = *rc::gen::inRange(10, 21), c = *rc::gen::inRange(10, 21);
-  const auto field = refiners::star::make_field("constant", {{"m11", a}, {"m12", *rc::gen::inRange(-2, 3) * 0.5}, {"m22", c}});
+  const auto field = fields::make_field("constant", {{"m11", a}, {"m12", *rc::gen::inRange(-2, 3) * 0.5}, {"m22", c}});
   Run run{p, refiners::star::refine_star(kDomains[0], field, p), "constant"};
   RC_PRE(run.r.acute_corners.empty());
-  RC_TAG(run.r.sites.size() < 100 ? "under 100 vertices" : "100 vertices or more");
+  RC_TAG(run.r.mesh.sites.size() < 100 ? "under 100 vertices" : "100 vertices or more");
   RC_ASSERT(run.r.consistent);
   const oracle::CertifyReport cert = certify(run);
   RC_ASSERT(cert.valid_holds());

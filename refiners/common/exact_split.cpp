@@ -1,4 +1,4 @@
-#include "refiners/star/exact_split.hpp"
+#include "refiners/common/exact_split.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace anisocert::refiners::star {
+namespace anisocert::refiners::common {
 
 namespace {
 
@@ -65,4 +65,4 @@ std::optional<predicates::Point2<double>> exact_midpoint(const predicates::Point
   return predicates::Point2<double>{*x, *y};
 }
 
-}  // namespace anisocert::refiners::star
+}  // namespace anisocert::refiners::common

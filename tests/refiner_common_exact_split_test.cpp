@@ -1,8 +1,8 @@
-// Exact boundary splitting (refiners/star/exact_split): the halving count is a true lower bound,
+// Exact boundary splitting (refiners/common/exact_split): the halving count is a true lower bound,
 // checked point by point in rational arithmetic (every point a + k(b − a)/2ʲ a double), and an
 // exact midpoint lies exactly on the segment.
 #include "numbers/rational.hpp"
-#include "refiners/star/exact_split.hpp"
+#include "refiners/common/exact_split.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +16,8 @@ namespace {
 using anisocert::Rational;
 using anisocert::rational_from_double;
 using anisocert::predicates::Point2;
-using anisocert::refiners::star::exact_halvings;
-using anisocert::refiners::star::exact_midpoint;
+using anisocert::refiners::common::exact_halvings;
+using anisocert::refiners::common::exact_midpoint;
 
 bool is_double(const Rational& q) { return rational_from_double(q.convert_to<double>()) == q; }
 

@@ -9,7 +9,7 @@
 
 #include <optional>
 
-namespace anisocert::refiners::star {
+namespace anisocert::refiners::common {
 
 // The refiner accepts a domain whose every edge can be halved exactly this many times (2⁻³⁰ of
 // the edge's length: far below any boundary refinement that ends).
@@ -23,4 +23,4 @@ int exact_halvings(const predicates::Point2<double>& a, const predicates::Point2
 std::optional<predicates::Point2<double>> exact_midpoint(const predicates::Point2<double>& a,
                                                          const predicates::Point2<double>& b);
 
-}  // namespace anisocert::refiners::star
+}  // namespace anisocert::refiners::common

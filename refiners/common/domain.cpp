@@ -1,0 +1,69 @@
+#include "refiners/common/domain.hpp"
+
+#include "refiners/common/exact_split.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <limits>
+
+namespace anisocert::refiners::common {
+
+std::string shortest_decimal(double x) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+}
+
+namespace {
+
+std::string point_text(const Point2<double>& p) { return "(" + shortest_decimal(p.x) + ", " + shortest_decimal(p.y) + ")"; }
+
+}  // namespace
+
+Domain::Domain(const Polygon<double>& corners) : corners_(corners) {
+  for (const auto& q : corners_) exact_.push_back({Rational(q.x), Rational(q.y)});
+  if (corners_.size() < 3) throw DomainError("the domain needs at least 3 corners");
+  if (const auto defect = geometry::simplicity_defect(exact_)) throw DomainError(geometry::describe(*defect, exact_, "domain"));
+  for (std::size_t i = 0; i < corners_.size(); ++i) {
+    const Point2<double>&a = corners_[i], &b = corners_[(i + 1) % corners_.size()];
+    const int k = exact_halvings(a, b);
+    if (k < min_halvings)
+      throw DomainError("domain edge " + std::to_string(i) + " from " + point_text(a) + " to " + point_text(b) +
+                        " can be halved exactly in doubles only " + std::to_string(k) + " times (" +
+                        std::to_string(min_halvings) +
+                        " needed: split points must lie exactly on the boundary); give the domain coordinates with fewer "
+                        "binary digits, e.g. 0.375 or 13/32 rather than 0.4");
+  }
+  convex_ = geometry::is_convex(corners_);
+}
+
+Domain Domain::from_exact(const Polygon<Rational>& corners) {
+  Polygon<double> d;
+  for (const auto& q : corners) {
+    const double x = q.x.convert_to<double>(), y = q.y.convert_to<double>();
+    if (Rational(x) != q.x || Rational(y) != q.y)
+      throw DomainError("domain vertex (" + to_exact_string(q.x) + ", " + to_exact_string(q.y) +
+                        ") is not a double; the refiner works in floating point");
+    d.push_back({x, y});
+  }
+  return Domain(d);
+}
+
+Box Domain::bounding_box() const {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Box b{inf, -inf, inf, -inf};
+  for (const auto& q : corners_) b.x0 = std::min(b.x0, q.x), b.y0 = std::min(b.y0, q.y), b.x1 = std::max(b.x1, q.x), b.y1 = std::max(b.y1, q.y);
+  return b;
+}
+
+bool Domain::visible(const Point2<double>& a, const Point2<double>& b) const {
+  if (convex_) return true;
+  for (std::size_t i = 0; i < corners_.size(); ++i)
+    if (geometry::segments_cross(a, b, corners_[i], corners_[(i + 1) % corners_.size()])) return false;
+  return true;
+}
+
+std::string Domain::corner_text(std::size_t k) const {
+  return "corner " + std::to_string(k) + " " + point_text(corners_[k]);
+}
+
+}  // namespace anisocert::refiners::common

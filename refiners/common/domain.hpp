@@ -1,0 +1,55 @@
+#pragma once
+// The domain Ω as every refiner sees it, checked once, here: a simple counter-clockwise polygon
+// (geometry::simplicity_defect) whose corners are doubles (the refiners work in floating point)
+// and whose edges can each be halved exactly min_halvings times (exact_split.hpp: boundary
+// vertices must lie exactly on ∂Ω). And the exact questions a refiner asks of it.
+#include "geometry/polygon.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace anisocert::refiners::common {
+
+using geometry::Polygon;
+using predicates::Point2;
+
+// A domain a refiner cannot use: what() names the corner or the edge and why.
+struct DomainError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// A closed axis-parallel box; empty when x0 > x1.
+struct Box {
+  double x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+};
+
+class Domain {
+ public:
+  // Throws DomainError.
+  explicit Domain(const Polygon<double>& corners);
+  // The same from exact corners, each of which must be a double.
+  static Domain from_exact(const Polygon<Rational>& corners);
+
+  const Polygon<double>& corners() const { return corners_; }
+  std::size_t size() const { return corners_.size(); }
+  bool convex() const { return convex_; }
+  Box bounding_box() const;
+  // p in the closed polygon, exactly.
+  bool contains(const Point2<double>& p) const { return geometry::in_closed_polygon(p, corners_); }
+  // p (rational, e.g. a centroid of doubles) in the closed polygon, exactly.
+  bool contains(const Point2<Rational>& p) const { return geometry::in_closed_polygon(p, exact_); }
+  // The segment ab crosses no edge of Ω properly (always true in a convex Ω, for a, b in Ω).
+  bool visible(const Point2<double>& a, const Point2<double>& b) const;
+  // "corner k (x, y)", with the shortest decimals that read back as the corners' doubles.
+  std::string corner_text(std::size_t k) const;
+
+ private:
+  Polygon<double> corners_;
+  Polygon<Rational> exact_;
+  bool convex_;
+};
+
+// The shortest decimal that reads back as x.
+std::string shortest_decimal(double x);
+
+}  // namespace anisocert::refiners::common

@@ -1,0 +1,41 @@
+#pragma once
+// What every refiner returns (DESIGN.md § Layers, refiners/): the mesh in the one mesh shape, how
+// the run stopped, and what it did, rule by rule and insertion by insertion.
+#include "geometry/mesh.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace anisocert::refiners::common {
+
+// The budgets every run has (DESIGN.md non-negotiable 5: long work has budgets and says what it
+// did when it stops).
+struct Budget {
+  std::size_t max_vertices = 200000;
+  double max_seconds = 120;
+};
+
+// One insertion, for the properties on traces (LU Lemmas 4.1–4.4, LS Theorem 11, BWY §4.2): where,
+// by which rule (its number in the refiner's rule table), and its distance to the nearest earlier
+// site in the new site's metric. For a rule acting on an element at a site (LU: a triangle of the
+// star of `site`), that site and the element's circumradius in its metric.
+struct Insertion {
+  int rule;
+  double x, y;
+  double nearest_distance;
+  int site = -1;
+  double radius = 0;
+};
+
+struct RefineResult {
+  geometry::Mesh<double> mesh;
+  bool consistent = false;      // the refiner's output condition holds (star sets: every star triangle is in its vertices' stars)
+  std::string stop_reason;      // that condition's name, the budget that stopped it, or why it cannot go on
+  std::string last_rule = "none";                            // the rule still firing when it stopped
+  std::vector<std::pair<std::string, std::size_t>> rule_counts;  // insertions per rule, in priority order
+  double seconds = 0;
+  std::vector<Insertion> trace;
+};
+
+}  // namespace anisocert::refiners::common

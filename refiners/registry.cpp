@@ -1,0 +1,20 @@
+#include "refiners/registry.hpp"
+
+#include "refiners/star/entry.hpp"
+
+namespace anisocert::refiners {
+
+const std::vector<RefinerEntry>& registered_refiners() {
+  static const std::vector<RefinerEntry> entries = {
+      star::entry(),
+  };
+  return entries;
+}
+
+const RefinerEntry* find_refiner(const std::string& name) {
+  for (const RefinerEntry& e : registered_refiners())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+}  // namespace anisocert::refiners

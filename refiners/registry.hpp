@@ -1,0 +1,43 @@
+#pragma once
+// The refiners by name: what `anisocert refine --algo NAME` runs (registry.cpp lists them, one line
+// each). An entry names its parameters (each becomes an option --NAME of `refine`, with its
+// default and meaning), runs on a domain and a metric field within the budgets every run has, and
+// writes the lines of its report: the common ones (common/summary.hpp) and its own.
+#include "fields/metric_field.hpp"
+#include "refiners/common/domain.hpp"
+#include "refiners/common/refinement_loop.hpp"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace anisocert::refiners {
+
+struct ParameterSpec {
+  std::string name;  // the option --name
+  std::string help;
+  double value;      // the default
+};
+using ParameterValues = std::map<std::string, double>;  // a value for every parameter of the entry
+
+struct Run {
+  common::RefineResult result;
+  std::vector<std::string> report;  // the summary, one line each
+};
+
+struct RefinerEntry {
+  std::string name, summary;
+  std::vector<ParameterSpec> parameters;
+  // Throws std::invalid_argument naming a parameter out of range (common::DomainError for a
+  // domain the refiner cannot use).
+  std::function<Run(const common::Domain&, const fields::MetricField&, const ParameterValues&, const common::Budget&,
+                    unsigned seed, const common::Progress&)>
+      run;
+};
+
+const std::vector<RefinerEntry>& registered_refiners();
+// The entry called `name`, or nullptr.
+const RefinerEntry* find_refiner(const std::string& name);
+
+}  // namespace anisocert::refiners

@@ -1,0 +1,84 @@
+#include "refiners/star/entry.hpp"
+
+#include "refiners/common/summary.hpp"
+#include "refiners/star/star_refiner.hpp"
+#include "theory/lu_theorem45.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace anisocert::refiners::star {
+namespace {
+
+RefineParameters parameters(const ParameterValues& v, const common::Budget& budget, unsigned seed) {
+  RefineParameters p;
+  static_cast<common::Budget&>(p) = budget;
+  p.rho0 = v.at("rho0"), p.gamma0 = v.at("gamma0"), p.delta = v.at("delta"), p.beta = v.at("beta"), p.size = v.at("size");
+  p.seed = seed;
+  if (!(p.gamma0 > 1) || !(p.rho0 > 0) || !(p.delta > 0 && p.delta < 1) || !(p.beta > 0) || !(p.size > 0))
+    throw std::invalid_argument("parameters out of range: need γ₀ > 1, ρ₀ > 0, 0 < δ < 1, β > 0, size > 0");
+  const double attempts = v.at("pick-attempts");
+  if (!(attempts >= 0 && attempts <= 1000) || attempts != static_cast<int>(attempts))
+    throw std::invalid_argument("--pick-attempts must be an integer from 0 to 1000");
+  p.pick_attempts = static_cast<int>(attempts);
+  return p;
+}
+
+const char* yes(bool b) { return b ? "yes" : "no"; }
+
+std::vector<std::string> report(const StarResult& r, const RefineParameters& p) {
+  std::vector<std::string> lines{common::size_line(r, "star refiner"),
+                                 common::stop_line(r, "inconsistent star triangles: " + std::to_string(r.inconsistent_triangles))};
+  std::ostringstream o;
+  o << "  LU Lemma 4.1 (boundary angles > 90° in the metric): ";
+  if (r.acute_corners.empty()) {
+    o << "holds at every corner";
+  } else {
+    o << "fails at corner(s)";
+    for (int k : r.acute_corners) o << " " << k;
+    o << " (encroachment there may not end)";
+  }
+  lines.push_back(o.str());
+  o.str("");
+  o << "  Pick_valid: " << r.picks_rejected << " picked points discarded as γ₀-cocircular, " << r.picks_exhausted << " of "
+    << r.refinements << " refinements kept a forbidden point after " << p.pick_attempts << " discards";
+  if (p.pick_attempts > 0 && 2 * r.picks_exhausted > r.refinements)
+    o << " (most: at this γ₀ the forbidden set covers most of each picking region; LU Lemma 3.15 needs γ₀ close to 1)";
+  lines.push_back(o.str());
+  lines.push_back(common::rule_counts_line(r));
+  o.str("");
+  o << "  parameters: ρ₀ = " << p.rho0 << ", γ₀ = " << p.gamma0 << ", δ = " << p.delta << ", β = " << p.beta << ", size = " << p.size;
+  lines.push_back(o.str());
+  // LU Theorem 4.5's conditions on the parameters, decided exactly by theory/.
+  const theory::LuConditions c = theory::lu_t45_conditions(
+      {rational_from_double(p.rho0), rational_from_double(p.gamma0), rational_from_double(p.delta), rational_from_double(p.beta)});
+  lines.push_back(std::string("  LU Theorem 4.5 conditions (decided exactly): ρ₀ > 2 ") + yes(c.rho0_above_2) + ", (1−δ)³ρ₀ > 2 " +
+                  yes(c.delta_rho0) + ", (1−δ)³β > 2 " + yes(c.delta_beta) + ", (1−δ)³ρ₀ > 2γ₀³ " + yes(c.lemma43) +
+                  ", (1−δ)³β > 2γ₀³ " + yes(c.lemma44));
+  return lines;
+}
+
+}  // namespace
+
+RefinerEntry entry() {
+  const RefineParameters d;
+  return {"star",
+          "locally uniform star sets (Boissonnat, Wormser & Yvinec; LU §4.1 rules (1) encroachment, (2) distortion, "
+          "(3) radius-edge ratio, (4) size, (5) inconsistency)",
+          {{"rho0", "radius-edge ratio bound ρ₀", d.rho0},
+           {"gamma0", "distortion bound γ₀", d.gamma0},
+           {"delta", "picking-region ratio δ", d.delta},
+           {"beta", "cosphericity radius ratio β (checked against Theorem 4.5)", d.beta},
+           {"size", "largest circumradius in the metric", d.size},
+           {"pick-attempts", "Pick_valid: picked points that may be discarded as γ₀-cocircular before one is kept (0: no test)",
+            static_cast<double>(d.pick_attempts)}},
+          [](const common::Domain& domain, const fields::MetricField& field, const ParameterValues& values,
+             const common::Budget& budget, unsigned seed, const common::Progress& progress) {
+            const RefineParameters p = parameters(values, budget, seed);
+            StarResult r = refine_star(domain, field, p, progress);
+            std::vector<std::string> lines = report(r, p);
+            return Run{std::move(r), std::move(lines)};
+          }};
+}
+
+}  // namespace anisocert::refiners::star
