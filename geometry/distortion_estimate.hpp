@@ -16,7 +16,7 @@ namespace anisocert::geometry {
 
 // The largest generalized eigenvalue λ of Q x = λ P x.
 template <class T>
-T largest_generalized_eigenvalue(const predicates::Sym2<T>& P, const predicates::Sym2<T>& Q) {
+[[gnu::always_inline]] inline T largest_generalized_eigenvalue(const predicates::Sym2<T>& P, const predicates::Sym2<T>& Q) {
   using std::max;
   using std::sqrt;
   const T a2 = P.m11 * P.m22 - P.m12 * P.m12, b1 = -(P.m11 * Q.m22 + P.m22 * Q.m11 - 2 * P.m12 * Q.m12),

@@ -48,7 +48,8 @@ Meeting segments_meet(const Point2<S>& p1, const Point2<S>& p2, const Point2<S>&
 // p in the closed polygon: on an edge, or inside by the crossing number of the ray from p towards
 // +x (an edge counts when one endpoint is strictly above p and the other is not; p off the edge
 // is then strictly left or right of it, and the crossing is to the right of p when p is left of
-// an upward edge or right of a downward one). One orientation per edge.
+// an upward edge or right of a downward one). An edge whose height range misses p's can neither
+// hold p nor count, so it costs no orientation; the others cost one.
 template <class S>
 bool in_closed_polygon(const Point2<S>& p, const Polygon<S>& polygon) {
   const std::size_t m = polygon.size();
@@ -56,10 +57,9 @@ bool in_closed_polygon(const Point2<S>& p, const Polygon<S>& polygon) {
   for (std::size_t k = 0; k < m; ++k) {
     const Point2<S>& a = polygon[k];
     const Point2<S>& b = polygon[(k + 1) % m];
+    if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
     const Sign o = predicates::orientation(a, b, p);
-    if (o == Sign::zero && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-        p.y <= std::max(a.y, b.y))
-      return true;
+    if (o == Sign::zero && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x)) return true;
     if ((a.y > p.y) != (b.y > p.y) && (o == Sign::positive) == (a.y < b.y)) inside = !inside;
   }
   return inside;

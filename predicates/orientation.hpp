@@ -20,13 +20,26 @@ struct OrientationKernel {
   }
 };
 
+// The sign of a difference of two numbers, exactly: for doubles, subtraction is correctly rounded
+// and so never crosses or reaches 0 unless the exact difference does (overflow keeps the sign).
+template <class S>
+Sign sign_of_difference(const S& u, const S& w) {
+  return u > w ? Sign::positive : u < w ? Sign::negative : Sign::zero;
+}
+
 template <class S>
 Sign orientation(const Point2<S>& a, const Point2<S>& b, const Point2<S>& c) {
-  // Points on one axis-parallel line (boundary sites of a box) are collinear: exact, and it spares
+  // An axis-parallel ab (an edge of a box-shaped domain, or points on one such line): one product
+  // of P vanishes exactly, P = −(b.y − a.y)(c.x − a.x) when a.x = b.x and (b.x − a.x)(c.y − a.y) when
+  // a.y = b.y, so the sign is a product of the exact signs of two differences: exact, and it spares
   // the exact fall-back that the filter cannot avoid for a zero.
-  if ((a.x == b.x && b.x == c.x) || (a.y == b.y && b.y == c.y)) {
-    require_finite<S>("orientation", {{"a.x", a.x}, {"a.y", a.y}, {"b.x", b.x}, {"b.y", b.y}, {"c.x", c.x}, {"c.y", c.y}});
-    return Sign::zero;
+  if (a.x == b.x || a.y == b.y) {
+    if constexpr (std::is_same_v<S, double>)
+      if (!(std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(b.x) && std::isfinite(b.y) && std::isfinite(c.x) &&
+            std::isfinite(c.y)))
+        require_finite<S>("orientation", {{"a.x", a.x}, {"a.y", a.y}, {"b.x", b.x}, {"b.y", b.y}, {"c.x", c.x}, {"c.y", c.y}});
+    if (a.x == b.x) return -(sign_of_difference(b.y, a.y) * sign_of_difference(c.x, a.x));
+    return sign_of_difference(b.x, a.x) * sign_of_difference(c.y, a.y);
   }
   return filtered_sign<OrientationKernel>(std::array<S, 6>{a.x, a.y, b.x, b.y, c.x, c.y});
 }

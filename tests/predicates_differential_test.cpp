@@ -118,6 +118,32 @@ TEST(FilteredVsExact, RandomInputsAcrossMagnitudes) {
   }
 }
 
+// The orientation's axis-parallel shortcut (an edge ab with a.x = b.x or a.y = b.y decided from
+// the signs of two differences) against the exact kernel: across magnitudes, with c on the line,
+// a few ulps off it, on either side, a = b, and far apart in magnitude (differences that round).
+TEST(FilteredVsExact, OrientationOfAxisParallelEdges) {
+  Random r;
+  int zeros = 0, nonzeros = 0;
+  for (int t = 0; t < 4000; ++t) {
+    const int e = r.integer(-70, 70), f = r.integer(-70, 70);
+    const double x = r.coordinate(e), y0 = r.coordinate(e), y1 = t % 17 == 0 ? y0 : r.coordinate(f);
+    double cx = t % 3 == 0 ? x : r.coordinate(r.integer(-70, 70));
+    if (t % 3 == 1) for (int k = r.integer(1, 3); k > 0; --k) cx = std::nextafter(cx, t % 2 ? INFINITY : -INFINITY);
+    const double cy = r.coordinate(f);
+    const bool vertical = t % 2 == 0;
+    const Point2<double> a = vertical ? Point2<double>{x, y0} : Point2<double>{y0, x};
+    const Point2<double> b = vertical ? Point2<double>{x, y1} : Point2<double>{y1, x};
+    const Point2<double> c = vertical ? Point2<double>{cx, cy} : Point2<double>{cy, cx};
+    const std::array<double, 6> in{a.x, a.y, b.x, b.y, c.x, c.y};
+    const Sign exact = exact_sign<OrientationKernel>(exact_inputs<OrientationKernel>(in));
+    EXPECT_EQ(orientation(a, b, c), exact) << t;
+    EXPECT_EQ(orientation(Point2<Rational>{a.x, a.y}, Point2<Rational>{b.x, b.y}, Point2<Rational>{c.x, c.y}), exact) << t;
+    (exact == Sign::zero ? zeros : nonzeros) += 1;
+  }
+  EXPECT_GT(zeros, 500);
+  EXPECT_GT(nonzeros, 2000);
+}
+
 TEST(FilteredVsExact, ExactlyDegenerateAndNearlyDegenerate) {
   Random r;
   int zeros = 0;

@@ -55,8 +55,7 @@ Box Domain::bounding_box() const {
   return b;
 }
 
-bool Domain::visible(const Point2<double>& a, const Point2<double>& b) const {
-  if (convex_) return true;
+bool Domain::crosses_no_edge(const Point2<double>& a, const Point2<double>& b) const {
   for (std::size_t i = 0; i < corners_.size(); ++i)
     if (geometry::segments_cross(a, b, corners_[i], corners_[(i + 1) % corners_.size()])) return false;
   return true;

@@ -39,11 +39,13 @@ class Domain {
   // p (rational, e.g. a centroid of doubles) in the closed polygon, exactly.
   bool contains(const Point2<Rational>& p) const { return geometry::in_closed_polygon(p, exact_); }
   // The segment ab crosses no edge of Ω properly (always true in a convex Ω, for a, b in Ω).
-  bool visible(const Point2<double>& a, const Point2<double>& b) const;
+  bool visible(const Point2<double>& a, const Point2<double>& b) const { return convex_ || crosses_no_edge(a, b); }
   // "corner k (x, y)", with the shortest decimals that read back as the corners' doubles.
   std::string corner_text(std::size_t k) const;
 
  private:
+  bool crosses_no_edge(const Point2<double>& a, const Point2<double>& b) const;
+
   Polygon<double> corners_;
   Polygon<Rational> exact_;
   bool convex_;

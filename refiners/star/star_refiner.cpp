@@ -55,7 +55,7 @@ class StarRefiner {
     return false;
   }
 
-  StarResult result(std::string stop_reason, double seconds) const {
+  StarResult result(std::string stop_reason) const {
     StarResult r;
     r.mesh.triangles = stars_.consistent_triangles(r.inconsistent_triangles);
     r.consistent = r.inconsistent_triangles == 0;
@@ -64,7 +64,6 @@ class StarRefiner {
     r.stop_reason = std::move(stop_reason);
     for (std::size_t k = 0; k < domain_.size(); ++k)
       if (!boundary_.corner_is_obtuse(k)) r.acute_corners.push_back(static_cast<int>(k));
-    r.seconds = seconds;
     for (Rule rule : rules_by_priority) r.rule_counts.emplace_back(rule_name(rule), counts_[static_cast<int>(rule)]);
     r.last_rule = rule_name(last_rule_);
     r.picks_rejected = pick_.counts().rejected, r.picks_exhausted = pick_.counts().exhausted;
@@ -168,7 +167,9 @@ StarResult refine_star(const common::Domain& domain, const fields::MetricField& 
   const common::Stopwatch clock;
   StarRefiner r(domain, field, p);
   std::string stop = common::refine_until_done(r, p, clock, progress);
-  return r.result(std::move(stop), clock.seconds());
+  StarResult result = r.result(std::move(stop));
+  result.seconds = clock.seconds();
+  return result;
 }
 
 StarResult refine_star(const common::Polygon<double>& domain, const fields::MetricField& field, const RefineParameters& p,

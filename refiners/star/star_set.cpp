@@ -49,11 +49,6 @@ void StarSet::add(double reach2) {
   reach2_.push_back(reach2);
 }
 
-bool StarSet::zone_holds(int v, const Point2<double>& q) const {
-  const common::Box& z = stars_[v].zone;  // the box the index filed v under, not just its cells
-  return q.x >= z.x0 && q.x <= z.x1 && q.y >= z.y0 && q.y <= z.y1;
-}
-
 void StarSet::set_zone(int v, const common::Box& zone) {
   Star& s = stars_[v];
   s.zone = zone;
@@ -253,12 +248,6 @@ StarSet::Update StarSet::update(int v, int k) {
   sort_unique(s.neighbours);
   refresh_zone(v);
   return Update::updated;
-}
-
-bool StarSet::has_triangle(int a, int b, int c) const {
-  for (const auto& u : stars_[a].triangles)
-    if (u[0] == b && u[1] == c) return true;
-  return false;
 }
 
 std::vector<std::array<int, 3>> StarSet::consistent_triangles(std::size_t& inconsistent) const {

@@ -35,14 +35,21 @@ class StarSet {
   Update update(int v, int k);
   // The stars whose conflict zone's box may hold q (to be tested with zone_holds).
   const std::vector<int>& near(const Point2<double>& q) const { return index_.at(sites_.grid.cell_of(q)); }
-  bool zone_holds(int v, const Point2<double>& q) const;
+  bool zone_holds(int v, const Point2<double>& q) const {
+    const common::Box& z = stars_[v].zone;  // the box the index filed v under, not just its cells
+    return q.x >= z.x0 && q.x <= z.x1 && q.y >= z.y0 && q.y <= z.y1;
+  }
   // Files every star's conflict zone again (after the grid was rebuilt).
   void refile();
 
   const Star& operator[](int v) const { return stars_[v]; }
   std::size_t size() const { return stars_.size(); }
   // (a, b, c) is a triangle of S_a, as (a, b, c) in its counter-clockwise order.
-  bool has_triangle(int a, int b, int c) const;
+  bool has_triangle(int a, int b, int c) const {
+    for (const auto& u : stars_[a].triangles)
+      if (u[0] == b && u[1] == c) return true;
+    return false;
+  }
   // The triangles that are in the stars of all three of their vertices (LU: consistent), each once
   // with its least site first, and how many star triangles are not.
   std::vector<std::array<int, 3>> consistent_triangles(std::size_t& inconsistent) const;
