@@ -2,7 +2,7 @@
 // Exit codes (DESIGN.md § Command line): 0 holds, 1 does not hold, 2 bad input or usage,
 // 3 internal error (a bug: a check of our own output failed).
 
-#include "cli/theory_command.hpp"
+#include "cli/command.hpp"
 #include "cli/usage_error.hpp"
 
 #include <CLI/CLI.hpp>
@@ -17,12 +17,7 @@ int main(int argc, char** argv) {
       "anisocert"};
   app.require_subcommand(1);
   int exit_code = 0;
-  anisocert::cli::add_theory_command(app, exit_code);
-  anisocert::cli::add_conics_command(app, exit_code);
-  anisocert::cli::add_diagram_command(app, exit_code);
-  anisocert::cli::add_demo_command(app, exit_code);
-  anisocert::cli::add_certify_command(app, exit_code);
-  anisocert::cli::add_refine_command(app, exit_code);
+  for (const anisocert::cli::Command& c : anisocert::cli::commands()) c.add(app, exit_code);
   try {
     const auto known = app.get_subcommands([&](CLI::App* s) { return argc > 1 && s->check_name(argv[1]); });
     if (argc > 1 && argv[1][0] != '-' && known.empty())

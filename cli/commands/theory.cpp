@@ -1,9 +1,9 @@
 // `anisocert theory`: LS Theorem 11 (γ(θ), segment angle, distance factor, θ_max) and the LS
 // Lemma factors at γ(θ), for θ_bound in degrees.
 
-#include "cli/theory_command.hpp"
+#include "cli/command.hpp"
 
-#include "cli/output.hpp"
+#include "cli/theory_output.hpp"
 #include "cli/usage_error.hpp"
 #include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_lemma_factors.hpp"
@@ -89,7 +89,7 @@ std::string theorem11_table(const std::vector<Rational>& thetas, const Interval&
 
 }  // namespace
 
-void add_theory_command(CLI::App& app, int& exit_code) {
+void add_theory(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<TheoryOptions>();
   CLI::App* theory = app.add_subcommand(
       "theory",
@@ -114,9 +114,7 @@ void add_theory_command(CLI::App& app, int& exit_code) {
     }
     exit_code = 0;
   });
-  add_theory_chi_command(*theory, exit_code);
-  add_theory_bwy_command(*theory, exit_code);
-  add_theory_lu_command(*theory, exit_code);
+  for (const Command& c : theory_commands()) c.add(*theory, exit_code);
   for (CLI::App* sub : theory->get_subcommands(std::function<bool(CLI::App*)>{})) sub->excludes(theta);  // table only
 }
 

@@ -1,4 +1,6 @@
-#include "io/diagram_svg.hpp"
+#include "io/svg/diagram_svg.hpp"
+
+#include "io/svg/canvas.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -72,20 +74,16 @@ std::string colour_of_site(int s) {
 }  // namespace
 
 std::string diagram_svg(const Diagram& d) {
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (const auto& p : d.input.domain) {
-    const double x = p.x.convert_to<double>(), y = p.y.convert_to<double>();
-    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-  }
-  const double size = std::max(x1 - x0, y1 - y0), margin = size * 0.04, px = 800 / (size + 2 * margin);
-  auto X = [&](double x) { return (x - x0 + margin) * px; };
-  auto Y = [&](double y) { return (y1 - y + margin) * px; };
+  geometry::Polygon<double> frame;
+  for (const auto& p : d.input.domain) frame.push_back({p.x.convert_to<double>(), p.y.convert_to<double>()});
+  const Canvas canvas(frame, 0.04);
+  auto X = [&](double x) { return canvas.X(x); };
+  auto Y = [&](double y) { return canvas.Y(y); };
+  const double size = canvas.size(), px = canvas.scale(), H = canvas.height();
   std::ostringstream o;
   o.precision(7);
-  const double W = (x1 - x0 + 2 * margin) * px, H = (y1 - y0 + 2 * margin) * px;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H + 40 << "\" viewBox=\"0 0 " << W
-    << " " << H + 40 << "\">\n"
-    << "<defs><pattern id=\"hatch\" width=\"6\" height=\"6\" patternUnits=\"userSpaceOnUse\" "
+  canvas.open(o, 40);
+  o << "<defs><pattern id=\"hatch\" width=\"6\" height=\"6\" patternUnits=\"userSpaceOnUse\" "
        "patternTransform=\"rotate(45)\"><rect width=\"6\" height=\"6\" fill=\"#fbd5d5\"/>"
        "<line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"6\" stroke=\"#d62728\" stroke-width=\"2\"/></pattern></defs>\n"
     << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";

@@ -1,8 +1,8 @@
 // `anisocert theory bwy`: Boissonnat–Wormser–Yvinec §4 (Lemma 2, §4.2) for a shape bound B
 // and, optionally, a distortion coefficient G.
 
-#include "cli/output.hpp"
-#include "cli/theory_command.hpp"
+#include "cli/theory_output.hpp"
+#include "cli/command.hpp"
 #include "cli/usage_error.hpp"
 #include "theory/bwy_section4.hpp"
 #include "numbers/decimal_enclosure.hpp"
@@ -78,7 +78,7 @@ int run_bwy(const BwyOptions& o) {
 
 }  // namespace
 
-void add_theory_bwy_command(CLI::App& theory, int& exit_code) {
+void add_theory_bwy(CLI::App& theory, int& exit_code) {
   auto o = std::make_shared<BwyOptions>();
   CLI::App* bwy = theory.add_subcommand(
       "bwy",

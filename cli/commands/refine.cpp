@@ -1,22 +1,18 @@
-// `anisocert refine --algo star`: the locally uniform star refiner (refiners/star/) on a domain and
-// a built-in metric field; writes the mesh for `anisocert certify`, Medit .mesh/.sol and SVG.
+// `anisocert refine --algo NAME`: a refiner of the registry (refiners/registry.hpp) on a domain and a
+// metric field (fields/registry.hpp); writes the mesh for `anisocert certify`, Medit .mesh/.sol and SVG.
 #include "cli/output.hpp"
-#include "cli/refine_command.hpp"
-#include "cli/theory_command.hpp"
+#include "cli/reports/refine_report.hpp"
 #include "cli/usage_error.hpp"
-#include "io/site_set.hpp"
 #include "fields/registry.hpp"
+#include "io/formats/medit.hpp"
+#include "io/mesh_json.hpp"
+#include "io/svg/mesh_svg.hpp"
 
-#include <sstream>
+#include <CLI/CLI.hpp>
+
+#include <memory>
 
 namespace anisocert::cli {
-
-std::string report_text(const refiners::Run& run) {
-  std::string text;
-  for (const std::string& line : run.report) text += line + "\n";
-  return text;
-}
-
 namespace {
 
 struct RefineOptions {
@@ -87,7 +83,7 @@ int run_refine(const RefineOptions& o) {
 
 }  // namespace
 
-void add_refine_command(CLI::App& app, int& exit_code) {
+void add_refine(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<RefineOptions>();
   CLI::App* c = app.add_subcommand(
       "refine",

@@ -1,8 +1,8 @@
 // `anisocert theory lu`: the parameter conditions of LU Theorem 4.5 (locally uniform
 // anisotropic meshing), decided exactly.
 
-#include "cli/output.hpp"
-#include "cli/theory_command.hpp"
+#include "cli/theory_output.hpp"
+#include "cli/command.hpp"
 #include "cli/usage_error.hpp"
 #include "theory/lu_theorem45.hpp"
 
@@ -58,7 +58,7 @@ int run_lu(const LuOptions& o) {
 
 }  // namespace
 
-void add_theory_lu_command(CLI::App& theory, int& exit_code) {
+void add_theory_lu(CLI::App& theory, int& exit_code) {
   auto o = std::make_shared<LuOptions>();
   CLI::App* lu = theory.add_subcommand(
       "lu",

@@ -1,7 +1,7 @@
 // `anisocert theory chi`: LS Theorem 9 and Corollary 10 for given β and γ.
 
-#include "cli/output.hpp"
-#include "cli/theory_command.hpp"
+#include "cli/theory_output.hpp"
+#include "cli/command.hpp"
 #include "cli/usage_error.hpp"
 #include "theory/ls_theorem9.hpp"
 
@@ -61,7 +61,7 @@ int run_chi(const ChiOptions& o) {
 
 }  // namespace
 
-void add_theory_chi_command(CLI::App& theory, int& exit_code) {
+void add_theory_chi(CLI::App& theory, int& exit_code) {
   auto o = std::make_shared<ChiOptions>();
   CLI::App* chi = theory.add_subcommand(
       "chi",

@@ -1,7 +1,7 @@
 // `anisocert conics`: the real common points of two conics, exactly (oracle/), so that a user
 // can check another library's conic intersections.
 
-#include "cli/output.hpp"
+#include "cli/theory_output.hpp"
 #include "cli/usage_error.hpp"
 #include "oracle/algebraic/conic_intersection.hpp"
 
@@ -53,7 +53,7 @@ int run_conics(const ConicsOptions& o) {
 
 }  // namespace
 
-void add_conics_command(CLI::App& app, int& exit_code) {
+void add_conics(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<ConicsOptions>();
   CLI::App* conics = app.add_subcommand(
       "conics",

@@ -1,0 +1,37 @@
+#pragma once
+// The project's own file of sites, metrics, domain, segments and triangles (DESIGN.md § Command line
+// and files), read into and written from the one mesh shape, geometry::Mesh:
+//   {"sites": [{"x": X, "y": Y, "metric": [m11, m12, m22]}, ...],   required, non-empty
+//    "domain": [[X, Y], ...],                                        optional, >= 3 vertices
+//    "segments": [[i, j], ...],                                      optional
+//    "triangles": [[i, j, k], ...]}                                  optional (a mesh)
+// A number is a JSON string (integer, fraction or decimal, see parse_rational) or a plain JSON
+// number, both taken exactly from their text (0.1 is 1/10). Checked exactly: every metric is
+// positive definite; the domain is a simple counter-clockwise polygon (consecutive collinear
+// vertices allowed when the boundary runs straight on); no two sites coincide; every site lies
+// in the closed domain; segments join two distinct existing sites and none repeats; triangles
+// name three distinct existing sites (whether they form a mesh is the certifier's verdict).
+// Without "domain", the domain is the sites' bounding box enlarged on every side by
+// max(width, height)/8 (by 1 when both are 0), counter-clockwise from the lower left corner.
+#include "geometry/mesh.hpp"
+#include "io/input_error.hpp"
+
+#include <istream>
+#include <string>
+
+namespace anisocert::io {
+
+// Throws InputError; source_name is the file name used in messages.
+geometry::Mesh<Rational> read_mesh_json(std::istream& in, const std::string& source_name);
+// The file at path (a file that cannot be opened is an InputError too).
+geometry::Mesh<Rational> read_mesh_json_file(const std::string& path);
+// The same, for a mesh: "triangles" must be present and non-empty.
+geometry::Mesh<Rational> read_triangle_mesh_file(const std::string& path);
+// The validated "domain" of a file in this format ("sites" may be absent): for the refiners.
+geometry::Polygon<Rational> read_domain_file(const std::string& path);
+
+// The file of a refiner's mesh, every double written as its exact decimal expansion, so that
+// `anisocert certify` reads exactly the numbers the refiner produced.
+std::string mesh_json(const geometry::Mesh<double>& m);
+
+}  // namespace anisocert::io

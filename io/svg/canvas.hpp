@@ -1,0 +1,26 @@
+#pragma once
+// The frame every picture shares: the domain's bounding box, with a margin, scaled so that its
+// larger side spans 800 px, y pointing up, and a footer band for captions.
+#include "geometry/polygon.hpp"
+
+#include <ostream>
+
+namespace anisocert::io {
+
+class Canvas {
+ public:
+  // `margin`: a fraction of the box's larger side added on every side.
+  Canvas(const geometry::Polygon<double>& frame, double margin);
+  double X(double x) const { return (x - x0_ + margin_) * px_; }
+  double Y(double y) const { return (y1_ - y + margin_) * px_; }
+  double scale() const { return px_; }      // pixels per unit
+  double size() const { return size_; }     // the box's larger side, in units
+  double height() const { return height_; }  // without the footer
+  // <svg …> of the frame with a footer band of `footer` px (numbers in the stream's precision).
+  void open(std::ostream& o, double footer) const;
+
+ private:
+  double x0_, x1_, y0_, y1_, size_, margin_, px_, width_, height_;
+};
+
+}  // namespace anisocert::io
