@@ -126,16 +126,4 @@ TEST(CliMesh, RefineThenCertify) {
   EXPECT_EQ(run("refine --gamma0 0.5").exit_code, 2);
 }
 
-// A domain whose edges cannot be split exactly in doubles (0.4 has no double midpoints with 1)
-// is bad input: exit 2, the edge named, no mesh written.
-TEST(CliMesh, RefineRejectsADomainItCannotSplitExactly) {
-  const std::string base = ::testing::TempDir() + "anisocert_oct_" + std::to_string(getpid());
-  std::ofstream(base + "_domain.json")
-      << R"({"domain": [[1, -0.40000000000000002220446049250313080847263336181640625], [1, 0.40000000000000002220446049250313080847263336181640625], [-1, 0.40000000000000002220446049250313080847263336181640625], [-1, -0.40000000000000002220446049250313080847263336181640625]]})";
-  const Outcome r = run("refine --domain " + base + "_domain.json -o " + base + ".json --quiet");
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("domain edge 0 from (1, -0.4) to (1, 0.4)"), std::string::npos) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(base + ".json"));
-}
-
 }  // namespace

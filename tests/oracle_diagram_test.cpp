@@ -3,6 +3,7 @@
 // sampling (the nearest-site set of a rational point, computed from the definition, must equal
 // the owners of whatever the oracle says contains it), and degenerate fixtures with known answers.
 #include "oracle/diagram/diagram.hpp"
+#include "tests/brute_force.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@ namespace {
 
 using anisocert::Rational;
 using namespace anisocert::oracle;
+using anisocert::test_support::expect_brute_force_agrees;
 
 Mesh<Rational> square_input(const Rational& lo, const Rational& hi) {
   Mesh<Rational> in;
@@ -23,29 +25,6 @@ Mesh<Rational> square_input(const Rational& lo, const Rational& hi) {
 void add_site(Mesh<Rational>& in, Rational x, Rational y, Rational m11, Rational m12, Rational m22) {
   in.sites.push_back({x, y});
   in.metrics.push_back({m11, m12, m22});
-}
-
-// Every point of a (k+1)×(k+1) grid over the domain's bounding box that lies in Ω: the oracle's
-// location must be owned by exactly the exact nearest sites (LS Definition 1).
-void expect_brute_force_agrees(const Diagram& d, int k) {
-  Rational x0 = d.input.domain[0].x, x1 = x0, y0 = d.input.domain[0].y, y1 = y0;
-  for (const auto& p : d.input.domain)
-    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-  int located = 0;
-  for (int i = 0; i <= k; ++i)
-    for (int j = 0; j <= k; ++j) {
-      const Point2<Rational> p{x0 + (x1 - x0) * i / k, y0 + (y1 - y0) * j / k};
-      Location loc;
-      try {
-        loc = locate(d, p);
-      } catch (const std::invalid_argument&) {
-        continue;  // outside a non-convex domain
-      }
-      ++located;
-      EXPECT_EQ(loc.owners, nearest_sites(d.input, p)) << "at (" << p.x << ", " << p.y << "), location kind "
-                                                         << static_cast<int>(loc.kind) << " index " << loc.index;
-    }
-  EXPECT_GT(located, 0);
 }
 
 int count_kind(const Diagram& d, Node::Kind k) {
@@ -230,26 +209,6 @@ TEST(OracleDiagram, OneAndTwoSites) {
 
 namespace {
 
-// Regression (found by LS_T7.PreconditionsGiveATriangulation): a site on a corner of Ω lies on
-// its face's boundary cycle, where ray casting cannot decide; such faces were called orphans.
-// With one constant metric every cell is convex and contains its site: no orphan at all.
-TEST(OracleDiagram, SitesOnDomainCornersAreNotOrphans) {
-  Mesh<Rational> in;
-  in.domain = {{0, 0}, {Rational(1, 2), 0}, {1, 0}, {1, Rational(1, 2)}, {1, 1}, {Rational(1, 2), 1}, {0, 1}, {0, Rational(1, 2)}};
-  in.sites = in.domain;
-  in.sites.push_back({Rational(5, 16), Rational(5, 16)});
-  in.metrics.assign(in.sites.size(), {Rational(15210, 4000), Rational(-8190, 4000), Rational(19620, 4000)});
-  const Diagram d = compute_diagram(in);
-  EXPECT_EQ(d.faces.size(), in.sites.size());
-  for (const Face& f : d.faces) EXPECT_FALSE(f.orphan) << "face of site " << f.site;
-  EXPECT_TRUE(d.theorem7.preconditions_hold);
-  EXPECT_TRUE(d.dual_check.is_triangulation);
-}
-
-}  // namespace
-
-namespace {
-
 // A non-convex (L-shaped) domain with a site on its reflex corner and anisotropic metrics: the
 // restriction may cut cells into several faces; brute force decides every grid point.
 TEST(OracleDiagram, NonConvexDomainAgreesWithBruteForce) {
@@ -303,37 +262,6 @@ TEST(OracleDiagram, ThreeSitesTiedAlongALineAreDeclinedByName) {
 }  // namespace
 
 namespace {
-
-// Regressions (found by an independent review): one-dimensional ties outside D|Ω used to be
-// declined. (1) L-shaped domain, sites (1,1), (3,1), (2,3) with M = I: the bisector x = 2 of the
-// first two contains edge 3, but site 2 is strictly nearest there. (2) A bisector containing the
-// edge y = 0 of the unit square where another site is nearest. (3) Three sites tied along the line
-// x = 0, outside Ω = [1/8, 1] × [0, 1]. All three are answered, and brute force agrees.
-TEST(OracleDiagram, TiesOutsideTheDiagramAreAnsweredNotDeclined) {
-  Mesh<Rational> L;
-  L.domain = {{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}};
-  add_site(L, 1, 1, 1, 0, 1);
-  add_site(L, 3, 1, 1, 0, 1);
-  add_site(L, 2, 3, 1, 0, 1);
-  const Diagram dl = compute_diagram(L);
-  const Location v = locate(dl, {2, Rational(7, 4)});  // the circumcentre of the three sites
-  ASSERT_EQ(v.kind, Location::Kind::node);
-  EXPECT_EQ(v.owners, (std::vector<int>{0, 1, 2}));
-  expect_brute_force_agrees(dl, 24);
-
-  Mesh<Rational> e = square_input(0, 1);
-  add_site(e, Rational(9, 64), Rational(1, 32), 16, -2, Rational(65, 4));
-  add_site(e, Rational(5, 32), Rational(1, 64), 1, Rational(-3, 2), Rational(13, 4));
-  add_site(e, Rational(9, 32), Rational(1, 32), 4, -1, Rational(65, 4));
-  expect_brute_force_agrees(compute_diagram(e), 32);
-
-  Mesh<Rational> t;
-  t.domain = {{Rational(1, 8), 0}, {1, 0}, {1, 1}, {Rational(1, 8), 1}};
-  add_site(t, Rational(9, 64), Rational(1, 32), 16, -2, Rational(65, 4));
-  add_site(t, Rational(9, 32), Rational(1, 32), 4, -1, Rational(65, 4));
-  add_site(t, Rational(1, 2), Rational(1, 2), Rational(17001, 1024), Rational(-1011, 64), Rational(65, 4));
-  expect_brute_force_agrees(compute_diagram(t), 32);
-}
 
 // The genuine case stays declined, by name: two sites alone tie along the reflex edge x = 2.
 TEST(OracleDiagram, ACellBoundaryAlongTheDomainBoundaryIsDeclinedByName) {

@@ -125,26 +125,6 @@ TEST(StarRefiner, ShareOfTrianglesThatAreTheLabelleShewchukDual) {
   }
 }
 
-// Regression (found by LU_A41's random non-convex domains): a reflex corner whose first star had
-// a single Delaunay triangle, across the exterior wedge, kept an empty star forever, and the
-// triangles at the corner were refined down to the resolution of doubles. Lemma 4.1 holds at
-// every corner of this 9-gon for an isotropic metric, so the run must end consistent, and the
-// certifier must accept it.
-TEST(StarRefiner, ReflexCornerConverges) {
-  const Polygon nonagon = {{0.59375, -0.03125}, {0.78125, 0.53125}, {0.34375, 0.828125}, {-0.53125, 0.75}, {-0.875, 0.28125},
-                           {-0.953125, -0.15625}, {-0.609375, -0.671875}, {0.171875, -0.96875}, {0.59375, -0.75}};
-  ASSERT_EQ(predicates::orientation(nonagon[8], nonagon[0], nonagon[1]), anisocert::Sign::negative);  // reflex at corner 0
-  for (const double alpha : {0.0, 1.0}) {
-    RefineParameters p;
-    p.max_vertices = 5000;
-    const RefineResult r = refiners::star::refine_star(nonagon, fields::make_field("shock", {{"h", 0.3}, {"alpha", alpha}}), p);
-    ASSERT_TRUE(r.consistent) << "alpha " << alpha << ": " << r.stop_reason;
-    oracle::CertifyOptions o;
-    const oracle::CertifyReport c = certify(r, p, o);
-    EXPECT_TRUE(c.holds(o)) << "alpha " << alpha;
-  }
-}
-
 TEST(StarRefiner, BudgetStopsAreReported) {
   RefineParameters p;
   p.max_vertices = 50;
