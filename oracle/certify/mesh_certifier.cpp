@@ -1,6 +1,7 @@
 #include "oracle/certify/mesh_certifier.hpp"
 
 #include "geometry/circumellipse.hpp"
+#include "oracle/certify/site_tree.hpp"
 #include "geometry/distortion_estimate.hpp"
 #include "geometry/ellipse_box.hpp"
 #include "numbers/filter_interval.hpp"
@@ -22,52 +23,6 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-// Sites in a static k-d tree (median splits, leaves of at most 8), for the circumellipse queries:
-// adapts to clustered sites, where a uniform grid would scan crowded cells. The coordinates are
-// the sites' nearest doubles, within half an ulp of the exact ones, so every query box is widened
-// by two ulps on each side before it is compared with them.
-class SiteTree {
- public:
-  explicit SiteTree(const std::vector<Point2<double>>& p) : p_(p), order_(p.size()) {
-    for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
-    build(0, order_.size(), 0);
-  }
-  template <class F>
-  void visit(double x0, double x1, double y0, double y1, F&& f) const {
-    auto widen_down = [](double v) { return std::nextafter(std::nextafter(v, -inf), -inf); };
-    auto widen_up = [](double v) { return std::nextafter(std::nextafter(v, inf), inf); };
-    query(0, order_.size(), 0, widen_down(x0), widen_up(x1), widen_down(y0), widen_up(y1), f);
-  }
-
- private:
-  double coord(int i, int axis) const { return axis == 0 ? p_[i].x : p_[i].y; }
-  void build(std::size_t lo, std::size_t hi, int axis) {
-    if (hi - lo <= 8) return;
-    const std::size_t mid = (lo + hi) / 2;
-    std::nth_element(order_.begin() + lo, order_.begin() + mid, order_.begin() + hi,
-                     [&](int a, int b) { return coord(a, axis) < coord(b, axis); });
-    build(lo, mid, 1 - axis);
-    build(mid + 1, hi, 1 - axis);
-  }
-  template <class F>
-  void query(std::size_t lo, std::size_t hi, int axis, double x0, double x1, double y0, double y1, F& f) const {
-    if (hi - lo <= 8) {
-      for (std::size_t k = lo; k < hi; ++k) {
-        const auto& q = p_[order_[k]];
-        if (q.x >= x0 && q.x <= x1 && q.y >= y0 && q.y <= y1) f(order_[k]);
-      }
-      return;
-    }
-    const std::size_t mid = (lo + hi) / 2;
-    const int m = order_[mid];
-    const double split = coord(m, axis), low = axis == 0 ? x0 : y0, high = axis == 0 ? x1 : y1;
-    if (p_[m].x >= x0 && p_[m].x <= x1 && p_[m].y >= y0 && p_[m].y <= y1) f(m);
-    if (low <= split) query(lo, mid, 1 - axis, x0, x1, y0, y1, f);
-    if (high >= split) query(mid + 1, hi, 1 - axis, x0, x1, y0, y1, f);
-  }
-  const std::vector<Point2<double>>& p_;
-  std::vector<int> order_;
-};
 
 // The locally uniform check on one scalar type (double when every input is a double exactly).
 // An interval around a coordinate or metric entry: the double itself, or a rational enclosed.
@@ -160,7 +115,7 @@ CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& o) 
     for (const auto& t : mesh.triangles)
       for (int i = 0; i < 3; ++i) edges.insert(std::minmax(t[i], t[(i + 1) % 3]));
     for (std::size_t k = 0; k < mesh.segments.size(); ++k) {
-      const auto [a, b] = mesh.segments[k];
+      const int a = mesh.segments[k].first, b = mesh.segments[k].second;
       std::vector<std::pair<Rational, int>> on;
       const double xa = approx[a].x, xb = approx[b].x, ya = approx[a].y, yb = approx[b].y;
       tree.visit(std::min(xa, xb), std::max(xa, xb), std::min(ya, yb), std::max(ya, yb), [&](int s) {
