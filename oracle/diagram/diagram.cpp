@@ -8,12 +8,15 @@ namespace build {
 
 void Builder::run() {
   using clock = std::chrono::steady_clock;
-  auto seconds = [](clock::time_point a) { return std::chrono::duration<double>(clock::now() - a).count(); };
-  auto t = clock::now();
-  cand_ = candidate_sets(d_.input);
+  // Runs one phase of the construction and records its duration.
+  auto timed = [](double& seconds, auto&& phase) {
+    const auto t = clock::now();
+    phase();
+    seconds = std::chrono::duration<double>(clock::now() - t).count();
+  };
+  timed(d_.stats.seconds_candidates, [&] { cand_ = candidate_sets(d_.input); });
   d_.stats.boxes = cand_.boxes, d_.stats.leaves = cand_.leaves, d_.stats.max_depth = cand_.max_depth_reached;
   d_.stats.triples = cand_.triples.size(), d_.stats.pairs = cand_.pairs.size();
-  d_.stats.seconds_candidates = seconds(t);
   if (progress_)
     progress_("candidates: " + std::to_string(cand_.boxes) + " boxes, " + std::to_string(cand_.triples.size()) +
               " triples, " + std::to_string(cand_.pairs.size()) + " pairs");
@@ -29,25 +32,10 @@ void Builder::run() {
     distance_.push_back({c(q.a), c(q.b), c(q.c), c(q.d), c(q.e), c(q.f)});
   }
 
-  t = clock::now();
-  add_corners();
-  find_vertices();
-  d_.stats.seconds_vertices = seconds(t);
-  t = clock::now();
-  build_arcs();
-  check_node_wedges();
-  build_boundary();
-  d_.stats.seconds_arcs = seconds(t);
-  t = clock::now();
-  build_half_edges();
-  build_cycles();
-  build_faces();
-  d_.stats.seconds_faces = seconds(t);
-  t = clock::now();
-  build_dual();
-  check_triangulation();
-  check_theorem7();
-  d_.stats.seconds_dual = seconds(t);
+  timed(d_.stats.seconds_vertices, [&] { add_corners(); find_vertices(); });
+  timed(d_.stats.seconds_arcs, [&] { build_arcs(); check_node_wedges(); build_boundary(); });
+  timed(d_.stats.seconds_faces, [&] { build_half_edges(); build_cycles(); build_faces(); });
+  timed(d_.stats.seconds_dual, [&] { build_dual(); check_triangulation(); check_theorem7(); });
 }
 
 }  // namespace build
