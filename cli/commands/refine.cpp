@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include <memory>
+#include <sstream>
 
 namespace anisocert::cli {
 namespace {
@@ -81,20 +82,39 @@ int run_refine(const RefineOptions& o) {
   return run.result.consistent ? 0 : 1;
 }
 
+// The help, from the registries: every refiner with its summary, every field with its parameters.
+std::string description() {
+  std::ostringstream o;
+  o << "Anisotropic mesh refinement on a domain for a metric field.\n";
+  for (const auto& e : refiners::registered_refiners()) o << "--algo " << e.name << ": " << e.summary << "\n";
+  o << "Fields (--field NAME, --param name=value; formulas in docs/refiners.md):\n";
+  for (const auto& f : fields::builtin_fields()) {
+    o << "  " << f.name << ": " << f.formula << " (";
+    const char* sep = "";
+    for (const auto& [name, value] : f.defaults) o << sep << name << " = " << value, sep = ", ";
+    o << ")\n";
+  }
+  o << "Exit 0 when the refiner's output condition holds (star: all stars consistent), 1 when a budget or a stall\n"
+       "stopped it (the mesh written is what it had), 2 bad input.";
+  return o.str();
+}
+
+std::string names_of(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
 }  // namespace
 
 void add_refine(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<RefineOptions>();
-  CLI::App* c = app.add_subcommand(
-      "refine",
-      "Anisotropic mesh refinement. --algo star: locally uniform star sets (Boissonnat, Wormser & Yvinec), rules\n"
-      "(1) encroachment, (2) distortion, (3) radius-edge ratio, (4) size, (5) inconsistency. Fields (--field):\n"
-      "constant (m11, m12, m22), linear (hx, h0), shock (delta, h, alpha), radial (cx, cy, R, delta, h, alpha);\n"
-      "formulas in docs/refiners.md. Exit 0 when all stars are consistent, 1 when a budget stopped it (the mesh\n"
-      "written is what it had), 2 bad input.");
-  c->add_option("--algo", o->algo, "the refiner (star)")->capture_default_str();
+  CLI::App* c = app.add_subcommand("refine", description());
+  std::vector<std::string> algos;
+  for (const auto& e : refiners::registered_refiners()) algos.push_back(e.name);
+  c->add_option("--algo", o->algo, "the refiner: " + names_of(algos))->capture_default_str();
   c->add_option("--domain", o->domain, "square, or a JSON file with a \"domain\" polygon")->capture_default_str();
-  c->add_option("--field", o->field, "constant, linear, shock or radial")->capture_default_str();
+  c->add_option("--field", o->field, "the metric field: " + names_of(fields::field_names()))->capture_default_str();
   c->add_option("--param", o->params, "a field parameter name=value (repeatable)");
   for (const auto& entry : refiners::registered_refiners())
     for (const auto& spec : entry.parameters)

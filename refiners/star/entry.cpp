@@ -15,8 +15,18 @@ RefineParameters parameters(const ParameterValues& v, const common::Budget& budg
   static_cast<common::Budget&>(p) = budget;
   p.rho0 = v.at("rho0"), p.gamma0 = v.at("gamma0"), p.delta = v.at("delta"), p.beta = v.at("beta"), p.size = v.at("size");
   p.seed = seed;
-  if (!(p.gamma0 > 1) || !(p.rho0 > 0) || !(p.delta > 0 && p.delta < 1) || !(p.beta > 0) || !(p.size > 0))
-    throw std::invalid_argument("parameters out of range: need γ₀ > 1, ρ₀ > 0, 0 < δ < 1, β > 0, size > 0");
+  const auto require = [&](bool holds, const char* name, const char* range) {
+    if (!holds) {
+      std::ostringstream o;
+      o << "--" << name << " " << v.at(name) << " is out of range: need " << range;
+      throw std::invalid_argument(o.str());
+    }
+  };
+  require(p.rho0 > 0, "rho0", "ρ₀ > 0");
+  require(p.gamma0 > 1, "gamma0", "γ₀ > 1");
+  require(p.delta > 0 && p.delta < 1, "delta", "0 < δ < 1");
+  require(p.beta > 0, "beta", "β > 0");
+  require(p.size > 0, "size", "size > 0");
   const double attempts = v.at("pick-attempts");
   if (!(attempts >= 0 && attempts <= 1000) || attempts != static_cast<int>(attempts))
     throw std::invalid_argument("--pick-attempts must be an integer from 0 to 1000");
