@@ -1,10 +1,13 @@
 #pragma once
 // Computing an exact diagram for a command (`diagram`, `demo`): the diagram with progress lines,
-// its --json and --svg files (all written or none), the summary on standard output; exit 0, or 3
-// when Theorem 7's preconditions hold and its conclusion fails (a bug or a counterexample).
+// its --json and --svg files and the summary, for the command to write (all files or none) and
+// print; exit 0, or 3 when Theorem 7's preconditions hold and its conclusion fails (a bug or a
+// counterexample, also said on standard error).
+#include "cli/output.hpp"
 #include "geometry/mesh.hpp"
 
 #include <string>
+#include <vector>
 
 namespace anisocert::cli {
 
@@ -13,8 +16,14 @@ struct DiagramOutputs {
   bool quiet = false;
 };
 
+struct DiagramJob {
+  std::string text;
+  std::vector<OutputFile> files;
+  int exit_code = 0;
+};
+
 // `name` names the input in messages and the summary. A degenerate input the oracle declines
 // is a UsageError naming it.
-int compute_and_report_diagram(const geometry::Mesh<Rational>& in, const std::string& name, const DiagramOutputs& o);
+DiagramJob diagram_job(const geometry::Mesh<Rational>& in, const std::string& name, const DiagramOutputs& o);
 
 }  // namespace anisocert::cli

@@ -29,21 +29,27 @@ std::function<void(const std::string&)> progress_printer(bool quiet) {
 
 std::string render(const Json& j) { return j.dump(2) + "\n"; }
 
-void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << content;
+void write_files_atomically(const std::vector<OutputFile>& files) {
+  const auto partial = [](const OutputFile& f) { return f.path + ".partial"; };
+  const auto remove_partials = [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) std::remove(partial(files[i]).c_str());
+  };
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::ofstream out(partial(files[i]), std::ios::binary | std::ios::trunc);
+    out << files[i].content;
     out.flush();
     if (!out) {
-      std::remove(temporary.c_str());
-      throw UsageError("cannot write " + path);
+      remove_partials(0, i + 1);
+      throw UsageError("cannot write " + files[i].path);
     }
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw UsageError("cannot write " + path);
-  }
+  for (std::size_t i = 0; i < files.size(); ++i)
+    if (std::rename(partial(files[i]).c_str(), files[i].path.c_str()) != 0) {
+      remove_partials(i, files.size());
+      throw UsageError("cannot write " + files[i].path);
+    }
 }
+
+void write_file_atomically(const std::string& path, const std::string& content) { write_files_atomically({{path, content}}); }
 
 }  // namespace anisocert::cli

@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace anisocert::cli {
 
@@ -21,9 +22,14 @@ void emit(const std::string& text);
 // The progress callback of long runs: "anisocert: LINE" on standard error, or nothing when quiet.
 std::function<void(const std::string&)> progress_printer(bool quiet);
 std::string render(const Json& j);
-// Writes `content` to `path` through a temporary file in the same directory and a rename, so
-// that the file is either absent, or complete (DESIGN.md: nothing is written half-way).
-// Throws UsageError naming the path when it cannot be written.
+// Writes every file through a temporary file beside it, and renames them only once all were
+// written: a command's outputs are all there, complete, or none is (DESIGN.md: nothing is written
+// half-way; a failing rename, after every write succeeded, is the only way to leave some). Throws
+// UsageError naming the path that cannot be written.
+struct OutputFile {
+  std::string path, content;
+};
+void write_files_atomically(const std::vector<OutputFile>& files);
 void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace anisocert::cli

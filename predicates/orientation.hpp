@@ -20,8 +20,8 @@ struct OrientationKernel {
   }
 };
 
-// The sign of a difference of two numbers, exactly: for doubles, subtraction is correctly rounded
-// and so never crosses or reaches 0 unless the exact difference does (overflow keeps the sign).
+// The sign of the difference u − w of two numbers, from a comparison (no subtraction, so it is
+// exact for every finite double, subnormals and signed zeros included).
 template <class S>
 Sign sign_of_difference(const S& u, const S& w) {
   return u > w ? Sign::positive : u < w ? Sign::negative : Sign::zero;
@@ -31,7 +31,8 @@ template <class S>
 Sign orientation(const Point2<S>& a, const Point2<S>& b, const Point2<S>& c) {
   // An axis-parallel ab (an edge of a box-shaped domain, or points on one such line): one product
   // of P vanishes exactly, P = −(b.y − a.y)(c.x − a.x) when a.x = b.x and (b.x − a.x)(c.y − a.y) when
-  // a.y = b.y, so the sign is a product of the exact signs of two differences: exact, and it spares
+  // a.y = b.y, so the sign is a product of the signs of two differences, each read off a
+  // comparison: exact, and it spares
   // the exact fall-back that the filter cannot avoid for a zero.
   if (a.x == b.x || a.y == b.y) {
     if constexpr (std::is_same_v<S, double>)

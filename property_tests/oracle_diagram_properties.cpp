@@ -1,4 +1,4 @@
-// Properties of the exact diagram (oracle/diagram.hpp) on random inputs, named by CATALOG ID:
+// Properties of the exact diagram (oracle/diagram/diagram.hpp) on random inputs, named by CATALOG ID:
 // LS.D1 (the faces, arcs and vertices are the minimization diagram: exact brute force at random
 // rational points), LS.T4 (a face whose boundary is wedged is star-shaped from its site, hence
 // no orphan), LS.L6 (a wedged vertex's dual triangle is positively oriented), LS.T7 (the

@@ -9,10 +9,16 @@
 
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace anisocert::refiners {
+
+// A parameter out of range: what() names the option and the range.
+struct ParameterError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
 
 struct ParameterSpec {
   std::string name;  // the option --name
@@ -29,8 +35,8 @@ struct Run {
 struct RefinerEntry {
   std::string name, summary;
   std::vector<ParameterSpec> parameters;
-  // Throws std::invalid_argument naming a parameter out of range (common::DomainError for a
-  // domain the refiner cannot use).
+  // Throws ParameterError naming a parameter out of range, common::DomainError for a domain the
+  // refiner cannot use, common::FieldError for a field that is not a metric where it is sampled.
   std::function<Run(const common::Domain&, const fields::MetricField&, const ParameterValues&, const common::Budget&,
                     unsigned seed, const common::Progress&)>
       run;

@@ -1,4 +1,4 @@
-// The exact mesh certifier (oracle/mesh_certifier.hpp) on meshes with known answers: closed-form
+// The exact mesh certifier (oracle/certify/mesh_certifier.hpp) on meshes with known answers: closed-form
 // radius-edge ratios and distortions, a non-Delaunay quadrilateral, cocircular ties, and broken
 // triangulations (a hole, an overlap, a clockwise triangle, a segment that is not a union of edges).
 #include "oracle/certify/mesh_certifier.hpp"

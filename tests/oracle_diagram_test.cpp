@@ -1,4 +1,4 @@
-// The exact diagram (oracle/diagram.hpp) against independent methods: closed forms for
+// The exact diagram (oracle/diagram/diagram.hpp) against independent methods: closed forms for
 // multiplicatively weighted sites (M = w·I: bisectors are Apollonius circles), brute-force exact
 // sampling (the nearest-site set of a rational point, computed from the definition, must equal
 // the owners of whatever the oracle says contains it), and degenerate fixtures with known answers.

@@ -7,7 +7,7 @@
 //          "refine"   a refiner of the registry on "domain" and a built-in field, once per entry of
 //                     "params": consistency, and the exact certifier's verdict at the run's ρ₀, γ₀;
 //          "cli"      `anisocert ARGS` ({case}: the folder, {tmp}: a fresh temporary folder): the
-//                     exit code, a fragment of standard error, files that must not exist;
+//                     exit code, fragments of standard output and error, files that must not exist;
 //          "conics"   the exact common points of two conics and the signs of polynomials there.
 #include "fields/registry.hpp"
 #include "io/mesh_json.hpp"
@@ -111,6 +111,9 @@ void run_cli(const fs::path& dir, const Json& c) {
   const Outcome r = run(args);
   const Json& e = c.at("expect");
   EXPECT_EQ(r.exit_code, e.at("exit").get<int>()) << r.err;
+  if (e.contains("stdout_contains")) {
+    EXPECT_NE(r.out.find(e["stdout_contains"].get<std::string>()), std::string::npos) << r.out;
+  }
   if (e.contains("stderr_contains")) {
     EXPECT_NE(r.err.find(e["stderr_contains"].get<std::string>()), std::string::npos) << r.err;
   }
@@ -139,6 +142,13 @@ void run_conics(const Json& c) {
   }
 }
 
+// Every key of j is one of `allowed`: a misspelt expectation would otherwise never be checked.
+void expect_only_keys(const Json& j, std::initializer_list<const char*> allowed, const std::string& where) {
+  for (const auto& item : j.items())
+    EXPECT_NE(std::find_if(allowed.begin(), allowed.end(), [&](const char* k) { return item.key() == k; }), allowed.end())
+        << where << ": unknown key \"" << item.key() << "\"";
+}
+
 class Regression : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Regression, StillAnsweredRight) {
@@ -147,6 +157,22 @@ TEST_P(Regression, StillAnsweredRight) {
   RecordProperty("caught", c.at("caught").get<std::string>());
   SCOPED_TRACE(c.at("caught").get<std::string>() + " — " + c.at("expect").value("why", ""));
   const std::string kind = c.at("run").get<std::string>();
+  if (kind == "diagram") {
+    expect_only_keys(c, {"caught", "found_by", "run", "input", "expect"}, "case.json");
+    expect_only_keys(c.at("expect"), {"why", "faces", "orphans", "theorem7_preconditions", "dual_is_triangulation", "nodes",
+                                      "brute_force_grid"},
+                     "expect");
+  } else if (kind == "refine") {
+    expect_only_keys(c, {"caught", "found_by", "run", "algo", "domain", "reflex_corners", "field", "params", "max_vertices", "expect"},
+                     "case.json");
+    expect_only_keys(c.at("expect"), {"why", "consistent", "certified"}, "expect");
+  } else if (kind == "cli") {
+    expect_only_keys(c, {"caught", "found_by", "run", "args", "expect"}, "case.json");
+    expect_only_keys(c.at("expect"), {"why", "exit", "stdout_contains", "stderr_contains", "absent"}, "expect");
+  } else if (kind == "conics") {
+    expect_only_keys(c, {"caught", "found_by", "run", "conics", "expect"}, "case.json");
+    expect_only_keys(c.at("expect"), {"why", "points", "signs"}, "expect");
+  }
   if (kind == "diagram") run_diagram(dir, c);
   else if (kind == "refine") run_refine(dir, c);
   else if (kind == "cli") run_cli(dir, c);

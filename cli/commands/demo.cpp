@@ -49,9 +49,10 @@ std::string shortest(double x) {
   return o.str();
 }
 
-// The demo's second half. Its parameters meet every condition of LU Theorem 4.5 that theory/
-// decides ((1 − δ)³ρ₀ > 2γ₀³ needs ρ₀ > 4.74 at γ₀ = 1.2, δ = 0.1).
-std::string refine_and_certify(const std::string& svg_path, bool quiet) {
+// The demo's second half: its summary, and the picture for `svg_path`. Its parameters meet every
+// condition of LU Theorem 4.5 that theory/ decides ((1 − δ)³ρ₀ > 2γ₀³ needs ρ₀ > 4.74 at γ₀ = 1.2,
+// δ = 0.1).
+std::string refine_and_certify(const std::string& svg_path, bool quiet, std::vector<OutputFile>& files) {
   const refiners::RefinerEntry& star = *refiners::find_refiner("star");
   refiners::ParameterValues values;
   for (const auto& spec : star.parameters) values[spec.name] = spec.value;
@@ -67,8 +68,8 @@ std::string refine_and_certify(const std::string& svg_path, bool quiet) {
   const geometry::Mesh<Rational> exact = geometry::exact(mesh);
   const CertifyVerdict verdict =
       certify_verdict(oracle::certify_mesh(exact, o), o, exact, shortest(values["rho0"]), shortest(values["gamma0"]));
-  write_file_atomically(svg_path, io::mesh_svg(mesh, "star refiner, shock field: " + std::to_string(mesh.sites.size()) +
-                                                         " vertices, " + (verdict.holds ? "certified" : "not certified")));
+  files.push_back({svg_path, io::mesh_svg(mesh, "star refiner, shock field: " + std::to_string(mesh.sites.size()) +
+                                                    " vertices, " + (verdict.holds ? "certified" : "not certified"))});
   return "refine: the unit square, field shock (h = 0.05, alpha = 3, delta = 0.6)\n" + report_text(run) + one_line(verdict) +
          "  picture: " + svg_path + "\n";
 }
@@ -92,8 +93,11 @@ void add_demo(CLI::App& app, int& exit_code) {
   c->add_flag("--quiet", o->outputs.quiet, "no progress lines on standard error");
   c->add_option("--mesh-svg", o->mesh_svg_path, "where to write the picture of the refined mesh")->capture_default_str();
   c->callback([o, &exit_code] {
-    exit_code = compute_and_report_diagram(demo_input(), "demo", o->outputs);
-    if (exit_code == 0) emit(refine_and_certify(o->mesh_svg_path, o->outputs.quiet));
+    DiagramJob job = diagram_job(demo_input(), "demo", o->outputs);
+    if (job.exit_code == 0) job.text += refine_and_certify(o->mesh_svg_path, o->outputs.quiet, job.files);
+    write_files_atomically(job.files);
+    emit(job.text);
+    exit_code = job.exit_code;
   });
 }
 

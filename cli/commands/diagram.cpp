@@ -1,6 +1,7 @@
 // `anisocert diagram IN.json`: the exact anisotropic Voronoi diagram restricted to the domain
 // (oracle/diagram/diagram.hpp), its wedges, orphans, dual and Theorem 7 verdict.
 #include "cli/diagram_job.hpp"
+#include "cli/output.hpp"
 #include "cli/usage_error.hpp"
 #include "io/mesh_json.hpp"
 
@@ -34,7 +35,10 @@ void add_diagram(CLI::App& app, int& exit_code) {
     } catch (const io::InputError& e) {
       throw UsageError(e.what());
     }
-    exit_code = compute_and_report_diagram(in, o->input, o->outputs);
+    const DiagramJob job = diagram_job(in, o->input, o->outputs);
+    write_files_atomically(job.files);
+    emit(job.text);
+    exit_code = job.exit_code;
   });
 }
 

@@ -63,19 +63,23 @@ int run_refine(const RefineOptions& o) {
   try {
     const refiners::common::Domain domain = refiners::common::Domain::from_exact(corners);
     run = entry->run(domain, field, values, o.budget, o.seed, progress);
-  } catch (const refiners::common::DomainError& e) {  // a domain the refiner cannot split exactly
+  } catch (const refiners::common::DomainError& e) {  // e.g. a domain the refiner cannot split exactly
     throw UsageError(o.domain + ": " + e.what());
-  } catch (const std::invalid_argument& e) {
+  } catch (const refiners::common::FieldError& e) {
+    throw UsageError(std::string("--field: ") + e.what());
+  } catch (const refiners::ParameterError& e) {
     throw UsageError(e.what());
   }
   const geometry::Mesh<double>& m = run.result.mesh;
-  if (!o.output.empty()) write_file_atomically(o.output, io::mesh_json(m));
+  std::vector<OutputFile> files;
+  if (!o.output.empty()) files.push_back({o.output, io::mesh_json(m)});
   if (!o.svg.empty())
-    write_file_atomically(o.svg, io::mesh_svg(m, entry->name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices"));
+    files.push_back({o.svg, io::mesh_svg(m, entry->name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices")});
   if (!o.medit.empty()) {
-    write_file_atomically(o.medit + ".mesh", io::medit_mesh(m));
-    write_file_atomically(o.medit + ".sol", io::medit_sol(m));
+    files.push_back({o.medit + ".mesh", io::medit_mesh(m)});
+    files.push_back({o.medit + ".sol", io::medit_sol(m)});
   }
+  write_files_atomically(files);
   std::string text = "refine: domain " + o.domain + ", field " + o.field + "\n" + report_text(run);
   if (!o.output.empty()) text += "  mesh: " + o.output + " (check it with anisocert certify)\n";
   emit(text);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <limits>
 
 namespace anisocert::refiners::common {
@@ -36,12 +37,23 @@ Domain::Domain(const Polygon<double>& corners) : corners_(corners) {
   convex_ = geometry::is_convex(corners_);
 }
 
+namespace {
+
+// The exact text of q, cut to about 40 characters.
+std::string short_exact(const Rational& q) {
+  const std::string s = to_exact_string(q);
+  return s.size() <= 40 ? s : s.substr(0, 37) + "...";
+}
+
+}  // namespace
+
 Domain Domain::from_exact(const Polygon<Rational>& corners) {
   Polygon<double> d;
-  for (const auto& q : corners) {
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const Point2<Rational>& q = corners[k];
     const double x = q.x.convert_to<double>(), y = q.y.convert_to<double>();
-    if (Rational(x) != q.x || Rational(y) != q.y)
-      throw DomainError("domain vertex (" + to_exact_string(q.x) + ", " + to_exact_string(q.y) +
+    if (!std::isfinite(x) || !std::isfinite(y) || Rational(x) != q.x || Rational(y) != q.y)
+      throw DomainError("domain vertex " + std::to_string(k) + " (" + short_exact(q.x) + ", " + short_exact(q.y) +
                         ") is not a double; the refiner works in floating point");
     d.push_back({x, y});
   }

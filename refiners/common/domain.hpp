@@ -4,19 +4,14 @@
 // and whose edges can each be halved exactly min_halvings times (exact_split.hpp: boundary
 // vertices must lie exactly on ∂Ω). And the exact questions a refiner asks of it.
 #include "geometry/polygon.hpp"
+#include "refiners/common/errors.hpp"
 
-#include <stdexcept>
 #include <string>
 
 namespace anisocert::refiners::common {
 
 using geometry::Polygon;
 using predicates::Point2;
-
-// A domain a refiner cannot use: what() names the corner or the edge and why.
-struct DomainError : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
-};
 
 // A closed axis-parallel box; empty when x0 > x1.
 struct Box {

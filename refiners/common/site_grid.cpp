@@ -14,7 +14,8 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 // The ring search stops when no site beyond the ring can be nearer than the best found: a site
 // there is Euclidean-farther than the gap g, so M-farther than λ_min(M) g². λ_min and g are
 // computed in doubles; stopping only when best ≤ (1 − 10⁻¹²) λ_min g² leaves room for their
-// rounding (a few ulps). The result is reported (the refiners' trace), never decided on.
+// rounding (a few ulps). The result is reported (the refiners' trace) and sets a new star's first
+// search radius, which only grows until the star is complete: it decides nothing.
 constexpr double ring_stop_slack = 1 - 1e-12;
 
 }  // namespace

@@ -2,7 +2,10 @@
 // The sites of a refinement run: their points, their metrics (sampled from the field once, when
 // the site is inserted: LU §4, M_v = M(v)), and the grid that finds them.
 #include "fields/metric_field.hpp"
+#include "predicates/orientation.hpp"
 #include "refiners/common/site_grid.hpp"
+
+#include <cmath>
 
 #include <vector>
 
@@ -12,8 +15,14 @@ struct Sites {
   Sites(const Domain& domain, const fields::MetricField& f) : field(f), grid(domain.bounding_box()) {}
 
   // Adds q with its metric M = M(q) and files it in the grid (the caller rebuilds the grid when
-  // outgrown).
+  // outgrown). Throws FieldError when M is not finite and positive definite (decided exactly:
+  // m11 > 0 and m11 m22 − m12² > 0, the latter as an orientation determinant).
   int add(const Point2<double>& q, const Sym2<double>& M) {
+    if (!(std::isfinite(M.m11) && std::isfinite(M.m12) && std::isfinite(M.m22) && M.m11 > 0 &&
+          predicates::orientation<double>({0, 0}, {M.m11, M.m12}, {M.m12, M.m22}) == Sign::positive))
+      throw FieldError("the metric field " + field.name + " is not finite and positive definite at (" + shortest_decimal(q.x) +
+                       ", " + shortest_decimal(q.y) + "): [" + shortest_decimal(M.m11) + ", " + shortest_decimal(M.m12) +
+                       ", " + shortest_decimal(M.m22) + "]");
     const int k = static_cast<int>(points.size());
     points.push_back(q);
     metrics.push_back(M);

@@ -4,6 +4,7 @@
 #include "refiners/star/star_refiner.hpp"
 #include "theory/lu_theorem45.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,17 +20,17 @@ RefineParameters parameters(const ParameterValues& v, const common::Budget& budg
     if (!holds) {
       std::ostringstream o;
       o << "--" << name << " " << v.at(name) << " is out of range: need " << range;
-      throw std::invalid_argument(o.str());
+      throw ParameterError(o.str());
     }
   };
-  require(p.rho0 > 0, "rho0", "ρ₀ > 0");
-  require(p.gamma0 > 1, "gamma0", "γ₀ > 1");
+  require(p.rho0 > 0 && std::isfinite(p.rho0), "rho0", "0 < ρ₀ < ∞");
+  require(p.gamma0 > 1 && std::isfinite(p.gamma0), "gamma0", "1 < γ₀ < ∞");
   require(p.delta > 0 && p.delta < 1, "delta", "0 < δ < 1");
-  require(p.beta > 0, "beta", "β > 0");
-  require(p.size > 0, "size", "size > 0");
+  require(p.beta > 0 && std::isfinite(p.beta), "beta", "0 < β < ∞");
+  require(p.size > 0 && std::isfinite(p.size), "size", "0 < size < ∞");
   const double attempts = v.at("pick-attempts");
   if (!(attempts >= 0 && attempts <= 1000) || attempts != static_cast<int>(attempts))
-    throw std::invalid_argument("--pick-attempts must be an integer from 0 to 1000");
+    throw ParameterError("--pick-attempts must be an integer from 0 to 1000");
   p.pick_attempts = static_cast<int>(attempts);
   return p;
 }
@@ -38,7 +39,8 @@ const char* yes(bool b) { return b ? "yes" : "no"; }
 
 std::vector<std::string> report(const StarResult& r, const RefineParameters& p) {
   std::vector<std::string> lines{common::size_line(r, "star refiner"),
-                                 common::stop_line(r, "inconsistent star triangles: " + std::to_string(r.inconsistent_triangles))};
+                                 common::stop_line(r, "inconsistent star triangles: " + std::to_string(r.inconsistent_triangles) +
+                                                          (r.empty_stars ? ", empty stars: " + std::to_string(r.empty_stars) : ""))};
   std::ostringstream o;
   o << "  LU Lemma 4.1 (boundary angles > 90° in the metric): ";
   if (r.acute_corners.empty()) {

@@ -15,7 +15,10 @@ namespace {
 
 common::Sites corner_sites(const common::Domain& domain, const fields::MetricField& field) {
   common::Sites sites(domain, field);
-  for (const auto& q : domain.corners()) sites.add(q);
+  for (const auto& q : domain.corners()) {
+    sites.add(q);
+    if (sites.grid.outgrown(sites.size())) sites.grid.rebuild(sites.points);
+  }
   return sites;
 }
 
@@ -58,7 +61,8 @@ class StarRefiner {
   StarResult result(std::string stop_reason) const {
     StarResult r;
     r.mesh.triangles = stars_.consistent_triangles(r.inconsistent_triangles);
-    r.consistent = r.inconsistent_triangles == 0;
+    for (std::size_t v = 0; v < stars_.size(); ++v) r.empty_stars += stars_[v].triangles.empty();
+    r.consistent = r.inconsistent_triangles == 0 && r.empty_stars == 0;
     r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
     r.mesh.segments = boundary_.segments();
     r.stop_reason = std::move(stop_reason);
@@ -168,6 +172,12 @@ StarResult refine_star(const common::Domain& domain, const fields::MetricField& 
   StarRefiner r(domain, field, p);
   std::string stop = common::refine_until_done(r, p, clock, progress);
   StarResult result = r.result(std::move(stop));
+  // No rule fires on an empty star, so the loop ends as if done; say what happened instead (seen
+  // for metrics whose quadratic forms overflow doubles, e.g. a constant metric of 10³⁰⁰).
+  if (result.empty_stars > 0 && result.stop_reason == r.done())
+    result.stop_reason = std::to_string(result.empty_stars) +
+                         " stars have no triangle in Ω: their search failed, the metric's scale is beyond what the "
+                         "refiner resolves in doubles";
   result.seconds = clock.seconds();
   return result;
 }

@@ -21,6 +21,8 @@ namespace anisocert::refiners::star {
 
 struct StarResult : common::RefineResult {
   std::size_t inconsistent_triangles = 0;
+  // Sites whose star has no triangle in Ω (a site of a mesh of Ω has one): never consistent.
+  std::size_t empty_stars = 0;
   // LU Lemma 4.1 (rule 1 ends) needs every boundary angle > 90° in the metric; the corners of Ω
   // where the angle in the corner's metric is not.
   std::vector<int> acute_corners;

@@ -17,8 +17,13 @@ namespace {
 constexpr double inf = std::numeric_limits<double>::infinity();
 
 // The search for S_v's candidates (floating-point boxes; every decision on the candidates is an
-// exact predicate). A candidate set that misses a Delaunay neighbour would make S_v wrong, so the
-// margins below are far above the rounding of the doubles the reaches are computed in (≈ 10⁻¹⁶):
+// exact predicate). A candidate set that misses a Delaunay neighbour would make S_v wrong. The
+// margins below are far above the rounding of the doubles the reaches are computed in (≈ 10⁻¹⁶
+// relative) for well-conditioned metrics and triangles; the errors grow with the metric's
+// condition number and, for the circumcentres, with 1/det of nearly flat triangles, so for metrics
+// anisotropic beyond about 10⁶ : 1 or nearly flat fans they are not a proof. A star made wrong that
+// way makes the final mesh fail the certifier's exact local-uniformity check; it cannot make two
+// stars disagree unnoticed (consistency is decided on the stars as computed).
 //  - the first search of a site without a star reaches M-distance 2.5 (corners) or twice its
 //    nearest site's distance (inserted sites);
 constexpr double default_first_reach2 = 6.25;

@@ -1,4 +1,4 @@
-// Differential test: the exact oracle (oracle/diagram.hpp) against CGAL's exact Delaunay
+// Differential test: the exact oracle (oracle/diagram/diagram.hpp) against CGAL's exact Delaunay
 // triangulation, for CONSTANT metrics.
 //
 // LS §3: when every site has the same metric M = FᵀF, d_M(p, q) = |F(p − q)|, so the anisotropic

@@ -51,5 +51,35 @@ expect "refiners/common/ may not include a refiner" 1 refiners/common/a.hpp refi
 expect "exact algebraic points may not include the diagram" 1 oracle/algebraic/b.hpp oracle/diagram/a.hpp "oracle/algebraic may not include oracle/diagram/"
 expect "relative includes are refused" 1 geometry/a.hpp ../fields/a.hpp "relative include"
 expect "cli/ may include every layer" 0 cli/a.cpp oracle/certify/c.hpp
+expect "a refiner whose name has digits is a refiner too" 1 refiners/star/a.cpp refiners/ls2/a.hpp "refiners/star may not include refiners/ls2/"
+expect "refiners/common/ may not include the registry (every refiner)" 1 refiners/common/a.hpp refiners/registry.hpp "refiners/common may not include refiners/"
+expect "an .ipp file is checked too" 1 refiners/star/a.ipp oracle/diagram/a.hpp "refiners/ may not include oracle/"
+
+angled() {  # an angle-bracket include of a project layer is a project include
+  tree
+  echo '#include <oracle/diagram/a.hpp>' >> "$tmp/t/refiners/star/a.cpp"
+  echo '#include <vector>' >> "$tmp/t/refiners/star/a.cpp"
+  out=$(bash "$check" "$tmp/t" 2>&1); got=$?
+  if [ "$got" = 1 ] && grep -qF "refiners/ may not include oracle/" <<<"$out" && ! grep -qF "vector" <<<"$out"; then
+    echo "ok: angle-bracket includes of a layer are checked, system headers are not"
+  else
+    echo "FAIL: angle-bracket includes: exit $got; output: $out"
+    failures=$((failures + 1))
+  fi
+}
+angled
+
+links() {  # a layer's CMakeLists.txt may link only the libraries of the layers it may include
+  tree
+  printf 'add_library(anisocert_refiners STATIC a.cpp)\ntarget_link_libraries(anisocert_refiners PUBLIC anisocert_geometry\n  anisocert_oracle)\n' > "$tmp/t/refiners/CMakeLists.txt"
+  out=$(bash "$check" "$tmp/t" 2>&1); got=$?
+  if [ "$got" = 1 ] && grep -qF "refiners/CMakeLists.txt:3: refiners/ may not link anisocert_oracle" <<<"$out"; then
+    echo "ok: a forbidden link is caught, also on a continuation line"
+  else
+    echo "FAIL: links: exit $got; output: $out"
+    failures=$((failures + 1))
+  fi
+}
+links
 
 exit $((failures > 0))
