@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace anisocert::cli {
 
@@ -15,6 +16,12 @@ Rational parse_option(const std::string& name, const std::string& text) {
   } catch (const NumberSyntaxError& e) {
     throw UsageError(name + ": " + e.what());
   }
+}
+
+std::string as_printed(double x) {
+  std::ostringstream o;
+  o << x;
+  return o.str();
 }
 
 void emit(const std::string& text) {

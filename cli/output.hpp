@@ -17,6 +17,9 @@ using Json = nlohmann::ordered_json;
 // Parses the text of option `name` exactly, or throws UsageError naming the option and text.
 Rational parse_option(const std::string& name, const std::string& text);
 
+// A double as a report prints it: ostream's default, 6 significant digits ("5", "1.2", "0.707107").
+std::string as_printed(double x);
+
 // Writes all of `text` to standard output at once: nothing is printed half-way.
 void emit(const std::string& text);
 // The progress callback of long runs: "anisocert: LINE" on standard error, or nothing when quiet.

@@ -87,6 +87,9 @@ struct PolygonDefect {
 };
 std::optional<PolygonDefect> simplicity_defect(const Polygon<Rational>& polygon);
 
+// "(x, y)" with each coordinate's exact text (to_exact_string).
+std::string exact_text(const Point2<Rational>& p);
+
 // One line on the defect, naming corners as name[k] (e.g. "domain[3]") and points exactly.
 std::string describe(const PolygonDefect& defect, const Polygon<Rational>& polygon, const std::string& name);
 

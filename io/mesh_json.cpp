@@ -22,21 +22,19 @@ using Point = predicates::Point2<Rational>;
 using geometry::Mesh;
 using geometry::Polygon;
 
-std::string show(const Point& p) { return "(" + to_exact_string(p.x) + ", " + to_exact_string(p.y) + ")"; }
-
 class MeshReader : SchemaReader {
  public:
   using SchemaReader::SchemaReader;
 
   // A domain file for the refiners: {"domain": [...]} (other keys of the format allowed).
   Polygon<Rational> domain_only(const Json& doc) const {
-    if (!doc.is_object()) fail("", "the top level must be an object, got " + io::show(doc));
+    if (!doc.is_object()) fail("", "the top level must be an object, got " + show(doc));
     require_keys(doc, "", {"domain"}, {"sites", "domain", "segments", "triangles"});
     return domain(doc.at("domain"));
   }
 
   Mesh<Rational> mesh(const Json& doc) const {
-    if (!doc.is_object()) fail("", "the top level must be an object, got " + io::show(doc));
+    if (!doc.is_object()) fail("", "the top level must be an object, got " + show(doc));
     require_keys(doc, "", {"sites"}, {"sites", "domain", "segments", "triangles"});
     Mesh<Rational> m;
     sites(doc.at("sites"), m);
@@ -45,7 +43,7 @@ class MeshReader : SchemaReader {
       m.domain = domain(doc.at("domain"));
       for (std::size_t i = 0; i < m.sites.size(); ++i)
         if (!geometry::in_closed_polygon(m.sites[i], m.domain))
-          fail("", indexed("sites", i) + " " + show(m.sites[i]) + " lies outside the domain");
+          fail("", indexed("sites", i) + " " + geometry::exact_text(m.sites[i]) + " lies outside the domain");
     } else {
       m.domain = default_box(m.sites);
     }
@@ -56,12 +54,12 @@ class MeshReader : SchemaReader {
 
  private:
   void sites(const Json& sites, Mesh<Rational>& m) const {
-    if (!sites.is_array() || sites.empty()) fail("sites", "expected a non-empty array of sites, got " + io::show(sites));
+    if (!sites.is_array() || sites.empty()) fail("sites", "expected a non-empty array of sites, got " + show(sites));
     for (std::size_t i = 0; i < sites.size(); ++i) {
       const std::string path = indexed("sites", i);
       const Json& site = sites[i];
       if (!site.is_object())
-        fail(path, "expected an object {\"x\": ..., \"y\": ..., \"metric\": [m11, m12, m22]}, got " + io::show(site));
+        fail(path, "expected an object {\"x\": ..., \"y\": ..., \"metric\": [m11, m12, m22]}, got " + show(site));
       require_keys(site, path, {"x", "y", "metric"}, {"x", "y", "metric"});
       m.sites.push_back(Point{number(site.at("x"), path + ".x"), number(site.at("y"), path + ".y")});
       const std::vector<Rational> e = numbers(site.at("metric"), 3, path + ".metric", "[m11, m12, m22]");
@@ -84,13 +82,13 @@ class MeshReader : SchemaReader {
     for (std::size_t k = 1; k < order.size(); ++k) {
       const Point &p = sites[order[k - 1]], &q = sites[order[k]];
       if (p.x == q.x && p.y == q.y)
-        fail("", indexed("sites", order[k - 1]) + " and " + indexed("sites", order[k]) + " coincide at " + show(p));
+        fail("", indexed("sites", order[k - 1]) + " and " + indexed("sites", order[k]) + " coincide at " + geometry::exact_text(p));
     }
   }
 
   Polygon<Rational> domain(const Json& domain) const {
     if (!domain.is_array() || domain.size() < 3)
-      fail("domain", "expected an array of at least 3 vertices [x, y], got " + io::show(domain));
+      fail("domain", "expected an array of at least 3 vertices [x, y], got " + show(domain));
     Polygon<Rational> v;
     for (std::size_t k = 0; k < domain.size(); ++k) {
       const std::vector<Rational> xy = numbers(domain[k], 2, indexed("domain", k), "a vertex [x, y]");
@@ -113,7 +111,7 @@ class MeshReader : SchemaReader {
 
   std::vector<std::array<int, 3>> triangles(const Json& triangles, std::size_t n) const {
     if (!triangles.is_array())
-      fail("triangles", "expected an array of site-index triples [i, j, k], got " + io::show(triangles));
+      fail("triangles", "expected an array of site-index triples [i, j, k], got " + show(triangles));
     std::vector<std::array<int, 3>> result;
     for (std::size_t k = 0; k < triangles.size(); ++k) {
       const std::vector<int> t = indices(triangles[k], 3, n, indexed("triangles", k), "[i, j, k] with three site indices");
@@ -123,7 +121,7 @@ class MeshReader : SchemaReader {
   }
 
   std::vector<std::pair<int, int>> segments(const Json& segments, std::size_t n) const {
-    if (!segments.is_array()) fail("segments", "expected an array of site-index pairs [i, j], got " + io::show(segments));
+    if (!segments.is_array()) fail("segments", "expected an array of site-index pairs [i, j], got " + show(segments));
     std::vector<std::pair<int, int>> result;
     std::map<std::pair<int, int>, std::size_t> first_of;  // {min, max} -> first segment joining them
     for (std::size_t k = 0; k < segments.size(); ++k) {

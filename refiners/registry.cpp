@@ -11,6 +11,12 @@ const std::vector<RefinerEntry>& registered_refiners() {
   return entries;
 }
 
+std::vector<std::string> refiner_names() {
+  std::vector<std::string> names;
+  for (const RefinerEntry& e : registered_refiners()) names.push_back(e.name);
+  return names;
+}
+
 const RefinerEntry* find_refiner(const std::string& name) {
   for (const RefinerEntry& e : registered_refiners())
     if (e.name == name) return &e;

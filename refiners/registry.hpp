@@ -35,6 +35,12 @@ struct Run {
 struct RefinerEntry {
   std::string name, summary;
   std::vector<ParameterSpec> parameters;
+  // Every parameter at its default.
+  ParameterValues defaults() const {
+    ParameterValues v;
+    for (const ParameterSpec& p : parameters) v[p.name] = p.value;
+    return v;
+  }
   // Throws ParameterError naming a parameter out of range, common::DomainError for a domain the
   // refiner cannot use, common::FieldError for a field that is not a metric where it is sampled.
   std::function<Run(const common::Domain&, const fields::MetricField&, const ParameterValues&, const common::Budget&,
@@ -43,6 +49,7 @@ struct RefinerEntry {
 };
 
 const std::vector<RefinerEntry>& registered_refiners();
+std::vector<std::string> refiner_names();
 // The entry called `name`, or nullptr.
 const RefinerEntry* find_refiner(const std::string& name);
 

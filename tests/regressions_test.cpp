@@ -83,8 +83,7 @@ void run_refine(const fs::path& dir, const Json& c) {
   }
   const refiners::RefinerEntry* entry = refiners::find_refiner(c.at("algo").get<std::string>());
   ASSERT_NE(entry, nullptr);
-  refiners::ParameterValues values;
-  for (const auto& spec : entry->parameters) values[spec.name] = spec.value;
+  const refiners::ParameterValues values = entry->defaults();
   refiners::common::Budget budget;
   budget.max_vertices = c.value("max_vertices", budget.max_vertices);
   const Json& e = c.at("expect");

@@ -14,7 +14,6 @@
 
 #include <cmath>
 #include <memory>
-#include <sstream>
 
 namespace anisocert::cli {
 namespace {
@@ -43,19 +42,12 @@ geometry::Mesh<Rational> demo_input() {
   return in;
 }
 
-std::string shortest(double x) {
-  std::ostringstream o;
-  o << x;
-  return o.str();
-}
-
 // The demo's second half: its summary, and the picture for `svg_path`. Its parameters meet every
 // condition of LU Theorem 4.5 that theory/ decides ((1 − δ)³ρ₀ > 2γ₀³ needs ρ₀ > 4.74 at γ₀ = 1.2,
 // δ = 0.1).
 std::string refine_and_certify(const std::string& svg_path, bool quiet, std::vector<OutputFile>& files) {
   const refiners::RefinerEntry& star = *refiners::find_refiner("star");
-  refiners::ParameterValues values;
-  for (const auto& spec : star.parameters) values[spec.name] = spec.value;
+  refiners::ParameterValues values = star.defaults();
   values["rho0"] = 5, values["beta"] = 5, values["gamma0"] = 1.2;
   refiners::common::Budget budget;
   budget.max_seconds = 60;
@@ -67,7 +59,7 @@ std::string refine_and_certify(const std::string& svg_path, bool quiet, std::vec
   o.rho0 = rational_from_double(values["rho0"]), o.gamma0 = rational_from_double(values["gamma0"]);
   const geometry::Mesh<Rational> exact = geometry::exact(mesh);
   const CertifyVerdict verdict =
-      certify_verdict(oracle::certify_mesh(exact, o), o, exact, shortest(values["rho0"]), shortest(values["gamma0"]));
+      certify_verdict(oracle::certify_mesh(exact, o), o, exact, as_printed(values["rho0"]), as_printed(values["gamma0"]));
   files.push_back({svg_path, io::mesh_svg(mesh, "star refiner, shock field: " + std::to_string(mesh.sites.size()) +
                                                     " vertices, " + (verdict.holds ? "certified" : "not certified"))});
   return "refine: the unit square, field shock (h = 0.05, alpha = 3, delta = 0.6)\n" + report_text(run) + one_line(verdict) +

@@ -16,6 +16,13 @@
 namespace anisocert::cli {
 namespace {
 
+// "a, b, c"
+std::string names_of(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
 struct RefineOptions {
   std::string algo = "star", domain = "square", field = "shock", output, svg, medit;
   std::vector<std::string> params;
@@ -28,11 +35,7 @@ struct RefineOptions {
 
 int run_refine(const RefineOptions& o) {
   const refiners::RefinerEntry* entry = refiners::find_refiner(o.algo);
-  if (!entry) {
-    std::string known;
-    for (const auto& e : refiners::registered_refiners()) known += (known.empty() ? "" : ", ") + e.name;
-    throw UsageError("--algo: unknown refiner \"" + o.algo + "\" (" + known + ")");
-  }
+  if (!entry) throw UsageError("--algo: unknown refiner \"" + o.algo + "\" (" + names_of(refiners::refiner_names()) + ")");
   refiners::ParameterValues values;
   for (const auto& spec : entry->parameters) values[spec.name] = o.values.at(spec.name);
   for (const auto& [name, option] : o.options)
@@ -103,20 +106,12 @@ std::string description() {
   return o.str();
 }
 
-std::string names_of(const std::vector<std::string>& names) {
-  std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
-
 }  // namespace
 
 void add_refine(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<RefineOptions>();
   CLI::App* c = app.add_subcommand("refine", description());
-  std::vector<std::string> algos;
-  for (const auto& e : refiners::registered_refiners()) algos.push_back(e.name);
-  c->add_option("--algo", o->algo, "the refiner: " + names_of(algos))->capture_default_str();
+  c->add_option("--algo", o->algo, "the refiner: " + names_of(refiners::refiner_names()))->capture_default_str();
   c->add_option("--domain", o->domain, "square, or a JSON file with a \"domain\" polygon")->capture_default_str();
   c->add_option("--field", o->field, "the metric field: " + names_of(fields::field_names()))->capture_default_str();
   c->add_option("--param", o->params, "a field parameter name=value (repeatable)");

@@ -17,13 +17,6 @@ std::vector<std::string> texts(const std::vector<oracle::MeshWitness>& ws) {
   return out;
 }
 
-// A double as the report prints it (6 significant digits).
-std::string approx(double x) {
-  std::ostringstream o;
-  o << x;
-  return o.str();
-}
-
 const char* verdict(bool holds) { return holds ? "holds" : "FAILS"; }
 
 }  // namespace
@@ -52,7 +45,7 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
     const bool holds = r.rho_violations.empty();
     v.checks.push_back({"radius_edge", "radius-edge ratio ≤ " + rho0_text + " in each vertex's metric", "radius-edge ≤ " + rho0_text,
                         holds,
-                        " (worst ≈ " + approx(r.worst_rho) + ", triangle " + std::to_string(r.worst_rho_triangle) + ", vertex " +
+                        " (worst ≈ " + as_printed(r.worst_rho) + ", triangle " + std::to_string(r.worst_rho_triangle) + ", vertex " +
                             std::to_string(r.worst_rho_vertex) + ")",
                         "", {texts(r.rho_violations)},
                         {{"threshold", rho0_text}, {"holds", holds}, {"worst", r.worst_rho},
@@ -63,7 +56,7 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
     const bool holds = r.gamma_violations.empty();
     v.checks.push_back({"distortion", "distortion ≤ " + gamma0_text + " between the vertices of each triangle",
                         "distortion ≤ " + gamma0_text, holds,
-                        " (worst ≈ " + approx(r.worst_gamma) + ", triangle " + std::to_string(r.worst_gamma_triangle) + ")", "",
+                        " (worst ≈ " + as_printed(r.worst_gamma) + ", triangle " + std::to_string(r.worst_gamma_triangle) + ")", "",
                         {texts(r.gamma_violations)},
                         {{"threshold", gamma0_text}, {"holds", holds}, {"worst", r.worst_gamma},
                          {"worst_triangle", r.worst_gamma_triangle}, {"violations", witnesses_json(r.gamma_violations)}}});

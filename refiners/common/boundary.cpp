@@ -73,8 +73,7 @@ void Boundary::set_box(int s) {
 }
 
 bool Boundary::in_box(const Point2<double>& x, int s) const {
-  const Box& b = boxes_[s];
-  return x.x >= b.x0 && x.x <= b.x1 && x.y >= b.y0 && x.y <= b.y1;
+  return boxes_[s].contains(x);
 }
 
 Box Boundary::search_box(int s) const {

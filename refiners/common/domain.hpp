@@ -16,6 +16,7 @@ using predicates::Point2;
 // A closed axis-parallel box; empty when x0 > x1.
 struct Box {
   double x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+  bool contains(const Point2<double>& p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
 };
 
 class Domain {

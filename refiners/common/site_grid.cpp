@@ -41,7 +41,7 @@ const std::vector<int>& SiteGrid::sites_in(const Box& b, const std::vector<Point
   for (int j = cell_y(b.y0); j <= cell_y(b.y1); ++j)
     for (int i = cell_x(b.x0); i <= cell_x(b.x1); ++i)
       for (int s : sites_[cell(i, j)])
-        if (points[s].x >= b.x0 && points[s].x <= b.x1 && points[s].y >= b.y0 && points[s].y <= b.y1) found_.push_back(s);
+        if (b.contains(points[s])) found_.push_back(s);
   return found_;
 }
 

@@ -37,6 +37,18 @@ constexpr double reach_growth = 4;
 // the candidates whose double distances are within 10⁻¹⁰ (relative) of the least.
 constexpr double near_tie = 1 + 1e-10;
 
+// Folds one triangle of S_v, with circumellipse c in M = M_v, into the star's reach (the M-distance
+// from v to the far side of c, squared; returned unsquared) and its conflict zone's box.
+double extend_zone(const Point2<double>& pv, const Sym2<double>& M, const geometry::Circumellipse<double>& c,
+                   common::Box& zone, double& reach2) {
+  const double reach = std::sqrt(predicates::quadratic_form(M, c.cx - pv.x, c.cy - pv.y)) + std::sqrt(c.r2);
+  reach2 = std::max(reach2, reach * reach);
+  const auto h = geometry::ellipse_half_widths(M, c.r2);
+  zone = {std::min(zone.x0, c.cx - h.hx), std::max(zone.x1, c.cx + h.hx), std::min(zone.y0, c.cy - h.hy),
+          std::max(zone.y1, c.cy + h.hy)};
+  return reach;
+}
+
 void sort_unique(std::vector<int>& v) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
@@ -144,17 +156,12 @@ void StarSet::recompute(int v) {
     double reach2 = 0;
     for (std::size_t i = 0; i + (closed ? 0 : 1) < k; ++i) {
       const int a = ring[i], b = ring[(i + 1) % k];
-      const geometry::Circumellipse<double> c = geometry::circumellipse(pv, x[a], x[b], M);
-      const double reach = std::sqrt(predicates::quadratic_form(M, c.cx - pv.x, c.cy - pv.y)) + std::sqrt(c.r2);
-      reach2 = std::max(reach2, reach * reach);
-      if (!(reach * reach * reach_margin < R2)) fits = false;
       // The search region and the conflict zone cover every triangle of the fan, also those
       // outside Ω (across a reflex corner): a site in their circumellipses changes the star too.
       // (Without them a reflex corner's first star, whose only triangle spans the exterior,
       // stayed empty for good, and the triangles at the corner were refined forever.)
-      const auto h = geometry::ellipse_half_widths(M, c.r2);
-      zone = {std::min(zone.x0, c.cx - h.hx), std::max(zone.x1, c.cx + h.hx), std::min(zone.y0, c.cy - h.hy),
-              std::max(zone.y1, c.cy + h.hy)};
+      const double reach = extend_zone(pv, M, geometry::circumellipse(pv, x[a], x[b], M), zone, reach2);
+      if (!(reach * reach * reach_margin < R2)) fits = false;
       (triangle_in_domain(v, a, b) ? star.triangles : star.outside).push_back({a, b});  // restricted to Ω
     }
     // A fan is complete when it closes around v, or when both of its open ends are boundary
@@ -187,14 +194,7 @@ void StarSet::refresh_zone(int v) {
   const Point2<double>& pv = x[v];
   common::Box zone{pv.x, pv.x, pv.y, pv.y};
   double reach2 = 0;
-  for (const auto& t : stars_[v].triangles) {
-    const geometry::Circumellipse<double> c = geometry::circumellipse(pv, x[t[0]], x[t[1]], M);
-    const double reach = std::sqrt(predicates::quadratic_form(M, c.cx - pv.x, c.cy - pv.y)) + std::sqrt(c.r2);
-    reach2 = std::max(reach2, reach * reach);
-    const auto h = geometry::ellipse_half_widths(M, c.r2);
-    zone = {std::min(zone.x0, c.cx - h.hx), std::max(zone.x1, c.cx + h.hx), std::min(zone.y0, c.cy - h.hy),
-            std::max(zone.y1, c.cy + h.hy)};
-  }
+  for (const auto& t : stars_[v].triangles) extend_zone(pv, M, geometry::circumellipse(pv, x[t[0]], x[t[1]], M), zone, reach2);
   reach2_[v] = reach2;
   set_zone(v, zone);
 }

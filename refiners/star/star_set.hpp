@@ -35,10 +35,8 @@ class StarSet {
   Update update(int v, int k);
   // The stars whose conflict zone's box may hold q (to be tested with zone_holds).
   const std::vector<int>& near(const Point2<double>& q) const { return index_.at(sites_.grid.cell_of(q)); }
-  bool zone_holds(int v, const Point2<double>& q) const {
-    const common::Box& z = stars_[v].zone;  // the box the index filed v under, not just its cells
-    return q.x >= z.x0 && q.x <= z.x1 && q.y >= z.y0 && q.y <= z.y1;
-  }
+  // (The box the index filed v under, not just its cells.)
+  bool zone_holds(int v, const Point2<double>& q) const { return stars_[v].zone.contains(q); }
   // Files every star's conflict zone again (after the grid was rebuilt).
   void refile();
 
