@@ -6,7 +6,9 @@
 // One construction for every number type T with +, −, ·, /, sqrt and max (the refiners' estimates
 // and the certifier's reported worst value are doubles). The decisions "τ ≤ γ" are exact
 // predicates (predicates/distortion.hpp), never this.
-// (B² − 4AC ≥ 0 always; a negative rounded value is read as 0.)
+// (B² − 4AC ≥ 0 always; a negative rounded value is read as 0. Near τ = 1 it cancels, and the
+// estimate is good to about √ε ≈ 10⁻⁸ relative there, to 10⁻⁹ (tested) away from it:
+// DistortionEstimate.AgreesWithTheExactComparison.)
 #include "predicates/point.hpp"
 
 #include <algorithm>
