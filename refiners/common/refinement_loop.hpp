@@ -9,7 +9,7 @@
 //   std::size_t queued() const;            // elements waiting (for the progress line)
 //   const std::string& stalled() const;    // why it cannot go on, or empty
 //   bool step();                           // refines one element; false when none is left
-//   const char* done() const;              // the name of its end condition
+//   std::string done() const;              // the name of its end condition, when nothing is left
 #include "refiners/common/result.hpp"
 
 #include <chrono>

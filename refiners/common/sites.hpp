@@ -14,8 +14,7 @@ namespace anisocert::refiners::common {
 struct Sites {
   Sites(const Domain& domain, const fields::MetricField& f) : field(f), grid(domain.bounding_box()) {}
 
-  // Adds q with its metric M = M(q) and files it in the grid (the caller rebuilds the grid when
-  // outgrown). Throws FieldError when M is not finite and positive definite (decided exactly:
+  // Adds q with its metric M = M(q) and files it in the grid (see grow_grid). Throws FieldError when M is not finite and positive definite (decided exactly:
   // m11 > 0 and m11 m22 − m12² > 0, the latter as an orientation determinant).
   int add(const Point2<double>& q, const Sym2<double>& M) {
     if (!(std::isfinite(M.m11) && std::isfinite(M.m12) && std::isfinite(M.m22) && M.m11 > 0 &&
@@ -30,6 +29,13 @@ struct Sites {
     return k;
   }
   int add(const Point2<double>& q) { return add(q, field.at(q.x, q.y)); }
+  // Rebuilds the grid when the sites have outgrown it; true when it did (whoever files boxes in
+  // the grid's cells then files them again).
+  bool grow_grid() {
+    if (!grid.outgrown(points.size())) return false;
+    grid.rebuild(points);
+    return true;
+  }
   std::size_t size() const { return points.size(); }
   const std::vector<int>& in(const Box& b) const { return grid.sites_in(b, points); }
 

@@ -17,7 +17,7 @@ common::Sites corner_sites(const common::Domain& domain, const fields::MetricFie
   common::Sites sites(domain, field);
   for (const auto& q : domain.corners()) {
     sites.add(q);
-    if (sites.grid.outgrown(sites.size())) sites.grid.rebuild(sites.points);
+    sites.grow_grid();  // no box is filed yet
   }
   return sites;
 }
@@ -37,7 +37,14 @@ class StarRefiner {
   std::size_t vertices() const { return sites_.size(); }
   std::size_t queued() const { return site_queue_.size(); }
   const std::string& stalled() const { return stalled_; }
-  const char* done() const { return "all stars consistent"; }
+  // No rule fires on an empty star, so a run can end with some (seen for metrics whose quadratic
+  // forms overflow doubles, e.g. a constant metric of 10³⁰⁰): then it says so.
+  std::string done() const {
+    if (const std::size_t n = empty_stars())
+      return std::to_string(n) + " stars have no triangle in Ω: their search failed, the metric's scale is beyond what the "
+                                 "refiner resolves in doubles";
+    return "all stars consistent";
+  }
 
   // One step: an encroached subsegment first (rule 1), else the next queued star's first rule.
   bool step() {
@@ -61,7 +68,7 @@ class StarRefiner {
   StarResult result(std::string stop_reason) const {
     StarResult r;
     r.mesh.triangles = stars_.consistent_triangles(r.inconsistent_triangles);
-    for (std::size_t v = 0; v < stars_.size(); ++v) r.empty_stars += stars_[v].triangles.empty();
+    r.empty_stars = empty_stars();
     r.consistent = r.inconsistent_triangles == 0 && r.empty_stars == 0;
     r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
     r.mesh.segments = boundary_.segments();
@@ -77,6 +84,13 @@ class StarRefiner {
   }
 
  private:
+  // Sites whose star has no triangle in Ω.
+  std::size_t empty_stars() const {
+    std::size_t n = 0;
+    for (std::size_t v = 0; v < stars_.size(); ++v) n += stars_[v].triangles.empty();
+    return n;
+  }
+
   // Inserts q (LU §4: its metric is the field's at q), updates the stars whose conflict zone holds
   // it and queues them, their former neighbours, the new star and the subsegments q encroaches.
   int insert(const Point2<double>& q, Rule rule, int site = -1, double radius = 0) {
@@ -89,8 +103,7 @@ class StarRefiner {
     boundary_.site_added();
     stars_.add(std::isfinite(nearest) ? 4 * nearest : 0);
     queued_.push_back(false);
-    if (sites_.grid.outgrown(sites_.size())) {
-      sites_.grid.rebuild(sites_.points);
+    if (sites_.grow_grid()) {
       stars_.refile();
       boundary_.refile();
     }
@@ -172,12 +185,6 @@ StarResult refine_star(const common::Domain& domain, const fields::MetricField& 
   StarRefiner r(domain, field, p);
   std::string stop = common::refine_until_done(r, p, clock, progress);
   StarResult result = r.result(std::move(stop));
-  // No rule fires on an empty star, so the loop ends as if done; say what happened instead (seen
-  // for metrics whose quadratic forms overflow doubles, e.g. a constant metric of 10³⁰⁰).
-  if (result.empty_stars > 0 && result.stop_reason == r.done())
-    result.stop_reason = std::to_string(result.empty_stars) +
-                         " stars have no triangle in Ω: their search failed, the metric's scale is beyond what the "
-                         "refiner resolves in doubles";
   result.seconds = clock.seconds();
   return result;
 }
