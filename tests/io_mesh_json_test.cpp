@@ -16,12 +16,12 @@ using anisocert::Rational;
 using anisocert::io::InputError;
 using anisocert::io::read_mesh_json;
 using anisocert::io::read_mesh_json_file;
-using SiteSet = anisocert::geometry::Mesh<Rational>;
+using Mesh = anisocert::geometry::Mesh<Rational>;
 using Point = anisocert::predicates::Point2<Rational>;
 
 namespace {
 
-SiteSet read(const std::string& text) {
+Mesh read(const std::string& text) {
   std::istringstream in(text);
   return read_mesh_json(in, "t.json");
 }
@@ -61,7 +61,7 @@ const std::string L_shape = R"([[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]])
 }  // namespace
 
 TEST(SiteSet, PlainJsonNumbersAreExactFromTheirText) {
-  const SiteSet s = read(R"({"sites": [
+  const Mesh s = read(R"({"sites": [
       {"x": 0.1, "y": 123456789012345678901234567890, "metric": [4, 0.1, 1]},
       {"x": "1/3", "y": -2, "metric": ["4", "0", "1.25e-3"]},
       {"x": 1.25e-3, "y": -0.5E1, "metric": [1, 0, 1]}]})");
@@ -131,7 +131,7 @@ TEST(SiteSet, CoincidentSitesAreFoundExactly) {
 }
 
 TEST(SiteSet, DefaultDomainIsTheBoundingBoxWithAMarginOfOneEighth) {
-  const SiteSet s = read(with_domain({"0 0", "8 4", "2 1"}, ""));
+  const Mesh s = read(with_domain({"0 0", "8 4", "2 1"}, ""));
   expect_polygon(s.domain, {P("-1", "-1"), P("9", "-1"), P("9", "5"), P("-1", "5")});
   // Zero width: the margin comes from the height.
   expect_polygon(read(with_domain({"0 0", "0 16"}, "")).domain, {P("-2", "-2"), P("2", "-2"), P("2", "18"), P("-2", "18")});
@@ -141,7 +141,7 @@ TEST(SiteSet, DefaultDomainIsTheBoundingBoxWithAMarginOfOneEighth) {
 }
 
 TEST(SiteSet, GivenDomainIsKept) {
-  const SiteSet s = read(with_domain({"1 1"}, L_shape));
+  const Mesh s = read(with_domain({"1 1"}, L_shape));
   expect_polygon(s.domain, {P("0", "0"), P("2", "0"), P("2", "1"), P("1", "1"), P("1", "2"), P("0", "2")});
 }
 
@@ -165,7 +165,7 @@ TEST(SiteSet, DomainFoldingBackIsRejectedButStraightRunsAreAccepted) {
                "edge 1 (domain[1] to domain[2]) overlap");
   // Three collinear vertices: edges 2 and 0 overlap, the boundary folds back at (0, 0).
   EXPECT_ERROR(with_domain({"0 0"}, "[[0, 0], [1, 0], [2, 0]]"), "folds back at domain[0]");
-  const SiteSet s = read(with_domain({"1 0"}, "[[0, 0], [1, 0], [2, 0], [2, 2], [0, 2]]"));
+  const Mesh s = read(with_domain({"1 0"}, "[[0, 0], [1, 0], [2, 0], [2, 2], [0, 2]]"));
   EXPECT_EQ(s.domain.size(), 5u);  // the straight vertex (1, 0) is kept
 }
 
@@ -214,7 +214,7 @@ TEST(SiteSet, SegmentsAreCheckedAgainstTheSites) {
     return R"({"sites": [{"x": 0, "y": 0, "metric": [1, 0, 1]}, {"x": 1, "y": 0, "metric": [1, 0, 1]},
                          {"x": 0, "y": 1, "metric": [1, 0, 1]}], "segments": )" + segments + "}";
   };
-  const SiteSet s = read(doc("[[0, 1], [2, 1]]"));
+  const Mesh s = read(doc("[[0, 1], [2, 1]]"));
   ASSERT_EQ(s.segments.size(), 2u);
   EXPECT_EQ(s.segments[1], (std::pair<int, int>{2, 1}));
   EXPECT_ERROR(doc(R"({"0": 1})"), "t.json: segments: expected an array");
