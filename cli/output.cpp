@@ -18,12 +18,6 @@ Rational parse_option(const std::string& name, const std::string& text) {
   }
 }
 
-std::string as_printed(double x) {
-  std::ostringstream o;
-  o << x;
-  return o.str();
-}
-
 void emit(const std::string& text) {
   std::fwrite(text.data(), 1, text.size(), stdout);
   std::fflush(stdout);

@@ -2,6 +2,7 @@
 // How every command writes: standard output all at once, files all or nothing (DESIGN.md:
 // "nothing is written half-way"), progress lines on standard error, JSON rendering; and exact
 // numbers given as options.
+#include "io/reports/printed.hpp"
 #include "numbers/rational.hpp"
 
 #include <nlohmann/json.hpp>
@@ -17,8 +18,7 @@ using Json = nlohmann::ordered_json;
 // Parses the text of option `name` exactly, or throws UsageError naming the option and text.
 Rational parse_option(const std::string& name, const std::string& text);
 
-// A double as a report prints it: ostream's default, 6 significant digits ("5", "1.2", "0.707107").
-std::string as_printed(double x);
+using io::as_printed;
 
 // Writes all of `text` to standard output at once: nothing is printed half-way.
 void emit(const std::string& text);

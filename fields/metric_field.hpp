@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <string>
 
 namespace anisocert::fields {
@@ -15,7 +16,14 @@ using Parameters = std::map<std::string, double>;
 struct MetricField {
   std::string name;
   Parameters params;  // every parameter, defaults filled in
-  std::function<predicates::Sym2<double>(double, double)> at;
+  std::function<predicates::Sym2<double>(double, double)> at;  // may throw FieldError (below)
+};
+
+// A field with no metric at a point it is asked about (a background mesh that does not cover it),
+// or whose metric there is not finite and positive definite: what() names the field and the
+// point. The refiners let it through; the CLI turns it into exit 2.
+struct FieldError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
 };
 
 }  // namespace anisocert::fields

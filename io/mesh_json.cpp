@@ -29,13 +29,13 @@ class MeshReader : SchemaReader {
   // A domain file for the refiners: {"domain": [...]} (other keys of the format allowed).
   Polygon<Rational> domain_only(const Json& doc) const {
     if (!doc.is_object()) fail("", "the top level must be an object, got " + show(doc));
-    require_keys(doc, "", {"domain"}, {"sites", "domain", "segments", "triangles"});
+    require_keys(doc, "", {"domain"}, {"sites", "domain", "segments", "edges", "triangles"});
     return domain(doc.at("domain"));
   }
 
   Mesh<Rational> mesh(const Json& doc) const {
     if (!doc.is_object()) fail("", "the top level must be an object, got " + show(doc));
-    require_keys(doc, "", {"sites"}, {"sites", "domain", "segments", "triangles"});
+    require_keys(doc, "", {"sites"}, {"sites", "domain", "segments", "edges", "triangles"});
     Mesh<Rational> m;
     sites(doc.at("sites"), m);
     require_distinct_sites(m.sites);
@@ -44,10 +44,11 @@ class MeshReader : SchemaReader {
       for (std::size_t i = 0; i < m.sites.size(); ++i)
         if (!geometry::in_closed_polygon(m.sites[i], m.domain))
           fail("", indexed("sites", i) + " " + geometry::exact_text(m.sites[i]) + " lies outside the domain");
-    } else {
+    } else if (!doc.contains("triangles")) {
       m.domain = default_box(m.sites);
     }
-    if (doc.contains("segments")) m.segments = segments(doc.at("segments"), m.sites.size());
+    if (doc.contains("segments")) m.segments = segments(doc.at("segments"), m.sites.size(), "segments");
+    if (doc.contains("edges")) m.edges = segments(doc.at("edges"), m.sites.size(), "edges");
     if (doc.contains("triangles")) m.triangles = triangles(doc.at("triangles"), m.sites.size());
     return m;
   }
@@ -120,16 +121,16 @@ class MeshReader : SchemaReader {
     return result;
   }
 
-  std::vector<std::pair<int, int>> segments(const Json& segments, std::size_t n) const {
-    if (!segments.is_array()) fail("segments", "expected an array of site-index pairs [i, j], got " + show(segments));
+  std::vector<std::pair<int, int>> segments(const Json& segments, std::size_t n, const std::string& key) const {
+    if (!segments.is_array()) fail(key, "expected an array of site-index pairs [i, j], got " + show(segments));
     std::vector<std::pair<int, int>> result;
     std::map<std::pair<int, int>, std::size_t> first_of;  // {min, max} -> first segment joining them
     for (std::size_t k = 0; k < segments.size(); ++k) {
-      const std::string path = indexed("segments", k);
+      const std::string path = indexed(key, k);
       const std::vector<int> ends = indices(segments[k], 2, n, path, "[i, j] with two site indices");
       const auto [it, is_new] = first_of.emplace(std::minmax(ends[0], ends[1]), k);
       if (!is_new)
-        fail(path, "repeats " + indexed("segments", it->second) + " (" + indexed("sites", ends[0]) + " to " +
+        fail(path, "repeats " + indexed(key, it->second) + " (" + indexed("sites", ends[0]) + " to " +
                        indexed("sites", ends[1]) + ")");
       result.emplace_back(ends[0], ends[1]);
     }
@@ -144,7 +145,7 @@ Json parse_file(const std::string& path) {
 }
 
 // The rational a double denotes, as exact text in a JSON string.
-std::string exact(double x) { return "\"" + to_exact_string(rational_from_double(x)) + "\""; }
+std::string exact(const Rational& q) { return "\"" + to_exact_string(q) + "\""; }
 
 }  // namespace
 
@@ -162,18 +163,28 @@ Mesh<Rational> read_triangle_mesh_file(const std::string& path) {
 
 Polygon<Rational> read_domain_file(const std::string& path) { return MeshReader(path).domain_only(parse_file(path)); }
 
-std::string mesh_json(const Mesh<double>& m) {
+std::string mesh_json(const Mesh<Rational>& m) {
+  if (m.metrics.size() != m.sites.size())
+    throw InputError("the JSON mesh format needs a metric at every site (give one with --metric or --field)");
   std::ostringstream o;
   o << "{\"sites\": [\n";
   for (std::size_t i = 0; i < m.sites.size(); ++i)
     o << "  {\"x\": " << exact(m.sites[i].x) << ", \"y\": " << exact(m.sites[i].y) << ", \"metric\": ["
       << exact(m.metrics[i].m11) << ", " << exact(m.metrics[i].m12) << ", " << exact(m.metrics[i].m22) << "]}"
       << (i + 1 < m.sites.size() ? ",\n" : "\n");
-  o << "],\n\"domain\": [";
-  for (std::size_t i = 0; i < m.domain.size(); ++i) o << (i ? ", " : "") << "[" << exact(m.domain[i].x) << ", " << exact(m.domain[i].y) << "]";
-  o << "],\n\"segments\": [";
-  for (std::size_t i = 0; i < m.segments.size(); ++i) o << (i ? ", " : "") << "[" << m.segments[i].first << ", " << m.segments[i].second << "]";
-  o << "],\n\"triangles\": [\n";
+  o << "]";
+  if (!m.domain.empty()) {
+    o << ",\n\"domain\": [";
+    for (std::size_t i = 0; i < m.domain.size(); ++i) o << (i ? ", " : "") << "[" << exact(m.domain[i].x) << ", " << exact(m.domain[i].y) << "]";
+    o << "]";
+  }
+  for (const auto& [key, list] : {std::pair{"segments", &m.segments}, std::pair{"edges", &m.edges}}) {
+    if (list->empty()) continue;
+    o << ",\n\"" << key << "\": [";
+    for (std::size_t i = 0; i < list->size(); ++i) o << (i ? ", " : "") << "[" << (*list)[i].first << ", " << (*list)[i].second << "]";
+    o << "]";
+  }
+  o << ",\n\"triangles\": [\n";
   for (std::size_t i = 0; i < m.triangles.size(); ++i)
     o << "  [" << m.triangles[i][0] << ", " << m.triangles[i][1] << ", " << m.triangles[i][2] << "]"
       << (i + 1 < m.triangles.size() ? ",\n" : "\n");

@@ -4,6 +4,7 @@
 //   {"sites": [{"x": X, "y": Y, "metric": [m11, m12, m22]}, ...],   required, non-empty
 //    "domain": [[X, Y], ...],                                        optional, >= 3 vertices
 //    "segments": [[i, j], ...],                                      optional
+//    "edges": [[i, j], ...],                                         optional (a mesh's declared edges)
 //    "triangles": [[i, j, k], ...]}                                  optional (a mesh)
 // A number is a JSON string (integer, fraction or decimal, see parse_rational) or a plain JSON
 // number, both taken exactly from their text (0.1 is 1/10). Checked exactly: every metric is
@@ -11,8 +12,10 @@
 // vertices allowed when the boundary runs straight on); no two sites coincide; every site lies
 // in the closed domain; segments join two distinct existing sites and none repeats; triangles
 // name three distinct existing sites (whether they form a mesh is the certifier's verdict).
-// Without "domain", the domain is the sites' bounding box enlarged on every side by
-// max(width, height)/8 (by 1 when both are 0), counter-clockwise from the lower left corner.
+// Without "domain", a mesh (with "triangles") has no domain polygon: its domain is the union of its
+// triangles, bounded by its "edges" when there are any (geometry::Mesh::edges); a site set's is
+// the sites' bounding box enlarged on every side by max(width, height)/8 (by 1 when both are 0),
+// counter-clockwise from the lower left corner.
 #include "geometry/mesh.hpp"
 #include "io/input_error.hpp"
 
@@ -30,8 +33,9 @@ geometry::Mesh<Rational> read_triangle_mesh_file(const std::string& path);
 // The validated "domain" of a file in this format ("sites" may be absent): for the refiners.
 geometry::Polygon<Rational> read_domain_file(const std::string& path);
 
-// The file of a refiner's mesh, every double written as its exact decimal expansion, so that
-// `anisocert certify` reads exactly the numbers the refiner produced.
-std::string mesh_json(const geometry::Mesh<double>& m);
+// The file of a mesh, every number written as its exact text (a decimal expansion, or a fraction),
+// so that `anisocert certify` reads exactly the numbers written (a refiner's doubles included).
+// Throws InputError when a site has no metric.
+std::string mesh_json(const geometry::Mesh<Rational>& m);
 
 }  // namespace anisocert::io

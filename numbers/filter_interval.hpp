@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -20,18 +22,29 @@ struct FilterInterval {
   FilterInterval() : lo(0), hi(0) {}
   FilterInterval(double x) : lo(x), hi(x) {}  // NOLINT: a double is an exact point
   FilterInterval(double l, double h) : lo(l), hi(h) {}
-  // A double interval around the rational q. Boost 1.74 converts gmp_rational to double by
-  // rounding to nearest at 53 bits (twice below 2⁻¹⁰²², still within one subnormal step);
-  // overflow gives ±∞ and underflow 0. Widening by one ulp on both sides covers every case.
+  // A double interval around the rational q: GMP's mpq_get_d truncates towards zero (no
+  // allocation, unlike a correctly rounded conversion), so q lies within one ulp of it, on the far
+  // side from zero; overflow gives ±∞ and underflow 0 or a subnormal. Widening by one ulp on both
+  // sides covers every case.
   static FilterInterval around(const Rational& q) {
-    const double d = q.convert_to<double>();
+    const double d = mpq_get_d(q.backend().data());
     return widen(d, d);
   }
 
-  static FilterInterval widen(double l, double h) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    return {std::nextafter(l, -inf), std::nextafter(h, inf)};
+  static FilterInterval widen(double l, double h) { return {next_down(l), next_up(h)}; }
+
+  // std::nextafter towards +∞ / −∞ without the library call (the filters' hot path): a finite
+  // non-zero double's neighbour is one step of its bit pattern, away from zero when positive.
+  static double next_up(double x) {
+    if (!(x < std::numeric_limits<double>::infinity())) return x;   // +∞, NaN
+    if (x == 0) return std::numeric_limits<double>::denorm_min();    // +0 and −0
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    b = x > 0 ? b + 1 : b - 1;
+    std::memcpy(&x, &b, sizeof b);
+    return x;
   }
+  static double next_down(double x) { return -next_up(-x); }
 
   // The sign, when every point of the interval has it; nothing when it contains 0 or is NaN.
   std::optional<Sign> sign() const {
@@ -69,9 +82,7 @@ struct FilterInterval {
   }
   // The square root of the non-negative part (an end at or below 0 gives 0; NaN stays NaN).
   friend FilterInterval sqrt(const FilterInterval& a) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    return {a.lo <= 0 ? 0 : std::max(0.0, std::nextafter(std::sqrt(a.lo), -inf)),
-            a.hi <= 0 ? 0 : std::nextafter(std::sqrt(a.hi), inf)};
+    return {a.lo <= 0 ? 0 : std::max(0.0, next_down(std::sqrt(a.lo))), a.hi <= 0 ? 0 : next_up(std::sqrt(a.hi))};
   }
 };
 

@@ -101,17 +101,22 @@ TEST(CliDiagram, DemoWritesItsPicture) {
 namespace {
 
 // `anisocert refine` then `anisocert certify`, as a user runs them: exit codes 0, 1 (with the
-// offending triangle named), 2; the Medit files exist.
+// offending triangle named), 2; the Medit files hold the same mesh as the JSON file.
 TEST(CliMesh, RefineThenCertify) {
   const std::string base = ::testing::TempDir() + "anisocert_mesh_" + std::to_string(getpid());
-  const Outcome r = run("refine --field constant --param m11=20 --param m22=20 -o " + base + ".json --medit " + base + " --quiet");
+  const std::string field = "refine --field constant --param m11=20 --param m22=20 --quiet -o " + base;
+  const Outcome r = run(field + ".mesh");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("all stars consistent"), std::string::npos);
-  EXPECT_TRUE(std::filesystem::exists(base + ".mesh"));
   EXPECT_TRUE(std::filesystem::exists(base + ".sol"));
+  const Outcome medit = run("certify " + base + ".mesh --metric " + base + ".sol --rho0 3 --gamma0 1.5");
+  EXPECT_EQ(medit.exit_code, 0) << medit.out << medit.err;
+  ASSERT_EQ(run(field + ".json").exit_code, 0);
   const Outcome c = run("certify " + base + ".json --rho0 3 --gamma0 1.5");
   EXPECT_EQ(c.exit_code, 0) << c.out << c.err;
   EXPECT_NE(c.out.find("certified"), std::string::npos);
+  // The same mesh from both files: the same verdicts, line for line after the file name.
+  EXPECT_EQ(c.out.substr(c.out.find(':')), medit.out.substr(medit.out.find(':')));
   // Reverse the first triangle: no longer a triangulation.
   std::ifstream in(base + ".json");
   Json mesh = Json::parse(in);

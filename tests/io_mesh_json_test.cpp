@@ -93,7 +93,7 @@ TEST(SiteSet, TopLevelErrors) {
   EXPECT_ERROR(R"({"sites": []})", "t.json: sites: expected a non-empty array of sites");
   EXPECT_ERROR(R"({"sites": {}})", "t.json: sites: expected a non-empty array of sites");
   EXPECT_ERROR(R"({"sites": [{"x": 0, "y": 0, "metric": [1, 0, 1]}], "domian": []})",
-               "t.json: unknown key \"domian\" (expected sites, domain, segments, triangles)");
+               "t.json: unknown key \"domian\" (expected sites, domain, segments, edges, triangles)");
   EXPECT_ERROR(R"({"sites": [{"x": 0, "y": 0, "metric": [1, 0, 1]}], "sites": []})",
                "t.json: key \"sites\" appears twice");
 }

@@ -29,7 +29,7 @@ TEST(MeshCertifier, RadiusEdgeRatioAgainstTheClosedForm) {
   EXPECT_TRUE(certify_mesh(m, o).rho_violations.empty());
   o.rho0 = Rational(707, 1000);
   const CertifyReport r = certify_mesh(m, o);
-  EXPECT_EQ(r.rho_violations.size(), 12u);  // every triangle, in every vertex's (equal) metric
+  EXPECT_EQ(r.rho_violations.size(), 4u);  // every triangle (one witness each: bounded reports)
   EXPECT_NEAR(r.worst_rho, 0.70710678118, 1e-9);
 }
 
@@ -42,7 +42,7 @@ TEST(MeshCertifier, DistortionAgainstTheClosedForm) {
   EXPECT_TRUE(certify_mesh(m, o).gamma_violations.empty());
   o.gamma0 = Rational(199, 100);
   const CertifyReport r = certify_mesh(m, o);
-  EXPECT_EQ(r.gamma_violations.size(), 8u);  // two edges to the centre in each of the four triangles
+  EXPECT_EQ(r.gamma_violations.size(), 4u);  // each triangle has two edges to the centre: one witness each
   EXPECT_NEAR(r.worst_gamma, 2.0, 1e-12);
 }
 
@@ -60,7 +60,8 @@ TEST(MeshCertifier, ValidFanIsLocallyUniformAndTheSquareCentreIsATie) {
   const CertifyReport r = certify_mesh(sq, {});
   EXPECT_TRUE(r.valid_holds());
   EXPECT_TRUE(r.uniform_violations.empty());
-  EXPECT_EQ(r.uniform_ties.size(), 6u);  // each triangle, each of its vertices' metrics, the fourth corner
+  EXPECT_EQ(r.uniform_ties.size(), 2u);  // each triangle's circumcircle holds the fourth corner (one witness each)
+  for (const MeshWitness& w : r.uniform_ties) EXPECT_EQ(w.site, w.triangle == 0 ? 3 : 1);
 }
 
 // A quadrilateral split by its long diagonal: the other vertex is inside the circumcircle.

@@ -1,9 +1,13 @@
-// `anisocert certify MESH.json`: the exact mesh certifier (oracle/certify/mesh_certifier.hpp). Exit 0
-// when every requested check holds, 1 with witnesses when one fails, 2 for bad input.
+// `anisocert certify MESH [--metric FILE | --field NAME]`: the exact mesh certifier
+// (oracle/certify/mesh_certifier.hpp) on a mesh in any format of io/formats/registry.hpp. Exit 0
+// when every requested check holds, 1 with witnesses when one fails, 2 for bad input (nothing
+// written).
+#include "cli/field_source.hpp"
 #include "cli/output.hpp"
-#include "cli/reports/certify_report.hpp"
 #include "cli/usage_error.hpp"
-#include "io/mesh_json.hpp"
+#include "io/formats/registry.hpp"
+#include "io/reports/certify_report.hpp"
+#include "io/svg/certify_svg.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -13,32 +17,107 @@ namespace anisocert::cli {
 namespace {
 
 struct CertifyCommandOptions {
-  std::string input, json_path, rho0, gamma0;
-  std::vector<std::string> checks{"valid", "uniform"};
+  std::string input, format, metric, metric_format, field, json_path, svg_path;
+  std::vector<std::string> params;
+  io::BoundTexts bounds;
+  std::vector<std::string> length_range;
+  std::vector<std::string> checks{"valid", "uniform", "metric"};
+  bool planar_3d = false;
 };
 
-int run_certify(const CertifyCommandOptions& c) {
+oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
   oracle::CertifyOptions o;
-  o.valid = o.uniform = false;
+  o.valid = o.uniform = o.metric = false;
   for (const std::string& k : c.checks) {
     if (k == "valid") o.valid = true;
     else if (k == "uniform") o.uniform = true;
-    else throw UsageError("--checks: unknown check \"" + k + "\" (valid, uniform)");
+    else if (k == "metric") o.metric = true;
+    else throw UsageError("--checks: unknown check \"" + k + "\" (valid, uniform, metric)");
   }
-  if (!c.rho0.empty()) o.rho0 = parse_option("--rho0", c.rho0);
-  if (!c.gamma0.empty()) o.gamma0 = parse_option("--gamma0", c.gamma0);
+  const io::BoundTexts& b = c.bounds;
+  if (!b.rho0.empty()) o.rho0 = parse_option("--rho0", b.rho0);
+  if (!b.gamma0.empty()) o.gamma0 = parse_option("--gamma0", b.gamma0);
   if (o.rho0 && *o.rho0 <= 0) throw UsageError("--rho0 must be positive");
   if (o.gamma0 && *o.gamma0 < 1) throw UsageError("--gamma0 must be at least 1");
-  geometry::Mesh<Rational> mesh;
+  if (!c.length_range.empty()) {
+    c.bounds.length_lo = c.length_range[0], c.bounds.length_hi = c.length_range[1];
+    o.length_range = {parse_option("--length-range", c.length_range[0]), parse_option("--length-range", c.length_range[1])};
+    if (o.length_range->first < 0 || o.length_range->first > o.length_range->second)
+      throw UsageError("--length-range: expected 0 <= a <= b");
+  }
+  if (!b.min_quality.empty()) {
+    o.min_quality = parse_option("--min-quality", b.min_quality);
+    if (*o.min_quality < 0 || *o.min_quality > 1) throw UsageError("--min-quality must be in [0, 1]");
+  }
+  if (!b.min_angle.empty()) {
+    o.min_angle = parse_option("--min-angle", b.min_angle);
+    if (*o.min_angle <= 0 || *o.min_angle > 90) throw UsageError("--min-angle must be in (0, 90] degrees");
+  }
+  if ((o.length_range || o.min_quality || o.min_angle) && !o.metric)
+    throw UsageError("--length-range, --min-quality and --min-angle need the metric check (--checks ...,metric)");
+  return o;
+}
+
+// The metric at every vertex from --field: a background mesh exactly (P1, rational), a built-in
+// field at the vertices' nearest doubles (its double values taken as the rationals they are).
+std::vector<predicates::Sym2<Rational>> field_metrics(const CertifyCommandOptions& c, const geometry::Mesh<Rational>& mesh) {
+  const FieldSource source = field_source(c.field, c.params);
+  std::vector<predicates::Sym2<Rational>> metrics;
+  metrics.reserve(mesh.sites.size());
+  for (std::size_t i = 0; i < mesh.sites.size(); ++i) {
+    const auto& p = mesh.sites[i];
+    if (source.background) {
+      const auto m = source.background->metric_at(p);
+      if (!m) throw UsageError("--field " + c.field + ": vertex " + std::to_string(i) + " " + geometry::exact_text(p) +
+                               " lies outside the background mesh");
+      metrics.push_back(*m);
+    } else {
+      const auto m = source.field.at(p.x.convert_to<double>(), p.y.convert_to<double>());
+      try {
+        metrics.push_back({rational_from_double(m.m11), rational_from_double(m.m12), rational_from_double(m.m22)});
+      } catch (const NumberSyntaxError& e) {
+        throw UsageError("--field " + c.field + ": at vertex " + std::to_string(i) + ": " + e.what());
+      }
+    }
+  }
+  return metrics;
+}
+
+int run_certify(CertifyCommandOptions& c) {
+  const oracle::CertifyOptions o = certify_options(c);
+  if (!c.metric.empty() && !c.field.empty()) throw UsageError("--metric and --field: give one metric source");
+  io::MeshFile file;
   try {
-    mesh = io::read_triangle_mesh_file(c.input);
+    file = io::read_mesh_file(c.input, c.format, {c.planar_3d}, c.metric, c.metric_format);
+    if (!c.field.empty()) io::attach_metrics(file, field_metrics(c, file.mesh), "--field " + c.field);
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }
-  const CertifyVerdict v = certify_verdict(oracle::certify_mesh(mesh, o), o, mesh, c.rho0, c.gamma0);
-  if (!c.json_path.empty()) write_file_atomically(c.json_path, render(to_json(v)));
-  emit(full_text(v, c.input));
+  if (file.mesh.triangles.empty()) throw UsageError(c.input + ": the file has no triangles");
+  const oracle::CertifyReport report = oracle::certify_mesh(file.mesh, o);
+  const io::CertifyVerdict v = io::certify_verdict(report, o, file.mesh, c.bounds);
+  std::vector<OutputFile> files;
+  if (!c.json_path.empty()) files.push_back({c.json_path, render(io::to_json(v))});
+  if (!c.svg_path.empty()) files.push_back({c.svg_path, io::certify_svg(file.mesh, report, c.input + (v.holds ? ": certified" : ": not certified"))});
+  write_files_atomically(files);
+  emit(io::full_text(v, c.input));
   return v.holds ? 0 : 1;
+}
+
+std::string format_list() {
+  std::string s;
+  for (const auto& f : io::mesh_formats()) {
+    s += "  " + f.name + ":";
+    for (const auto& e : f.extensions) s += " " + e;
+    s += "  " + f.summary + "\n";
+  }
+  s += "Metric files (--metric):\n";
+  for (const auto& f : io::metric_formats()) {
+    s += "  " + f.name + ":";
+    for (const auto& e : f.extensions) s += " " + e;
+    s += "  " + f.summary + "\n";
+  }
+  return s;
 }
 
 }  // namespace
@@ -47,16 +126,32 @@ void add_certify(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<CertifyCommandOptions>();
   CLI::App* c = app.add_subcommand(
       "certify",
-      "Exact checks of a triangle mesh with per-vertex metrics (the site-set format plus \"triangles\": [[i, j, k], ...],\n"
-      "counter-clockwise; numbers are read exactly from their text): valid (a triangulation of the domain, every\n"
-      "segment a union of edges), locally uniform (every triangle at a vertex v has an empty circumellipse in M_v,\n"
-      "ties reported apart), and, when thresholds are given, the radius-edge ratio in each vertex's metric and the\n"
-      "distortion between the vertices of each triangle. Exit 0 all hold, 1 a check fails (witnesses), 2 bad input.");
-  c->add_option("mesh", o->input, "the mesh (JSON)")->required();
-  c->add_option("--checks", o->checks, "which of valid, uniform to run (default both)")->delimiter(',');
-  c->add_option("--rho0", o->rho0, "check radius-edge ratio <= this (exact rational)");
-  c->add_option("--gamma0", o->gamma0, "check distortion <= this (exact rational)");
+      "Exact checks of a triangle mesh in any of the formats below (numbers are read as the rationals their text denotes,\n"
+      "a binary double as the rational it is). Checks: valid (a triangulation of the domain — the file's boundary edges,\n"
+      "or the boundary of the union of its triangles —, no two vertices coincide, required edges are unions of edges);\n"
+      "locally uniform (every triangle at a vertex v has an empty circumellipse in M_v, ties reported apart); metric\n"
+      "(edge lengths in the endpoints' metrics, the share in [1/sqrt2, sqrt2], mean-ratio qualities, angles), with\n"
+      "bounds as verdicts; radius-edge ratio and distortion when thresholds are given. The metric: the file's own\n"
+      "(Gmsh $NodeData, JSON), --metric FILE, or --field. Each check's verdict stands on its own.\n"
+      "Exit 0 all hold, 1 a check fails (witnesses), 2 bad input (one line, nothing written).\nMesh formats (by extension, or --format):\n" +
+          format_list());
+  c->add_option("mesh", o->input, "the mesh file")->required();
+  c->add_option("--format", o->format, "the mesh format, when the extension does not tell");
+  c->add_option("--metric", o->metric, "per-vertex metrics in a separate file (.sol/.solb, .mtr)");
+  c->add_option("--metric-format", o->metric_format, "the metric file's format (medit, bamg)");
+  c->add_option("--field", o->field, std::string("a metric field instead: a built-in name (see refine --help) or\n") +
+                                         background_field_help);
+  c->add_option("--param", o->params, "a parameter of the built-in field, name=value (repeatable)");
+  c->add_flag("--planar-3d", o->planar_3d, "read a 3D Medit file whose every z is 0 as a 2D mesh");
+  c->add_option("--checks", o->checks, "which of valid, uniform, metric to run (default all)")->delimiter(',');
+  c->add_option("--rho0", o->bounds.rho0, "check radius-edge ratio <= this (exact rational)");
+  c->add_option("--gamma0", o->bounds.gamma0, "check distortion <= this (exact rational)");
+  c->add_option("--length-range", o->length_range, "check every metric edge length in [a, b] (e.g. 0.7071 1.4143)")
+      ->expected(2);
+  c->add_option("--min-quality", o->bounds.min_quality, "check every mean-ratio quality in the metrics >= q");
+  c->add_option("--min-angle", o->bounds.min_angle, "check every angle in its vertex's metric >= this many degrees");
   c->add_option("--json", o->json_path, "write the full report to this file");
+  c->add_option("--svg", o->svg_path, "write a picture: the mesh, failures coloured, histograms of lengths and qualities");
   c->callback([o, &exit_code] { exit_code = run_certify(*o); });
 }
 

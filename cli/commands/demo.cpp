@@ -4,7 +4,7 @@
 // certifier on its mesh.
 #include "cli/diagram_job.hpp"
 #include "cli/output.hpp"
-#include "cli/reports/certify_report.hpp"
+#include "io/reports/certify_report.hpp"
 #include "cli/reports/refine_report.hpp"
 #include "fields/registry.hpp"
 #include "io/svg/mesh_svg.hpp"
@@ -58,11 +58,12 @@ std::string refine_and_certify(const std::string& svg_path, bool quiet, std::vec
   oracle::CertifyOptions o;
   o.rho0 = rational_from_double(values["rho0"]), o.gamma0 = rational_from_double(values["gamma0"]);
   const geometry::Mesh<Rational> exact = geometry::exact(mesh);
-  const CertifyVerdict verdict =
-      certify_verdict(oracle::certify_mesh(exact, o), o, exact, as_printed(values["rho0"]), as_printed(values["gamma0"]));
+  io::BoundTexts bounds;
+  bounds.rho0 = as_printed(values["rho0"]), bounds.gamma0 = as_printed(values["gamma0"]);
+  const io::CertifyVerdict verdict = io::certify_verdict(oracle::certify_mesh(exact, o), o, exact, bounds);
   files.push_back({svg_path, io::mesh_svg(mesh, "star refiner, shock field: " + std::to_string(mesh.sites.size()) +
                                                     " vertices, " + (verdict.holds ? "certified" : "not certified"))});
-  return "refine: the unit square, field shock (h = 0.05, alpha = 3, delta = 0.6)\n" + report_text(run) + one_line(verdict) +
+  return "refine: the unit square, field shock (h = 0.05, alpha = 3, delta = 0.6)\n" + report_text(run) + io::one_line(verdict) +
          "  picture: " + svg_path + "\n";
 }
 

@@ -1,10 +1,12 @@
 // `anisocert refine --algo NAME`: a refiner of the registry (refiners/registry.hpp) on a domain and a
-// metric field (fields/registry.hpp); writes the mesh for `anisocert certify`, Medit .mesh/.sol and SVG.
+// metric field (cli/field_source.hpp: a built-in field or a background mesh); writes the mesh for
+// `anisocert certify`, Medit .mesh/.sol and SVG.
+#include "cli/field_source.hpp"
 #include "cli/output.hpp"
 #include "cli/reports/refine_report.hpp"
 #include "cli/usage_error.hpp"
 #include "fields/registry.hpp"
-#include "io/formats/medit.hpp"
+#include "io/formats/registry.hpp"
 #include "io/mesh_json.hpp"
 #include "io/svg/mesh_svg.hpp"
 
@@ -24,7 +26,7 @@ std::string names_of(const std::vector<std::string>& names) {
 }
 
 struct RefineOptions {
-  std::string algo = "star", domain = "square", field = "shock", output, svg, medit;
+  std::string algo = "star", domain = "square", field = "shock", output, output_format, svg;
   std::vector<std::string> params;
   std::map<std::string, double> values;            // every refiner parameter, defaults first
   std::map<std::string, CLI::Option*> options;    // their options, to tell which were given
@@ -49,18 +51,7 @@ int run_refine(const RefineOptions& o) {
       throw UsageError(e.what());
     }
   }
-  std::map<std::string, double> params;
-  for (const std::string& kv : o.params) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos) throw UsageError("--param \"" + kv + "\": expected name=value");
-    params[kv.substr(0, eq)] = parse_option("--param " + kv.substr(0, eq), kv.substr(eq + 1)).convert_to<double>();
-  }
-  fields::MetricField field;
-  try {
-    field = fields::make_field(o.field, params);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--field: ") + e.what());
-  }
+  const fields::MetricField field = field_source(o.field, o.params).field;
   const auto progress = progress_printer(o.quiet);
   refiners::Run run;
   try {
@@ -75,13 +66,19 @@ int run_refine(const RefineOptions& o) {
   }
   const geometry::Mesh<double>& m = run.result.mesh;
   std::vector<OutputFile> files;
-  if (!o.output.empty()) files.push_back({o.output, io::mesh_json(m)});
+  if (!o.output.empty()) {
+    io::MeshFile file;
+    file.mesh = geometry::exact(m);
+    file.mesh.edges = file.mesh.segments;  // the boundary subsegments, as every mesher's file declares them
+    try {
+      for (io::FileText& f : io::mesh_format_to_write(o.output, o.output_format).write(file, o.output))
+        files.push_back({std::move(f.path), std::move(f.content)});
+    } catch (const io::InputError& e) {
+      throw UsageError(e.what());
+    }
+  }
   if (!o.svg.empty())
     files.push_back({o.svg, io::mesh_svg(m, entry->name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices")});
-  if (!o.medit.empty()) {
-    files.push_back({o.medit + ".mesh", io::medit_mesh(m)});
-    files.push_back({o.medit + ".sol", io::medit_sol(m)});
-  }
   write_files_atomically(files);
   std::string text = "refine: domain " + o.domain + ", field " + o.field + "\n" + report_text(run);
   if (!o.output.empty()) text += "  mesh: " + o.output + " (check it with anisocert certify)\n";
@@ -101,6 +98,7 @@ std::string description() {
     for (const auto& [name, value] : f.defaults) o << sep << name << " = " << value, sep = ", ";
     o << ")\n";
   }
+  o << "  " << background_field_help << "\n";
   o << "Exit 0 when the refiner's output condition holds (star: all stars consistent), 1 when a budget or a stall\n"
        "stopped it (the mesh written is what it had), 2 bad input.";
   return o.str();
@@ -113,7 +111,7 @@ void add_refine(CLI::App& app, int& exit_code) {
   CLI::App* c = app.add_subcommand("refine", description());
   c->add_option("--algo", o->algo, "the refiner: " + names_of(refiners::refiner_names()))->capture_default_str();
   c->add_option("--domain", o->domain, "square, or a JSON file with a \"domain\" polygon")->capture_default_str();
-  c->add_option("--field", o->field, "the metric field: " + names_of(fields::field_names()))->capture_default_str();
+  c->add_option("--field", o->field, "the metric field: " + names_of(fields::field_names()) + " or background:MESH[:METRIC]")->capture_default_str();
   c->add_option("--param", o->params, "a field parameter name=value (repeatable)");
   for (const auto& entry : refiners::registered_refiners())
     for (const auto& spec : entry.parameters)
@@ -125,9 +123,11 @@ void add_refine(CLI::App& app, int& exit_code) {
   c->add_option("--max-vertices", o->budget.max_vertices, "vertex budget")->capture_default_str();
   c->add_option("--max-seconds", o->budget.max_seconds, "time budget")->capture_default_str();
   c->add_option("--seed", o->seed, "random seed of the picking regions")->capture_default_str();
-  c->add_option("-o,--output", o->output, "write the mesh (JSON for anisocert certify)");
+  c->add_option("-o,--output", o->output,
+                "write the mesh with its metrics, in the format of its extension (.json, .mesh/.meshb with .sol/.solb,\n"
+                ".msh Gmsh, .node/.ele/.poly; see certify --help)");
+  c->add_option("--output-format", o->output_format, "the format of --output when its extension does not tell (e.g. freefem)");
   c->add_option("--svg", o->svg, "write a picture of the mesh");
-  c->add_option("--medit", o->medit, "write BASE.mesh and BASE.sol (Medit, per-vertex metric)");
   c->add_flag("--quiet", o->quiet, "no progress lines");
   c->callback([o, &exit_code] { exit_code = run_refine(*o); });
 }

@@ -13,9 +13,10 @@ Canvas::Canvas(const geometry::Polygon<double>& frame, double margin) : x0_(1e30
   height_ = (y1_ - y0_ + 2 * margin_) * px_;
 }
 
-void Canvas::open(std::ostream& o, double footer) const {
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width_ << "\" height=\"" << height_ + footer << "\" viewBox=\"0 0 "
-    << width_ << " " << height_ + footer << "\">\n";
+void Canvas::open(std::ostream& o, double footer, double min_width) const {
+  const double w = std::max(width_, min_width);
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << height_ + footer << "\" viewBox=\"0 0 "
+    << w << " " << height_ + footer << "\">\n";
 }
 
 }  // namespace anisocert::io

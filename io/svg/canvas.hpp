@@ -16,8 +16,9 @@ class Canvas {
   double scale() const { return px_; }      // pixels per unit
   double size() const { return size_; }     // the box's larger side, in units
   double height() const { return height_; }  // without the footer
-  // <svg …> of the frame with a footer band of `footer` px (numbers in the stream's precision).
-  void open(std::ostream& o, double footer) const;
+  // <svg …> of the frame with a footer band of `footer` px, at least min_width px wide (numbers
+  // in the stream's precision).
+  void open(std::ostream& o, double footer, double min_width = 0) const;
 
  private:
   double x0_, x1_, y0_, y1_, size_, margin_, px_, width_, height_;

@@ -1,18 +1,15 @@
 #include "oracle/certify/mesh_certifier.hpp"
 
 #include "geometry/circumellipse.hpp"
-#include "oracle/certify/site_tree.hpp"
 #include "geometry/distortion_estimate.hpp"
 #include "geometry/ellipse_box.hpp"
-#include "numbers/filter_interval.hpp"
+#include "oracle/certify/site_tree.hpp"
 #include "predicates/distortion.hpp"
 #include "predicates/incircle.hpp"
-#include "predicates/orientation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 
 namespace anisocert::oracle {
 
@@ -21,66 +18,101 @@ using predicates::Sym2;
 
 namespace {
 
+std::pair<int, int> ordered(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+
 constexpr double inf = std::numeric_limits<double>::infinity();
 
+std::string name(const char* what, int i) { return std::string(what) + " " + std::to_string(i); }
 
-// The locally uniform check on one scalar type (double when every input is a double exactly).
-// An interval around a coordinate or metric entry: the double itself, or a rational enclosed.
-FilterInterval enclose(double s) { return FilterInterval(s); }
-FilterInterval enclose(const Rational& s) { return FilterInterval::around(s); }
-Point2<FilterInterval> enclose(const Point2<double>& p) { return {enclose(p.x), enclose(p.y)}; }
-Point2<FilterInterval> enclose(const Point2<Rational>& p) { return {enclose(p.x), enclose(p.y)}; }
-template <class S>
-Sym2<FilterInterval> enclose(const Sym2<S>& m) {
-  return {enclose(m.m11), enclose(m.m12), enclose(m.m22)};
+// sign of the in-circle test of site s against triangle t in the metric of vertex v (LU
+// Definition 2.1): positive strictly inside the M_v-circumellipse.
+Sign incircle(const EnclosedMesh& m, const std::array<int, 3>& t, int s, int v) {
+  const auto &a = m.site[t[0]], &b = m.site[t[1]], &c = m.site[t[2]], &d = m.site[s];
+  const auto& M = m.metric[v];
+  return predicates::interval_then_exact<predicates::InCircleKernel>(
+      std::array<FilterInterval, 11>{a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y, M.m11, M.m12, M.m22}, [&] {
+        const auto& p = m.mesh.sites;
+        const auto& n = m.mesh.metrics;
+        return std::array<Rational, 11>{p[t[0]].x, p[t[0]].y, p[t[1]].x, p[t[1]].y, p[t[2]].x, p[t[2]].y,
+                                        p[s].x,    p[s].y,    n[v].m11,  n[v].m12,  n[v].m22};
+      });
 }
 
-template <class S>
-void check_uniform(const std::vector<Point2<S>>& p, const std::vector<Sym2<S>>& M, const Mesh<Rational>& mesh,
-                   const SiteTree& tree, CertifyReport& r) {
-  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
-    const auto& tri = mesh.triangles[t];
-    if (predicates::orientation(p[tri[0]], p[tri[1]], p[tri[2]]) != Sign::positive) continue;  // `valid` reports it
-    for (int v : tri) {
-      const Sym2<S>& m = M[v];
-      // The M_v-circumellipse of the triangle, enclosed (geometry/circumellipse.hpp), and the box of
-      // the M_v-ball around it: the sites outside that box are outside the ellipse, the rest are
-      // decided by the exact in-circle predicate.
-      const Sym2<FilterInterval> mi = enclose(m);
+// LU §3–§4: every triangle's circumellipse in each of its vertices' metrics is empty of sites.
+// One witness per triangle: its search stops at the first site strictly inside.
+void check_uniform(const EnclosedMesh& m, const SiteTree& tree, CertifyReport& r) {
+  const auto& tris = m.mesh.triangles;
+  for (int t = 0; t < static_cast<int>(tris.size()); ++t) {
+    const auto& tri = tris[t];
+    if (m.orientation(tri[0], tri[1], tri[2]) != Sign::positive) {  // `valid` reports it
+      ++r.unmeasured;
+      continue;
+    }
+    bool violated = false, tied = false;
+    for (int i = 0; i < 3; ++i) {
+      const int v = tri[i];
+      // A metric equal to an earlier vertex's (a constant field) asks the same question again.
+      auto same = [&](int u) {
+        const Sym2<Rational>& p = m.mesh.metrics[u];
+        const Sym2<Rational>& q = m.mesh.metrics[v];
+        return p.m11 == q.m11 && p.m12 == q.m12 && p.m22 == q.m22;
+      };
+      if ((i > 0 && same(tri[0])) || (i > 1 && same(tri[1]))) continue;
+      // The M_v-circumellipse, enclosed (geometry/circumellipse.hpp), and the box of the M_v-ball
+      // around it: the sites outside that box are outside the ellipse, the rest are decided by the
+      // exact in-circle predicate.
+      const Sym2<FilterInterval>& mi = m.metric[v];
       const geometry::Circumellipse<FilterInterval> c =
-          geometry::circumellipse(enclose(p[tri[0]]), enclose(p[tri[1]]), enclose(p[tri[2]]), mi);
+          geometry::circumellipse(m.site[tri[0]], m.site[tri[1]], m.site[tri[2]], mi);
       const geometry::HalfWidths<FilterInterval> h = geometry::ellipse_half_widths(mi, c.r2);
       const double hx = h.hx.hi, hy = h.hy.hi;
-      const FilterInterval &cx = c.cx, &cy = c.cy;
-      const bool bounded = std::isfinite(cx.lo) && std::isfinite(cx.hi) && std::isfinite(cy.lo) && std::isfinite(cy.hi) &&
-                           std::isfinite(hx) && std::isfinite(hy);
-      const double qx0 = bounded ? cx.lo - hx : -inf, qx1 = bounded ? cx.hi + hx : inf;
-      const double qy0 = bounded ? cy.lo - hy : -inf, qy1 = bounded ? cy.hi + hy : inf;
+      const bool bounded = std::isfinite(c.cx.lo) && std::isfinite(c.cx.hi) && std::isfinite(c.cy.lo) &&
+                           std::isfinite(c.cy.hi) && std::isfinite(hx) && std::isfinite(hy);
+      const double qx0 = bounded ? c.cx.lo - hx : -inf, qx1 = bounded ? c.cx.hi + hx : inf;
+      const double qy0 = bounded ? c.cy.lo - hy : -inf, qy1 = bounded ? c.cy.hi + hy : inf;
       tree.visit(qx0, qx1, qy0, qy1, [&](int s) {
-        if (s == tri[0] || s == tri[1] || s == tri[2]) return;
+        if (s == tri[0] || s == tri[1] || s == tri[2]) return true;
         ++r.incircle_tests;
-        const Sign in = predicates::incircle(p[tri[0]], p[tri[1]], p[tri[2]], p[s], m);
-        if (in == Sign::negative) return;
-        MeshWitness w{v, t, s,
-                      "site " + std::to_string(s) + (in == Sign::positive ? " is strictly inside" : " is exactly on") +
-                          " the circumellipse of triangle " + std::to_string(t) + " in the metric of vertex " +
-                          std::to_string(v)};
-        (in == Sign::positive ? r.uniform_violations : r.uniform_ties).push_back(std::move(w));
+        const Sign in = incircle(m, tri, s, v);
+        if (in == Sign::negative || (in == Sign::zero && tied)) return true;
+        const bool strict = in == Sign::positive;
+        (strict ? r.uniform_violations : r.uniform_ties)
+            .push_back({v, t, s, name("site", s) + (strict ? " is strictly inside" : " is exactly on") +
+                                     " the circumellipse of " + name("triangle", t) + " in the metric of " + name("vertex", v)});
+        (strict ? violated : tied) = true;
+        return !strict;
       });
+      if (violated) break;
     }
   }
 }
 
-bool exactly_double(const Rational& q) {
-  const double d = q.convert_to<double>();
-  return std::isfinite(d) && Rational(d) == q;
-}
-
-// sign(x) for x = the segment parameter of p on [a, b] (exact), or nothing when p is off the line.
+// The segment parameter of p on [a, b] (exact), or nothing when p is off the line.
 std::optional<Rational> parameter_on(const Point2<Rational>& a, const Point2<Rational>& b, const Point2<Rational>& p) {
   if (predicates::orientation(a, b, p) != Sign::zero) return std::nullopt;
   const Rational len = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
   return ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / len;
+}
+
+// Every constrained segment is a union of edges: the sites on it, in order, are joined by edges.
+void check_segments(const EnclosedMesh& m, const SiteTree& tree, const std::vector<std::pair<int, int>>& edges,
+                    CertifyReport& r) {
+  const auto& mesh = m.mesh;
+  for (std::size_t k = 0; k < mesh.segments.size(); ++k) {
+    const int a = mesh.segments[k].first, b = mesh.segments[k].second;
+    std::vector<std::pair<Rational, int>> on;
+    const auto &pa = m.approx[a], &pb = m.approx[b];
+    tree.visit(std::min(pa.x, pb.x), std::max(pa.x, pb.x), std::min(pa.y, pb.y), std::max(pa.y, pb.y), [&](int s) {
+      if (const auto t = parameter_on(mesh.sites[a], mesh.sites[b], mesh.sites[s]); t && *t >= 0 && *t <= 1)
+        on.emplace_back(*t, s);
+    });
+    std::sort(on.begin(), on.end());
+    for (std::size_t i = 0; i + 1 < on.size(); ++i)
+      if (!std::binary_search(edges.begin(), edges.end(), ordered(on[i].second, on[i + 1].second)))
+        r.segment_failures.push_back("segment " + std::to_string(k) + " is not a union of edges: sites " +
+                                     std::to_string(on[i].second) + " and " + std::to_string(on[i + 1].second) +
+                                     " are consecutive on it but not joined by an edge");
+  }
 }
 
 // The radius-edge ratio² of a triangle in metric M, r² / (shortest edge)², all measured by M, with r
@@ -99,85 +131,69 @@ Sym2<double> nearest_doubles(const Sym2<Rational>& m) {
   return {m.m11.convert_to<double>(), m.m12.convert_to<double>(), m.m22.convert_to<double>()};
 }
 
+// ρ ≤ ρ₀ in every vertex's metric and τ ≤ γ₀ between the vertices of every triangle; one witness
+// per triangle for each.
+void check_quality_bounds(const EnclosedMesh& m, const CertifyOptions& o, CertifyReport& r) {
+  const auto& mesh = m.mesh;
+  const Rational rho2 = o.rho0 ? *o.rho0 * *o.rho0 : Rational(0), gamma2 = o.gamma0 ? *o.gamma0 * *o.gamma0 : Rational(0);
+  const double rho2_lo = enclose(rho2).lo;
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const auto& tri = mesh.triangles[t];
+    if (m.orientation(tri[0], tri[1], tri[2]) == Sign::zero) continue;  // flat: `valid` reports it
+    if (o.rho0)
+      for (int v : tri) {
+        const FilterInterval e = radius_edge_squared(std::array{m.site[tri[0]], m.site[tri[1]], m.site[tri[2]]}, m.metric[v]);
+        if (e.hi < rho2_lo) {  // decided by the enclosure: ≤ ρ₀²
+          const double approx = std::sqrt((e.lo + e.hi) / 2);
+          if (approx > r.worst_rho) r.worst_rho = approx, r.worst_rho_triangle = t, r.worst_rho_vertex = v;
+          continue;
+        }
+        const Rational q = radius_edge_squared(
+            std::array{mesh.sites[tri[0]], mesh.sites[tri[1]], mesh.sites[tri[2]]}, mesh.metrics[v]);
+        const double approx = std::sqrt(q.convert_to<double>());
+        if (approx > r.worst_rho) r.worst_rho = approx, r.worst_rho_triangle = t, r.worst_rho_vertex = v;
+        if (q > rho2) {
+          r.rho_violations.push_back({v, t, -1, name("triangle", t) + " has radius-edge ratio " + std::to_string(approx) +
+                                                    " > ρ₀ in the metric of " + name("vertex", v)});
+          break;
+        }
+      }
+    if (o.gamma0)
+      for (int i = 0; i < 3; ++i) {
+        const int a = tri[i], b = tri[(i + 1) % 3];
+        const double g = std::sqrt(geometry::tau_squared_estimate(nearest_doubles(mesh.metrics[a]), nearest_doubles(mesh.metrics[b])));
+        if (g > r.worst_gamma) r.worst_gamma = g, r.worst_gamma_triangle = t;
+        if (!predicates::tau_at_most(mesh.metrics[a], mesh.metrics[b], gamma2)) {
+          r.gamma_violations.push_back({a, t, b, name("triangle", t) + ": distortion between vertices " + std::to_string(a) +
+                                                     " and " + std::to_string(b) + " is " + std::to_string(g) + " > γ₀"});
+          break;
+        }
+      }
+  }
+}
+
 }  // namespace
 
 CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& o) {
   CertifyReport r;
-  std::vector<Point2<double>> approx;
-  for (const auto& p : mesh.sites) approx.push_back({p.x.convert_to<double>(), p.y.convert_to<double>()});
-  const SiteTree tree(approx);
+  const EnclosedMesh m(mesh);
+  const SiteTree tree(m.approx);
+  const CellList cells = triangle_cells(mesh.triangles);
+  const std::vector<std::pair<int, int>> edges = unique_edges(cells, mesh.sites.size());
   if (o.valid) {
-    std::vector<Cell> cells;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      cells.push_back({"triangle " + std::to_string(t), {mesh.triangles[t].begin(), mesh.triangles[t].end()}});
-    r.valid = check_triangulation(mesh.sites, mesh.domain, cells);
-    std::set<std::pair<int, int>> edges;
-    for (const auto& t : mesh.triangles)
-      for (int i = 0; i < 3; ++i) edges.insert(std::minmax(t[i], t[(i + 1) % 3]));
-    for (std::size_t k = 0; k < mesh.segments.size(); ++k) {
-      const int a = mesh.segments[k].first, b = mesh.segments[k].second;
-      std::vector<std::pair<Rational, int>> on;
-      const double xa = approx[a].x, xb = approx[b].x, ya = approx[a].y, yb = approx[b].y;
-      tree.visit(std::min(xa, xb), std::max(xa, xb), std::min(ya, yb), std::max(ya, yb), [&](int s) {
-        if (const auto t = parameter_on(mesh.sites[a], mesh.sites[b], mesh.sites[s]); t && *t >= 0 && *t <= 1)
-          on.emplace_back(*t, s);
-      });
-      std::sort(on.begin(), on.end());
-      for (std::size_t i = 0; i + 1 < on.size(); ++i)
-        if (!edges.count(std::minmax(on[i].second, on[i + 1].second)))
-          r.segment_failures.push_back("segment " + std::to_string(k) + " is not a union of edges: sites " +
-                                       std::to_string(on[i].second) + " and " + std::to_string(on[i + 1].second) +
-                                       " are consecutive on it but not joined by an edge");
-    }
+    r.valid = check_triangulation(m, cells);
+    check_segments(m, tree, edges, r);
   }
-  if (o.uniform) {
+  const bool metrics = mesh.metrics.size() == mesh.sites.size();
+  if (o.uniform && metrics) {
     r.uniform_checked = true;
-    bool doubles = true;
-    for (const auto& p : mesh.sites) doubles = doubles && exactly_double(p.x) && exactly_double(p.y);
-    for (const auto& m : mesh.metrics) doubles = doubles && exactly_double(m.m11) && exactly_double(m.m12) && exactly_double(m.m22);
-    if (doubles) {
-      std::vector<Sym2<double>> M;
-      for (const auto& m : mesh.metrics) M.push_back({m.m11.convert_to<double>(), m.m12.convert_to<double>(), m.m22.convert_to<double>()});
-      check_uniform<double>(approx, M, mesh, tree, r);
-    } else {
-      check_uniform<Rational>(mesh.sites, mesh.metrics, mesh, tree, r);
-    }
+    check_uniform(m, tree, r);
   }
-  if (o.rho0 || o.gamma0) {
-    const Rational rho2 = o.rho0 ? *o.rho0 * *o.rho0 : Rational(0), gamma2 = o.gamma0 ? *o.gamma0 * *o.gamma0 : Rational(0);
-    for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
-      const auto& tri = mesh.triangles[t];
-      const std::array<Point2<Rational>, 3> pts{mesh.sites[tri[0]], mesh.sites[tri[1]], mesh.sites[tri[2]]};
-      if (predicates::orientation(pts[0], pts[1], pts[2]) == Sign::zero) continue;  // flat: `valid` reports it
-      if (o.rho0)
-        for (int v : tri) {
-          const FilterInterval e =
-              radius_edge_squared(std::array{enclose(pts[0]), enclose(pts[1]), enclose(pts[2])}, enclose(mesh.metrics[v]));
-          const double hi = FilterInterval::around(rho2).lo;
-          if (e.hi < hi) {  // decided by the enclosure: ≤ ρ₀²
-            const double approx = std::sqrt((e.lo + e.hi) / 2);
-            if (approx > r.worst_rho) r.worst_rho = approx, r.worst_rho_triangle = t, r.worst_rho_vertex = v;
-            continue;
-          }
-          const Rational q = radius_edge_squared(pts, mesh.metrics[v]);
-          const double approx = std::sqrt(q.convert_to<double>());
-          if (approx > r.worst_rho) r.worst_rho = approx, r.worst_rho_triangle = t, r.worst_rho_vertex = v;
-          if (q > rho2)
-            r.rho_violations.push_back({v, t, -1, "triangle " + std::to_string(t) + " has radius-edge ratio " +
-                                                      std::to_string(approx) + " > ρ₀ in the metric of vertex " +
-                                                      std::to_string(v)});
-        }
-      if (o.gamma0)
-        for (int i = 0; i < 3; ++i) {
-          const int a = tri[i], b = tri[(i + 1) % 3];
-          const double g = std::sqrt(geometry::tau_squared_estimate(nearest_doubles(mesh.metrics[a]), nearest_doubles(mesh.metrics[b])));
-          if (g > r.worst_gamma) r.worst_gamma = g, r.worst_gamma_triangle = t;
-          if (!predicates::tau_at_most(mesh.metrics[a], mesh.metrics[b], gamma2))
-            r.gamma_violations.push_back({a, t, b, "triangle " + std::to_string(t) + ": distortion between vertices " +
-                                                       std::to_string(a) + " and " + std::to_string(b) + " is " +
-                                                       std::to_string(g) + " > γ₀"});
-        }
-    }
+  if ((o.rho0 || o.gamma0) && metrics) check_quality_bounds(m, o, r);
+  if (o.metric && metrics) {
+    r.lengths = check_lengths(m, edges, o.length_range);
+    r.quality = check_quality(m, o.min_quality);
+    r.angles = check_angles(m, o.min_angle);
   }
   return r;
 }

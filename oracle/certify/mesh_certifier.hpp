@@ -7,9 +7,14 @@
 //    Definition 2.1, the lifted in-circle test); sites exactly on it are ties, reported apart.
 //    Together with validity (closed fans) the triangles at v are then exactly v's star;
 //  - of a given quality: the radius-edge ratio of every triangle in each of its vertices' metrics
-//    at most ρ₀, and the distortion τ(M_a, M_b) of every pair of its vertices at most γ₀.
+//    at most ρ₀, and the distortion τ(M_a, M_b) of every pair of its vertices at most γ₀;
+//  - conforming to its metric (metric_checks.hpp): edge lengths, mean-ratio qualities and angles
+//    in the metrics, with optional bounds as verdicts.
+// Each check's verdict stands on its own: a triangle one check cannot measure (flat, clockwise) is
+// counted as such there, and the other checks still run on the rest.
 // Every decision is exact (filtered predicates, rational fall-backs); the worst values reported
 // next to the verdicts are double approximations.
+#include "oracle/certify/metric_checks.hpp"
 #include "oracle/certify/triangulation_check.hpp"
 #include "geometry/mesh.hpp"
 
@@ -24,32 +29,39 @@ using geometry::Mesh;
 
 struct CertifyOptions {
   bool valid = true, uniform = true;
+  bool metric = false;  // edge lengths, qualities and angles in the metrics (metric_checks.hpp)
   std::optional<Rational> rho0, gamma0;  // quality thresholds, checked when given
+  std::optional<std::pair<Rational, Rational>> length_range;   // verdict: every metric length in it
+  std::optional<Rational> min_quality;                          // verdict: every mean ratio >= it
+  std::optional<Rational> min_angle;                            // verdict: every angle >= it (degrees, in (0, 90])
 };
 
-// One offending (or tied) configuration: the vertex whose metric decides, the triangle, the site.
-struct MeshWitness {
-  int vertex = -1, triangle = -1, site = -1;
-  std::string text;
-};
-
+// Every list of witnesses holds at most one per triangle (per edge for lengths): memory stays
+// proportional to the mesh however bad it is, and a triangle's search stops at its first witness.
 struct CertifyReport {
   std::optional<TriangulationCheck> valid;
   std::vector<std::string> segment_failures;
   bool uniform_checked = false;
   std::vector<MeshWitness> uniform_violations, uniform_ties;
   std::size_t incircle_tests = 0;
+  std::size_t unmeasured = 0;                           // flat or clockwise triangles: no circumellipse
   double worst_rho = 0, worst_gamma = 0;                // approximations
   int worst_rho_triangle = -1, worst_rho_vertex = -1, worst_gamma_triangle = -1;
   std::vector<MeshWitness> rho_violations, gamma_violations;
+  std::optional<LengthReport> lengths;
+  std::optional<QualityReport> quality;
+  std::optional<AngleReport> angles;
 
   bool valid_holds() const { return valid && valid->is_triangulation && segment_failures.empty(); }
   bool holds(const CertifyOptions& o) const {
     return (!o.valid || valid_holds()) && (!o.uniform || uniform_violations.empty()) && rho_violations.empty() &&
-           gamma_violations.empty();
+           gamma_violations.empty() && (!lengths || lengths->range_violations.empty()) &&
+           (!quality || quality->violations.empty()) &&
+           (!angles || (angles->violations.empty() && angles->undecided_triangles.empty()));
   }
 };
 
+// The metric checks need mesh.metrics (one per site); the others only validity.
 CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& options);
 
 }  // namespace anisocert::oracle

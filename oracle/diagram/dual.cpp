@@ -40,10 +40,12 @@ void Builder::build_dual() {
 }
 
 void Builder::check_triangulation() {
-  std::vector<Cell> cells;
+  CellList cells;
+  std::vector<int> vertex;
   for (const auto* list : {&d_.dual_triangles, &d_.dual_polygons})
-    for (const DualCell& c : *list) cells.push_back({"the dual cell of vertex " + std::to_string(c.vertex), c.sites});
-  d_.dual_check = oracle::check_triangulation(d_.input.sites, d_.input.domain, cells);
+    for (const DualCell& c : *list) cells.add(c.sites.data(), c.sites.size()), vertex.push_back(c.vertex);
+  cells.name = [&vertex](std::size_t k) { return "the dual cell of vertex " + std::to_string(vertex[k]); };
+  d_.dual_check = oracle::check_triangulation(EnclosedMesh(d_.input), cells);
 }
 
 void Builder::check_theorem7() {

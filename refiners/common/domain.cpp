@@ -3,16 +3,10 @@
 #include "refiners/common/exact_split.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <limits>
 
 namespace anisocert::refiners::common {
-
-std::string shortest_decimal(double x) {
-  char buf[32];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
-}
 
 namespace {
 

@@ -4,6 +4,7 @@
 // and whose edges can each be halved exactly min_halvings times (exact_split.hpp: boundary
 // vertices must lie exactly on ∂Ω). And the exact questions a refiner asks of it.
 #include "geometry/polygon.hpp"
+#include "numbers/shortest_decimal.hpp"
 #include "refiners/common/errors.hpp"
 
 #include <string>
@@ -46,8 +47,5 @@ class Domain {
   Polygon<Rational> exact_;
   bool convex_;
 };
-
-// The shortest decimal that reads back as x.
-std::string shortest_decimal(double x);
 
 }  // namespace anisocert::refiners::common

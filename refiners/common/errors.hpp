@@ -1,5 +1,7 @@
 #pragma once
 // The bad inputs a refinement run can meet, each named in what() (the CLI turns them into exit 2).
+#include "fields/metric_field.hpp"
+
 #include <stdexcept>
 
 namespace anisocert::refiners::common {
@@ -9,10 +11,8 @@ struct DomainError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-// A metric field that is not finite and positive definite where a site is inserted: the field,
-// the point and the metric.
-struct FieldError : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
-};
+// A metric field that is not finite and positive definite where a site is inserted (the field,
+// the point and the metric), or that has no value where it is sampled (fields/metric_field.hpp).
+using FieldError = fields::FieldError;
 
 }  // namespace anisocert::refiners::common

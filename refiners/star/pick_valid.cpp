@@ -20,7 +20,7 @@ using predicates::Sym2;
 // counter-clockwise from x's nearest site and tested as they are found, so a forbidden point costs
 // only the triangles before the first hit.
 bool PickValid::forbidden(const Point2<double>& x, double r_tau, const std::vector<int>& cand) const {
-  if (cand.size() < 3) return false;
+  if (cand.size() < 3 || !domain_.contains(x)) return false;
   const auto& pts = sites_.points;
   const Sym2<double> M = sites_.field.at(x.x, x.y);
   auto d2 = [&](const Point2<double>& p, const Point2<double>& q) { return predicates::quadratic_form(M, p.x - q.x, p.y - q.y); };

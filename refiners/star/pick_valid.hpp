@@ -19,7 +19,8 @@ struct PickCounts {
 
 class PickValid {
  public:
-  PickValid(const common::Sites& sites, const RefineParameters& p) : sites_(sites), p_(p), rng_(p.seed) {}
+  PickValid(const common::Domain& domain, const common::Sites& sites, const RefineParameters& p)
+      : domain_(domain), sites_(sites), p_(p), rng_(p.seed) {}
 
   // A point of the picking region of the circumellipse c (in M) of the triangle (v, a, b); when
   // the region is below the resolution of doubles (non-finite), the triangle's centroid.
@@ -29,9 +30,12 @@ class PickValid {
 
  private:
   // Whether x would form a forbidden configuration with the sites `cand` (those within about
-  // 2 r_τ of the picking region, where x's new fan lies).
+  // 2 r_τ of the picking region, where x's new fan lies). Never for x outside Ω: it is not
+  // inserted (Insert_or_snap splits a subsegment instead), and the field need not be defined
+  // there (a background mesh that covers exactly Ω).
   bool forbidden(const predicates::Point2<double>& x, double r_tau, const std::vector<int>& cand) const;
 
+  const common::Domain& domain_;
   const common::Sites& sites_;
   const RefineParameters& p_;
   std::mt19937 rng_;

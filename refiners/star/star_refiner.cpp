@@ -28,7 +28,7 @@ class StarRefiner {
  public:
   StarRefiner(const common::Domain& domain, const fields::MetricField& field, const RefineParameters& p)
       : domain_(domain), p_(p), sites_(corner_sites(domain, field)), boundary_(domain, sites_),
-        stars_(domain, sites_, boundary_), pick_(sites_, p) {
+        stars_(domain, sites_, boundary_), pick_(domain, sites_, p) {
     for (std::size_t v = 0; v < domain.size(); ++v) stars_.add(0), queued_.push_back(false);
     for (int v = 0; v < static_cast<int>(domain.size()); ++v) stars_.recompute(v);
     for (int v = 0; v < static_cast<int>(domain.size()); ++v) enqueue(v);
@@ -143,14 +143,17 @@ class StarRefiner {
     const geometry::Circumellipse<double> c = geometry::circumellipse(x[v], x[act.a], x[act.b], M);
     const Point2<double> q = pick_.pick(c, M, v, act.a, act.b);
     const Point2<double> g{(x[v].x + x[act.a].x + x[act.b].x) / 3, (x[v].y + x[act.a].y + x[act.b].y) / 3};
-    if (const auto s = boundary_.snap(q, M, sites_.field.at(q.x, q.y), g)) {
+    // Outside Ω q is never inserted and the field need not be defined (a background mesh covering
+    // exactly Ω): M_v stands in for M_q, which there only chooses the subsegment to split.
+    const Sym2<double> Mq = domain_.contains(q) ? sites_.field.at(q.x, q.y) : M;
+    if (const auto s = boundary_.snap(q, M, Mq, g)) {
       split(*s);
       return;
     }
     if (!sites_.in({q.x, q.x, q.y, q.y}).empty()) {
       // The picking region is below the resolution of doubles there: stop rather than duplicate.
-      stalled_ = "refining a triangle at site " + std::to_string(v) + " near (" + common::shortest_decimal(q.x) + ", " +
-                 common::shortest_decimal(q.y) + ") picked an existing site: the mesh there is finer than doubles resolve (" +
+      stalled_ = "refining a triangle at site " + std::to_string(v) + " near (" + shortest_decimal(q.x) + ", " +
+                 shortest_decimal(q.y) + ") picked an existing site: the mesh there is finer than doubles resolve (" +
                  rule_name(act.rule) + ")";
       return;
     }

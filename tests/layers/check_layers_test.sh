@@ -9,7 +9,7 @@ trap 'rm -rf "$tmp"' EXIT
 failures=0
 
 tree() {  # a clean tree with one file per layer, each including what it may
-  rm -rf "$tmp/t" && mkdir -p "$tmp/t"/{numbers,theory,predicates,geometry,fields,oracle/algebraic,oracle/diagram,refiners/common,refiners/star,io,cli}
+  rm -rf "$tmp/t" && mkdir -p "$tmp/t"/{numbers,theory,predicates,geometry,fields,oracle/algebraic,oracle/diagram,refiners/common,refiners/star,io,cli,api}
   echo '#include "numbers/rational.hpp"' > "$tmp/t/theory/a.hpp"
   echo '#include "numbers/sign.hpp"' > "$tmp/t/predicates/a.hpp"
   echo '#include "predicates/a.hpp"' > "$tmp/t/geometry/a.hpp"
@@ -22,6 +22,8 @@ tree() {  # a clean tree with one file per layer, each including what it may
   echo '#include "oracle/diagram/a.hpp"' > "$tmp/t/io/a.cpp"
   echo '#include "refiners/registry.hpp"' > "$tmp/t/cli/a.cpp"
   echo '#include "io/a.hpp"' >> "$tmp/t/cli/a.cpp"
+  echo '#include "io/reports/a.hpp"' > "$tmp/t/api/a.cpp"
+  echo '#include "oracle/certify/a.hpp"' >> "$tmp/t/api/a.cpp"
 }
 
 expect() {  # expect WHAT EXIT FILE INCLUDE [MESSAGE-FRAGMENT]
@@ -53,14 +55,20 @@ expect "relative includes are refused" 1 geometry/a.hpp ../fields/a.hpp "relativ
 expect "cli/ may include every layer" 0 cli/a.cpp oracle/certify/c.hpp
 expect "a refiner whose name has digits is a refiner too" 1 refiners/star/a.cpp refiners/ls2/a.hpp "refiners/star may not include refiners/ls2/"
 expect "refiners/common/ may not include the registry (every refiner)" 1 refiners/common/a.hpp refiners/registry.hpp "refiners/common may not include refiners/"
+expect "api/ may include fields/" 0 api/a.cpp fields/a.hpp
+expect "api/ may not include refiners/" 1 api/a.cpp refiners/registry.hpp "api/ may not include refiners/"
+expect "api/ may not include cli/" 1 api/a.cpp cli/a.hpp "api/ may not include cli/"
+expect "cli/ does not use api/" 1 cli/a.cpp api/anisocert.hpp "cli/ may not include api/"
 expect "an .ipp file is checked too" 1 refiners/star/a.ipp oracle/diagram/a.hpp "refiners/ may not include oracle/"
 
 angled() {  # an angle-bracket include of a project layer is a project include
   tree
   echo '#include <oracle/diagram/a.hpp>' >> "$tmp/t/refiners/star/a.cpp"
   echo '#include <vector>' >> "$tmp/t/refiners/star/a.cpp"
+  echo '#include <numbers>' >> "$tmp/t/refiners/star/a.cpp"   # C++20's, not the layer
   out=$(bash "$check" "$tmp/t" 2>&1); got=$?
-  if [ "$got" = 1 ] && grep -qF "refiners/ may not include oracle/" <<<"$out" && ! grep -qF "vector" <<<"$out"; then
+  if [ "$got" = 1 ] && grep -qF "refiners/ may not include oracle/" <<<"$out" && ! grep -qF "vector" <<<"$out" &&
+     ! grep -qF "numbers" <<<"$out"; then
     echo "ok: angle-bracket includes of a layer are checked, system headers are not"
   else
     echo "FAIL: angle-bracket includes: exit $got; output: $out"

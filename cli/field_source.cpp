@@ -1,0 +1,61 @@
+#include "cli/field_source.hpp"
+
+#include "cli/output.hpp"
+#include "cli/usage_error.hpp"
+#include "fields/registry.hpp"
+#include "io/formats/registry.hpp"
+
+namespace anisocert::cli {
+namespace {
+
+constexpr std::string_view background_prefix = "background:";
+
+// The --param values, "name=value" each, exactly parsed then rounded to doubles (the fields' type).
+fields::Parameters parameters_of(const std::vector<std::string>& params) {
+  fields::Parameters p;
+  for (const std::string& kv : params) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos) throw UsageError("--param \"" + kv + "\": expected name=value");
+    p[kv.substr(0, eq)] = parse_option("--param " + kv.substr(0, eq), kv.substr(eq + 1)).convert_to<double>();
+  }
+  return p;
+}
+
+// MESH[:METRIC] after "background:".
+FieldSource background_source(const std::string& text) {
+  const std::string spec = text.substr(background_prefix.size());
+  const auto colon = spec.find(':');
+  const std::string mesh_path = spec.substr(0, colon), metric_path = colon == std::string::npos ? "" : spec.substr(colon + 1);
+  if (mesh_path.empty() || (colon != std::string::npos && metric_path.empty()))
+    throw UsageError("--field \"" + text + "\": expected background:MESH or background:MESH:METRIC");
+  io::MeshFile file;
+  try {
+    file = io::read_mesh_file(mesh_path, "", {}, metric_path);
+  } catch (const io::InputError& e) {
+    throw UsageError(e.what());
+  }
+  if (file.mesh.metrics.empty()) throw UsageError(mesh_path + ": background mesh has no metric (give MESH:METRIC)");
+  try {
+    auto mesh = std::make_shared<const fields::BackgroundMesh>(file.mesh);
+    return {fields::background_field(mesh, text), mesh};
+  } catch (const fields::BackgroundMeshError& e) {
+    throw UsageError(mesh_path + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+FieldSource field_source(const std::string& text, const std::vector<std::string>& params) {
+  const fields::Parameters given = parameters_of(params);
+  if (text.starts_with(background_prefix)) {
+    if (!given.empty()) throw UsageError("--param: a background field has no parameters");
+    return background_source(text);
+  }
+  try {
+    return {fields::make_field(text, given), nullptr};
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--field: ") + e.what());
+  }
+}
+
+}  // namespace anisocert::cli

@@ -1,0 +1,29 @@
+#pragma once
+// What `--field TEXT` and its `--param name=value` options name, read in one place for every
+// command that takes a field: a built-in field (fields/registry.hpp) with its parameters, or a
+// background mesh `background:MESH[:METRIC]` (fields/background.hpp): MESH in any format of
+// io/formats/registry.hpp (MESH itself holds no ':'), its metrics from METRIC when given, else
+// its own.
+#include "fields/background.hpp"
+#include "fields/metric_field.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace anisocert::cli {
+
+struct FieldSource {
+  fields::MetricField field;                                 // what the refiners sample, in doubles
+  std::shared_ptr<const fields::BackgroundMesh> background;  // background:…, for exact values; null otherwise
+};
+
+// For --help: the background form and what it means.
+inline constexpr const char* background_field_help =
+    "background:MESH[:METRIC]: the metrics of a background mesh's vertices, interpolated P1 (linearly per component) over\n"
+    "    its triangles; MESH in any mesh format, METRIC a metric file (else the mesh's own metrics)";
+
+// Throws UsageError naming the option, the file or the point, and what is wrong.
+FieldSource field_source(const std::string& text, const std::vector<std::string>& params);
+
+}  // namespace anisocert::cli

@@ -1,0 +1,41 @@
+#include "io/formats/mesh_file.hpp"
+
+#include <cmath>
+
+namespace anisocert::io {
+
+void set_constrained_segments(MeshFile& f) {
+  f.mesh.segments.clear();
+  for (const std::vector<int>* list : {&f.required_edges, &f.ridges})
+    for (int e : *list) f.mesh.segments.push_back(f.mesh.edges.at(e));
+}
+
+void attach_metrics(MeshFile& f, std::vector<predicates::Sym2<Rational>> metrics, const std::string& source) {
+  if (metrics.size() != f.mesh.sites.size())
+    throw InputError(source + ": " + std::to_string(metrics.size()) + " metrics for a mesh of " +
+                     std::to_string(f.mesh.sites.size()) + " vertices");
+  f.mesh.metrics = std::move(metrics);
+}
+
+bool positive_definite(const predicates::Sym2<Rational>& m) { return m.m11 > 0 && m.m11 * m.m22 - m.m12 * m.m12 > 0; }
+
+predicates::Sym2<Rational> metric_of_size(const Rational& h) {
+  const Rational inv = 1 / (h * h);
+  return {inv, 0, inv};
+}
+
+std::string decimal_text(const Rational& q, const std::string& what) {
+  std::string s = to_exact_string(q);
+  if (s.find('/') != std::string::npos)
+    throw InputError(what + " = " + s + " has no finite decimal expansion: the text format cannot hold it exactly");
+  return s;
+}
+
+double exact_double(const Rational& q, const std::string& what) {
+  const double d = q.convert_to<double>();
+  if (!std::isfinite(d) || Rational(d) != q)
+    throw InputError(what + " = " + to_exact_string(q) + " is not a double: the binary format cannot hold it exactly");
+  return d;
+}
+
+}  // namespace anisocert::io

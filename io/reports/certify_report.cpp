@@ -1,0 +1,172 @@
+#include "io/reports/certify_report.hpp"
+
+#include "io/reports/printed.hpp"
+
+#include <sstream>
+
+namespace anisocert::io {
+namespace {
+
+ReportJson witnesses_json(const std::vector<oracle::MeshWitness>& ws) {
+  ReportJson out = ReportJson::array();
+  for (const auto& w : ws) out.push_back({{"vertex", w.vertex}, {"triangle", w.triangle}, {"site", w.site}, {"text", w.text}});
+  return out;
+}
+
+std::vector<std::string> texts(const std::vector<oracle::MeshWitness>& ws) {
+  std::vector<std::string> out;
+  for (const auto& w : ws) out.push_back(w.text);
+  return out;
+}
+
+// An enclosure to 10 significant digits, its ends rounded outward in print.
+std::string enclosure_text(const FilterInterval& q) { return "[" + outward(q.lo, false) + ", " + outward(q.hi, true) + "]"; }
+ReportJson enclosure_json(const FilterInterval& q) { return ReportJson::array({q.lo, q.hi}); }
+
+std::string percent(std::size_t k, std::size_t n) {
+  return n == 0 ? "0%" : as_printed(100.0 * static_cast<double>(k) / static_cast<double>(n)) + "%";
+}
+
+const char* verdict(const CheckReport& c) { return !c.is_verdict ? "measured" : c.holds ? "holds" : "FAILS"; }
+
+void add_validity(const oracle::CertifyReport& r, CertifyVerdict& v) {
+  const oracle::TriangulationCheck& t = *r.valid;
+  const std::string more = t.failure_count > t.failures.size()
+                               ? " (" + std::to_string(t.failure_count) + " failures, the first " +
+                                     std::to_string(t.failures.size()) + " described)"
+                               : "";
+  v.checks.push_back({"valid", "valid (a triangulation of the domain, segments are unions of edges)", "valid",
+                      r.valid_holds(), true, more, "", {t.failures, r.segment_failures},
+                      {{"holds", r.valid_holds()}, {"checks_run", t.checks_run}, {"failure_count", t.failure_count},
+                       {"failures", t.failures}, {"bad_triangles", t.bad_cells}, {"bad_edges", t.bad_edges},
+                       {"segment_failures", r.segment_failures}}});
+}
+
+void add_uniform(const oracle::CertifyReport& r, CertifyVerdict& v) {
+  const bool holds = r.uniform_violations.empty();
+  const std::string unmeasured =
+      r.unmeasured ? ", " + std::to_string(r.unmeasured) + " flat or clockwise triangles cannot be checked" : "";
+  v.checks.push_back({"locally_uniform", "locally uniform (every triangle at v has an empty M_v-circumellipse)",
+                      "locally uniform", holds, true,
+                      " (" + std::to_string(r.incircle_tests) + " exact in-circle tests, " +
+                          std::to_string(r.uniform_ties.size()) + " cocircular ties" + unmeasured + ")",
+                      " (" + std::to_string(r.uniform_ties.size()) + " ties)", {texts(r.uniform_violations)},
+                      {{"holds", holds}, {"incircle_tests", r.incircle_tests}, {"unmeasured_triangles", r.unmeasured},
+                       {"violations", witnesses_json(r.uniform_violations)}, {"ties", witnesses_json(r.uniform_ties)}}});
+}
+
+void add_lengths(const oracle::LengthReport& l, const BoundTexts& b, CertifyVerdict& v) {
+  const bool bounded = !b.length_lo.empty();
+  const std::string range = "[" + b.length_lo + ", " + b.length_hi + "]";
+  v.checks.push_back(
+      {"lengths",
+       bounded ? "every edge length in its endpoints' metrics within " + range : "edge lengths in their endpoints' metrics",
+       bounded ? "lengths in " + range : "lengths", l.range_violations.empty(), bounded,
+       " (" + percent(l.unit_edges, l.edges) + " of " + std::to_string(l.edges) +
+           " edges have both lengths in [1/√2, √2]; shortest ≈ " + as_printed(l.shortest) + ", longest ≈ " +
+           as_printed(l.longest) + ")",
+       " (" + percent(l.unit_edges, l.edges) + " unit)", {texts(l.range_violations)},
+       {{"range", bounded ? ReportJson::array({b.length_lo, b.length_hi}) : ReportJson(nullptr)}, {"holds", l.range_violations.empty()},
+        {"edges", l.edges}, {"unit_edges", l.unit_edges}, {"shortest", l.shortest}, {"longest", l.longest},
+        {"shortest_edge", l.shortest_edge}, {"longest_edge", l.longest_edge},
+        {"violations", witnesses_json(l.range_violations)}}});
+}
+
+void add_quality(const oracle::QualityReport& q, const BoundTexts& b, CertifyVerdict& v) {
+  const bool bounded = !b.min_quality.empty();
+  std::string median;
+  ReportJson qj = ReportJson::array();
+  for (const auto& [p, e] : q.quantiles) {
+    if (p == 0.5) median = ", median ∈ " + enclosure_text(e);
+    qj.push_back({{"p", p}, {"enclosure", enclosure_json(e)}});
+  }
+  const std::string undecided = q.undecided ? ", " + std::to_string(q.undecided) + " flat or clockwise triangles not measured" : "";
+  v.checks.push_back(
+      {"quality", bounded ? "mean-ratio quality >= " + b.min_quality + " in each vertex's metric" : "mean-ratio quality in the metrics",
+       bounded ? "quality >= " + b.min_quality : "quality", q.violations.empty(), bounded,
+       " (least ∈ " + enclosure_text(q.worst) + " at triangle " + std::to_string(q.worst_triangle) + median + undecided + ")",
+       "", {texts(q.violations)},
+       {{"threshold", bounded ? ReportJson(b.min_quality) : ReportJson(nullptr)}, {"holds", q.violations.empty()},
+        {"measured", q.measured}, {"unmeasured", q.undecided}, {"least", enclosure_json(q.worst)},
+        {"least_triangle", q.worst_triangle}, {"quantiles", qj}, {"violations", witnesses_json(q.violations)}}});
+}
+
+void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdict& v) {
+  const bool bounded = !b.min_angle.empty();
+  const bool holds = a.violations.empty() && a.undecided_triangles.empty();
+  const std::string undecided =
+      a.undecided_triangles.empty() ? "" : ", " + std::to_string(a.undecided_triangles.size()) + " triangles undecided at 8192 bits";
+  v.checks.push_back({"angles", bounded ? "every angle >= " + b.min_angle + "° in its vertex's metric" : "angles in the vertices' metrics",
+                      bounded ? "angles >= " + b.min_angle + "°" : "angles", holds, bounded,
+                      " (smallest ≈ " + as_printed(a.smallest) + "°, triangle " + std::to_string(a.smallest_triangle) + undecided + ")",
+                      "", {texts(a.violations)},
+                      {{"threshold_degrees", bounded ? ReportJson(b.min_angle) : ReportJson(nullptr)}, {"holds", holds},
+                       {"measured", a.measured}, {"unmeasured", a.undecided}, {"smallest_degrees", a.smallest},
+                       {"smallest_triangle", a.smallest_triangle}, {"undecided_triangles", a.undecided_triangles},
+                       {"violations", witnesses_json(a.violations)}}});
+}
+
+}  // namespace
+
+CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::CertifyOptions& o,
+                               const geometry::Mesh<Rational>& mesh, const BoundTexts& b) {
+  CertifyVerdict v;
+  v.vertices = mesh.sites.size(), v.triangles = mesh.triangles.size(), v.holds = r.holds(o);
+  v.has_metrics = mesh.metrics.size() == mesh.sites.size();
+  if (r.valid) add_validity(r, v);
+  if (r.uniform_checked) add_uniform(r, v);
+  if (o.rho0 && v.has_metrics) {
+    const bool holds = r.rho_violations.empty();
+    v.checks.push_back({"radius_edge", "radius-edge ratio ≤ " + b.rho0 + " in each vertex's metric", "radius-edge ≤ " + b.rho0,
+                        holds, true,
+                        " (worst ≈ " + as_printed(r.worst_rho) + ", triangle " + std::to_string(r.worst_rho_triangle) + ", vertex " +
+                            std::to_string(r.worst_rho_vertex) + ")",
+                        "", {texts(r.rho_violations)},
+                        {{"threshold", b.rho0}, {"holds", holds}, {"worst", r.worst_rho},
+                         {"worst_triangle", r.worst_rho_triangle}, {"worst_vertex", r.worst_rho_vertex},
+                         {"violations", witnesses_json(r.rho_violations)}}});
+  }
+  if (o.gamma0 && v.has_metrics) {
+    const bool holds = r.gamma_violations.empty();
+    v.checks.push_back({"distortion", "distortion ≤ " + b.gamma0 + " between the vertices of each triangle",
+                        "distortion ≤ " + b.gamma0, holds, true,
+                        " (worst ≈ " + as_printed(r.worst_gamma) + ", triangle " + std::to_string(r.worst_gamma_triangle) + ")", "",
+                        {texts(r.gamma_violations)},
+                        {{"threshold", b.gamma0}, {"holds", holds}, {"worst", r.worst_gamma},
+                         {"worst_triangle", r.worst_gamma_triangle}, {"violations", witnesses_json(r.gamma_violations)}}});
+  }
+  if (r.lengths) add_lengths(*r.lengths, b, v);
+  if (r.quality) add_quality(*r.quality, b, v);
+  if (r.angles) add_angles(*r.angles, b, v);
+  return v;
+}
+
+std::string full_text(const CertifyVerdict& v, const std::string& input) {
+  std::ostringstream o;
+  o << input << ": " << v.vertices << " vertices, " << v.triangles << " triangles\n";
+  for (const CheckReport& c : v.checks) {
+    o << "  " << c.title << ": " << verdict(c) << c.detail << "\n";
+    for (const auto& lines : c.witnesses) {
+      for (std::size_t i = 0; i < lines.size() && i < 3; ++i) o << "    " << lines[i] << "\n";
+      if (lines.size() > 3) o << "    … and " << lines.size() - 3 << " more\n";
+    }
+  }
+  if (!v.has_metrics) o << "  no metric: only validity was checked (the other checks need a metric at every vertex)\n";
+  o << (v.holds ? "certified\n" : "not certified\n");
+  return o.str();
+}
+
+std::string one_line(const CertifyVerdict& v) {
+  std::string s = "certify (exact): ";
+  for (std::size_t i = 0; i < v.checks.size(); ++i)
+    s += (i ? ", " : "") + v.checks[i].short_title + " " + verdict(v.checks[i]) + v.checks[i].short_detail;
+  return s + ": " + (v.holds ? "certified" : "NOT certified") + "\n";
+}
+
+ReportJson to_json(const CertifyVerdict& v) {
+  ReportJson j{{"holds", v.holds}, {"vertices", v.vertices}, {"triangles", v.triangles}, {"has_metrics", v.has_metrics}};
+  for (const CheckReport& c : v.checks) j[c.key] = c.json;
+  return j;
+}
+
+}  // namespace anisocert::io

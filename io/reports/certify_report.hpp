@@ -1,0 +1,47 @@
+#pragma once
+// The certifier's verdict as one report, built once from oracle::CertifyReport and rendered three
+// ways: the full text of `anisocert certify`, its --json file (docs/cli.md documents every field),
+// and the demo's one line. Also what the API's Certificate renders (api/anisocert.hpp).
+#include "oracle/certify/mesh_certifier.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace anisocert::io {
+
+using ReportJson = nlohmann::ordered_json;
+
+// One check that ran: its JSON key and object, its title in the full text and in the one line,
+// the verdict (or none: a measurement), what follows it in each (" (…)"), and lists of witnesses
+// (text shows the first three of each).
+struct CheckReport {
+  std::string key, title, short_title;
+  bool holds = true;
+  bool is_verdict = true;   // false: statistics only, no bound was given
+  std::string detail, short_detail;
+  std::vector<std::vector<std::string>> witnesses;
+  ReportJson json;
+};
+
+struct CertifyVerdict {
+  std::size_t vertices = 0, triangles = 0;
+  bool has_metrics = true;
+  bool holds = false;
+  std::vector<CheckReport> checks;
+};
+
+// The bounds as the user gave them (shown in titles and JSON); empty when not given.
+struct BoundTexts {
+  std::string rho0, gamma0, length_lo, length_hi, min_quality, min_angle;
+};
+
+CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::CertifyOptions& o,
+                               const geometry::Mesh<Rational>& mesh, const BoundTexts& bounds);
+
+std::string full_text(const CertifyVerdict& v, const std::string& input);
+std::string one_line(const CertifyVerdict& v);
+ReportJson to_json(const CertifyVerdict& v);
+
+}  // namespace anisocert::io

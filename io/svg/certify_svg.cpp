@@ -1,0 +1,102 @@
+#include "io/svg/certify_svg.hpp"
+
+#include "io/reports/printed.hpp"
+#include "io/svg/canvas.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace anisocert::io {
+namespace {
+
+// A histogram of values in bins over [lo, hi] (values outside go to the end bins), bars scaled to
+// the tallest, at (x, y),
+// w × h px, with a shaded band [band_lo, band_hi] and tick labels from `label`.
+template <class Label>
+void histogram(std::ostream& o, const std::vector<double>& values, double lo, double hi, int bins, double x, double y, double w,
+               double h, double band_lo, double band_hi, const std::string& title, Label label) {
+  std::vector<std::size_t> count(bins, 0);
+  for (double v : values) {
+    if (!std::isfinite(v)) continue;
+    const int b = static_cast<int>(std::floor((v - lo) / (hi - lo) * bins));
+    ++count[std::clamp(b, 0, bins - 1)];
+  }
+  const std::size_t top = std::max<std::size_t>(1, *std::max_element(count.begin(), count.end()));
+  auto X = [&](double v) { return x + (v - lo) / (hi - lo) * w; };
+  o << "<g font-family=\"sans-serif\" font-size=\"10\">\n";
+  if (band_hi > band_lo)
+    o << "<rect x=\"" << X(band_lo) << "\" y=\"" << y << "\" width=\"" << X(band_hi) - X(band_lo) << "\" height=\"" << h
+      << "\" fill=\"#e3f2e1\"/>\n";
+  for (int b = 0; b < bins; ++b) {
+    const double bh = h * static_cast<double>(count[b]) / static_cast<double>(top);
+    o << "<rect x=\"" << x + w * b / bins << "\" y=\"" << y + h - bh << "\" width=\"" << w / bins * 0.9 << "\" height=\"" << bh
+      << "\" fill=\"#1f4e9c\"/>\n";
+  }
+  o << "<line x1=\"" << x << "\" y1=\"" << y + h << "\" x2=\"" << x + w << "\" y2=\"" << y + h << "\" stroke=\"black\"/>\n";
+  for (int k = 0; k <= 4; ++k) {
+    const double v = lo + (hi - lo) * k / 4;
+    o << "<text x=\"" << X(v) << "\" y=\"" << y + h + 12 << "\" text-anchor=\"middle\">" << label(v) << "</text>\n";
+  }
+  o << "<text x=\"" << x << "\" y=\"" << y - 6 << "\" font-size=\"11\">" << title << " (" << values.size()
+    << ")</text>\n</g>\n";
+}
+
+void triangle_path(std::ostream& o, const Canvas& c, const std::vector<predicates::Point2<double>>& p,
+                   const std::array<int, 3>& t) {
+  o << "M" << c.X(p[t[0]].x) << " " << c.Y(p[t[0]].y);
+  for (int i : {1, 2}) o << " L" << c.X(p[t[i]].x) << " " << c.Y(p[t[i]].y);
+  o << " Z";
+}
+
+}  // namespace
+
+std::string certify_svg(const geometry::Mesh<Rational>& mesh, const oracle::CertifyReport& r, const std::string& caption) {
+  std::vector<predicates::Point2<double>> p;
+  for (const auto& s : mesh.sites) p.push_back({s.x.convert_to<double>(), s.y.convert_to<double>()});
+  geometry::Polygon<double> frame;
+  for (const auto& q : p) frame.push_back(q);
+  const Canvas c(frame, 0.03);
+  constexpr double footer = 190, width = 660;
+  std::ostringstream o;
+  o.precision(6);
+  c.open(o, footer, width);
+  o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<path fill=\"#eef3fb\" stroke=\"#1f4e9c\" stroke-width=\"0.3\" d=\"";
+  for (const auto& t : mesh.triangles) triangle_path(o, c, p, t);
+  o << "\"/>\n";
+  // Failing triangles, once each.
+  std::vector<bool> bad(mesh.triangles.size(), false);
+  if (r.valid)
+    for (int t : r.valid->bad_cells) bad[t] = true;
+  for (const auto* list : {&r.uniform_violations, &r.rho_violations, &r.gamma_violations})
+    for (const auto& w : *list) bad[w.triangle] = true;
+  if (r.quality)
+    for (const auto& w : r.quality->violations) bad[w.triangle] = true;
+  if (r.angles)
+    for (const auto& w : r.angles->violations) bad[w.triangle] = true;
+  o << "<path fill=\"#e04030\" fill-opacity=\"0.6\" stroke=\"#a01010\" stroke-width=\"0.4\" d=\"";
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (bad[t]) triangle_path(o, c, p, mesh.triangles[t]);
+  o << "\"/>\n<path fill=\"none\" stroke=\"#ff8c00\" stroke-width=\"2\" d=\"";
+  std::vector<std::pair<int, int>> edges;
+  if (r.valid) edges = r.valid->bad_edges;
+  if (r.lengths)
+    for (const auto& w : r.lengths->range_violations) edges.emplace_back(w.vertex, w.site);
+  for (const auto& [a, b] : edges) o << "M" << c.X(p[a].x) << " " << c.Y(p[a].y) << " L" << c.X(p[b].x) << " " << c.Y(p[b].y) << " ";
+  o << "\"/>\n";
+  const double y = c.height() + 40;
+  if (r.lengths) {
+    std::vector<double> log_lengths;
+    for (double l : r.lengths->lengths) log_lengths.push_back(l > 0 ? std::log2(l) : -INFINITY);
+    histogram(o, log_lengths, -3, 3, 48, 20, y, 290, 100, -0.5, 0.5, "metric edge lengths, unit band shaded",
+              [](double v) { return as_printed(std::exp2(v)); });
+  }
+  if (r.quality)
+    histogram(o, r.quality->qualities, 0, 1, 40, 350, y, 290, 100, 0, 0, "mean-ratio quality",
+              [](double v) { return as_printed(v); });
+  o << "<text x=\"8\" y=\"" << c.height() + footer - 10 << "\" font-family=\"sans-serif\" font-size=\"12\">" << caption
+    << ": failing triangles in red, failing edges in orange</text>\n</svg>\n";
+  return o.str();
+}
+
+}  // namespace anisocert::io

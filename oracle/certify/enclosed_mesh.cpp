@@ -1,0 +1,41 @@
+#include "oracle/certify/enclosed_mesh.hpp"
+
+#include "predicates/orientation.hpp"
+
+#include <cmath>
+
+namespace anisocert::oracle {
+
+double approximate(const Rational& q) { return mpq_get_d(q.backend().data()); }
+
+FilterInterval enclose(const Rational& q) {
+  const double d = approximate(q);
+  // q is a normal double (or 0) when its reduced numerator has at most 53 bits and its
+  // denominator is 2^e with e <= 1022: then the conversion was exact. No allocation.
+  const mpz_srcptr num = mpq_numref(q.backend().data()), den = mpq_denref(q.backend().data());
+  const std::size_t e = mpz_scan1(den, 0);
+  if (e + 1 == mpz_sizeinbase(den, 2) && e <= 1022 && mpz_sizeinbase(num, 2) <= 53) return {d, d};
+  return FilterInterval::around(q);
+}
+
+EnclosedMesh::EnclosedMesh(const geometry::Mesh<Rational>& m) : mesh(m) {
+  site.reserve(m.sites.size());
+  approx.reserve(m.sites.size());
+  for (const auto& p : m.sites) {
+    site.push_back({enclose(p.x), enclose(p.y)});
+    approx.push_back({approximate(p.x), approximate(p.y)});
+  }
+  metric.reserve(m.metrics.size());
+  for (const auto& M : m.metrics) metric.push_back({enclose(M.m11), enclose(M.m12), enclose(M.m22)});
+}
+
+Sign EnclosedMesh::orientation(int a, int b, int c) const {
+  const auto &pa = site[a], &pb = site[b], &pc = site[c];
+  return predicates::interval_then_exact<predicates::OrientationKernel>(
+      std::array<FilterInterval, 6>{pa.x, pa.y, pb.x, pb.y, pc.x, pc.y}, [&] {
+        const auto& s = mesh.sites;
+        return std::array<Rational, 6>{s[a].x, s[a].y, s[b].x, s[b].y, s[c].x, s[c].y};
+      });
+}
+
+}  // namespace anisocert::oracle

@@ -1,0 +1,33 @@
+#pragma once
+// A mesh's exact numbers with their interval enclosures, computed once: the certifier's checks
+// decide each predicate on the enclosures first and fall back to the exact rationals only when
+// the enclosure cannot decide (predicates::interval_then_exact), so a mesh read from decimal
+// text is checked at interval speed with exact answers. The approximations (within one ulp of the
+// exact values, and a monotone function of them: equal rationals have equal approximations, and
+// order is kept) select candidates (the site tree, the grids) and give the approximate values
+// reported beside the verdicts.
+#include "geometry/mesh.hpp"
+#include "numbers/filter_interval.hpp"
+
+#include <vector>
+
+namespace anisocert::oracle {
+
+struct EnclosedMesh {
+  explicit EnclosedMesh(const geometry::Mesh<Rational>& m);
+
+  // The exact orientation of sites a, b, c (interval first).
+  Sign orientation(int a, int b, int c) const;
+
+  const geometry::Mesh<Rational>& mesh;
+  std::vector<predicates::Point2<FilterInterval>> site;   // encloses mesh.sites[i]
+  std::vector<predicates::Sym2<FilterInterval>> metric;   // encloses mesh.metrics[i]
+  std::vector<predicates::Point2<double>> approx;          // approximate(mesh.sites[i])
+};
+
+// q rounded towards zero to a double (GMP's mpq_get_d): within one ulp, monotone, no allocation.
+double approximate(const Rational& q);
+// The tightest enclosure: the point [d, d] when q is the double d, else d widened by an ulp.
+FilterInterval enclose(const Rational& q);
+
+}  // namespace anisocert::oracle

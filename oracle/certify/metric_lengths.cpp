@@ -1,0 +1,89 @@
+// Edge lengths in the endpoints' metrics (metric_checks.hpp), each comparison exact.
+#include "oracle/certify/metric_checks.hpp"
+
+#include "predicates/filtered_sign.hpp"
+#include "predicates/point.hpp"
+
+#include <cmath>
+
+namespace anisocert::oracle {
+namespace {
+
+// ℓ² − c for ℓ² = (b − a)ᵀ M (b − a): inputs a, b, M, c.
+struct LengthKernel {
+  static constexpr std::size_t arity = 8;
+  template <class T>
+  static T eval(const std::array<T, arity>& x) {
+    return predicates::quadratic_form(x[4], x[5], x[6], T(x[2] - x[0]), T(x[3] - x[1])) - x[7];
+  }
+};
+
+// The length² of edge ab in the metric of v, enclosed once; each comparison with a bound c is
+// read off the enclosure when c lies outside it, else decided exactly.
+class Length2 {
+ public:
+  Length2(const EnclosedMesh& m, int a, int b, int v)
+      : m_(m), a_(a), b_(b), v_(v),
+        l2_(LengthKernel::eval<FilterInterval>({m.site[a].x, m.site[a].y, m.site[b].x, m.site[b].y, m.metric[v].m11,
+                                                m.metric[v].m12, m.metric[v].m22, FilterInterval(0)})) {}
+  // sign(ℓ² − c), ci enclosing c
+  Sign compare(const Rational& c, const FilterInterval& ci) const {
+    if (l2_.lo > ci.hi) return Sign::positive;
+    if (l2_.hi < ci.lo) return Sign::negative;
+    const auto& s = m_.mesh.sites;
+    const auto& n = m_.mesh.metrics;
+    return predicates::exact_sign<LengthKernel>(
+        {s[a_].x, s[a_].y, s[b_].x, s[b_].y, n[v_].m11, n[v_].m12, n[v_].m22, c});
+  }
+  double approx() const { return std::sqrt(std::max(0.0, (l2_.lo + l2_.hi) / 2)); }
+
+ private:
+  const EnclosedMesh& m_;
+  int a_, b_, v_;
+  FilterInterval l2_;
+};
+
+}  // namespace
+
+LengthReport check_lengths(const EnclosedMesh& m, const std::vector<std::pair<int, int>>& edges,
+                           const std::optional<std::pair<Rational, Rational>>& range) {
+  LengthReport r;
+  const Rational half(1, 2), two(2);
+  const FilterInterval half_i(0.5), two_i(2.0);
+  std::optional<std::pair<Rational, Rational>> range2;
+  std::pair<FilterInterval, FilterInterval> range2_i;
+  if (range) {
+    range2 = std::pair(range->first * range->first, range->second * range->second);
+    range2_i = {enclose(range2->first), enclose(range2->second)};
+  }
+  r.edges = edges.size();
+  r.edge_list = edges;
+  r.lengths.reserve(2 * edges.size());
+  r.shortest = INFINITY;
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const auto [a, b] = edges[k];
+    bool unit = true, reported = false;
+    for (const int v : {a, b}) {
+      const Length2 l2(m, a, b, v);
+      unit = unit && l2.compare(half, half_i) != Sign::negative && l2.compare(two, two_i) != Sign::positive;
+      const double l = l2.approx();
+      r.lengths.push_back(l);
+      if (l < r.shortest) r.shortest = l, r.shortest_edge = static_cast<int>(k);
+      if (l > r.longest) r.longest = l, r.longest_edge = static_cast<int>(k);
+      if (range2 && !reported &&
+          (l2.compare(range2->first, range2_i.first) == Sign::negative ||
+           l2.compare(range2->second, range2_i.second) == Sign::positive)) {
+        reported = true;
+        r.range_violations.push_back({v, -1, v == a ? b : a,
+                                      "edge (" + std::to_string(a) + ", " + std::to_string(b) + ") has length " +
+                                          std::to_string(l) + " in the metric of vertex " + std::to_string(v) +
+                                          ", outside the range"});
+      }
+    }
+    r.unit_edges += unit;
+  }
+  if (edges.empty()) r.shortest = 0;
+  return r;
+}
+
+}  // namespace anisocert::oracle

@@ -1,0 +1,100 @@
+// `anisocert certify` on meshes from elsewhere, as a user runs it: each format through the same
+// checks, the metric checks' verdicts against bounds whose answer is known (a refined mesh's
+// lengths all lie in [0, 100]; no triangle has every angle of 90°), the report files, and usage
+// errors refused before anything is written.
+#include "cli_run.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string peers = std::string(ANISOCERT_REGRESSIONS_DIR) + "/../formats/peers/";
+
+fs::path fresh(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / ("cli_certify_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+TEST(CliCertify, MetricChecksAsVerdictsOnARefinedMesh) {
+  const fs::path d = fresh("refined");
+  const std::string mesh = (d / "m.mesh").string(), sol = (d / "m.sol").string();
+  ASSERT_EQ(run("refine --field constant --param m11=20 --param m22=20 --quiet -o " + mesh).exit_code, 0);
+  const std::string certify = "certify " + mesh + " --metric " + sol;
+  const Outcome wide = run(certify + " --length-range 0 100 --min-quality 0 --json " + (d / "r.json").string() + " --svg " +
+                           (d / "r.svg").string());
+  EXPECT_EQ(wide.exit_code, 0) << wide.out << wide.err;
+  std::ifstream in(d / "r.json");
+  const nlohmann::json r = nlohmann::json::parse(in);
+  for (const char* key : {"valid", "locally_uniform", "lengths", "quality", "angles"}) EXPECT_TRUE(r.contains(key)) << key;
+  EXPECT_TRUE(r["lengths"]["holds"].get<bool>());
+  EXPECT_LE(r["lengths"]["unit_edges"].get<int>(), r["lengths"]["edges"].get<int>());
+  // The quality enclosures: least <= median, each [lo, hi] with lo <= hi, within [0, 1].
+  const auto least = r["quality"]["least"];
+  EXPECT_LE(least[0].get<double>(), least[1].get<double>());
+  EXPECT_GE(least[0].get<double>(), 0.0);
+  EXPECT_LE(least[1].get<double>(), 1.0);
+  std::ifstream svg(d / "r.svg");
+  std::stringstream s;
+  s << svg.rdbuf();
+  EXPECT_EQ(s.str().rfind("<svg", 0), 0u);
+  // Bounds that fail: every triangle has an angle below 90°, and no edge has length exactly 1.
+  const Outcome right = run(certify + " --min-angle 90");
+  EXPECT_EQ(right.exit_code, 1);
+  EXPECT_NE(right.out.find("every angle >= 90° in its vertex's metric: FAILS"), std::string::npos) << right.out;
+  EXPECT_EQ(run(certify + " --length-range 1 1").exit_code, 1);
+}
+
+TEST(CliCertify, PeersFilesInEveryFormat) {
+  for (const std::string f : {"gmsh/square-hole-41.msh", "gmsh/square-hole-22.msh", "gmsh/square-hole-41-bin.msh",
+                              "freefem/square_hole.msh"}) {
+    const Outcome r = run("certify " + peers + f);
+    EXPECT_EQ(r.exit_code, 0) << f << r.out << r.err;
+    EXPECT_NE(r.out.find("valid (a triangulation of the domain, segments are unions of edges): holds"), std::string::npos);
+    EXPECT_NE(r.out.find("no metric: only validity was checked"), std::string::npos);
+  }
+  const Outcome with_metric = run("certify " + peers + "freefem/square_hole.msh --metric " + peers + "freefem/square_hole.mtr");
+  EXPECT_NE(with_metric.out.find("edge lengths in their endpoints' metrics: measured"), std::string::npos) << with_metric.out;
+}
+
+TEST(CliCertify, ATriangleRemovedFromAPeersMeshLeavesTheDeclaredDomainUncovered) {
+  // FreeFem's square with a hole, its first triangle dropped: the boundary of the union gains
+  // edges that the file does not declare.
+  std::ifstream in(peers + "freefem/square_hole.msh");
+  int nv, nt, nbe;
+  in >> nv >> nt >> nbe;
+  std::string rest, line;
+  std::getline(in, line);
+  std::ostringstream out;
+  out << nv << " " << nt - 1 << " " << nbe << "\n";
+  for (int i = 0; i < nv && std::getline(in, line); ++i) out << line << "\n";
+  std::getline(in, line);  // the first triangle
+  while (std::getline(in, line)) out << line << "\n";
+  const fs::path d = fresh("holed");
+  std::ofstream(d / "m.msh") << out.str();
+  const Outcome r = run("certify " + (d / "m.msh").string() + " --format freefem");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("bounds the union of the cells but is not an edge of the file"), std::string::npos) << r.out;
+}
+
+TEST(CliCertify, UsageErrorsWriteNothing) {
+  const fs::path d = fresh("usage");
+  const std::string mesh = peers + "freefem/square_hole.msh", mtr = peers + "freefem/square_hole.mtr";
+  const std::string outputs = " --json " + (d / "r.json").string() + " --svg " + (d / "r.svg").string();
+  for (const std::string bad : {" --min-angle 0", " --min-angle 91", " --min-quality 2", " --length-range 2 1",
+                                " --field shock", " --checks valid,nonsense", " --format nonsense"}) {
+    const Outcome r = run("certify " + mesh + " --metric " + mtr + bad + outputs);
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.out << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_TRUE(fs::is_empty(d));
+}
+
+}  // namespace
