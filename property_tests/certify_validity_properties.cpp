@@ -259,11 +259,10 @@ Tri boundary_corner(const Mesh& m) {
 }
 
 const char* const shapes[] = {"grid", "grid_with_hole", "hole_with_island", "two_grids"};
-const char* const mutations[] = {"none",         "flip",        "delete",           "duplicate",
-                                 "fold",         "fold_onto_edge", "coincide",      "unused_site",
-                                 "overlap_copy", "pinch",       "glue",             "hang",
-                                 "declare_boundary", "declare_minus_one", "declare_plus_interior",
-                                 "declare_plus_non_edge"};
+const char* const mutations[] = {"none",          "flip",          "delete",           "duplicate",
+                                 "fold",          "fold_onto_edge", "coincide",        "unused_site",
+                                 "overlap_copy",  "pinch",         "glue",             "hang",
+                                 "declare_boundary", "declare_minus_one", "declare_plus_interior", "declare_plus_non_edge"};
 constexpr int mutation_count = sizeof mutations / sizeof mutations[0];
 
 // The mutations after which the triangles are never a triangulation of the declared domain, and
@@ -532,7 +531,7 @@ RC_GTEST_PROP(BWY_E321, KnownClassesGetTheirKnownVerdict, ()) {
 // Relabelling the sites and reordering the triangles never changes the verdict.
 RC_GTEST_PROP(BWY_E321, VerdictDoesNotDependOnTheLabels, ()) {
   Case c = *mutated_mesh();
-  RC_TAG(c.mutation);
+  RC_TAG(c.shape);
   std::string why;
   const std::optional<bool> before = certify_in_child(c.mesh, why);
   if (!before) RC_FAIL(why);

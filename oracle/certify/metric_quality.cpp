@@ -11,17 +11,26 @@ namespace anisocert::oracle {
 namespace {
 
 // D = twice the signed area of abc, S = Σ ℓ_M², det M: the parts of the mean ratio 2√3 √det M · D / S.
+// The edge vectors u = b − a, w = c − a, v = c − b and D do not depend on M.
+template <class T>
+struct Edges {
+  T ux, uy, wx, wy, vx, vy, D;
+};
+template <class T>
+Edges<T> edges_of(const T& ax, const T& ay, const T& bx, const T& by, const T& cx, const T& cy) {
+  const T ux = bx - ax, uy = by - ay, wx = cx - ax, wy = cy - ay;
+  return {ux, uy, wx, wy, T(cx - bx), T(cy - by), T(ux * wy - uy * wx)};
+}
 template <class T>
 struct QualityParts {
   T D, S, det;
 };
 template <class T>
-QualityParts<T> quality_parts(const std::array<T, 9>& x) {
-  const T ux = x[2] - x[0], uy = x[3] - x[1], wx = x[4] - x[0], wy = x[5] - x[1], vx = x[4] - x[2], vy = x[5] - x[3];
-  return {T(ux * wy - uy * wx),
-          T(predicates::quadratic_form(x[6], x[7], x[8], ux, uy) + predicates::quadratic_form(x[6], x[7], x[8], wx, wy) +
-            predicates::quadratic_form(x[6], x[7], x[8], vx, vy)),
-          T(x[6] * x[8] - x[7] * x[7])};
+QualityParts<T> quality_parts(const Edges<T>& e, const T& m11, const T& m12, const T& m22) {
+  return {e.D,
+          T(predicates::quadratic_form(m11, m12, m22, e.ux, e.uy) + predicates::quadratic_form(m11, m12, m22, e.wx, e.wy) +
+            predicates::quadratic_form(m11, m12, m22, e.vx, e.vy)),
+          T(m11 * m22 - m12 * m12)};
 }
 
 // 12 det(M) D² − q₀² S²: positive or zero exactly when the mean ratio is at least q₀ (for D > 0).
@@ -29,7 +38,7 @@ struct QualityKernel {
   static constexpr std::size_t arity = 10;
   template <class T>
   static T eval(const std::array<T, arity>& x) {
-    const QualityParts<T> p = quality_parts<T>({x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8]});
+    const QualityParts<T> p = quality_parts<T>(edges_of<T>(x[0], x[1], x[2], x[3], x[4], x[5]), x[6], x[7], x[8]);
     return T(12) * p.det * p.D * p.D - x[9] * p.S * p.S;
   }
 };
@@ -50,11 +59,12 @@ QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>
       continue;
     }
     const auto &a = m.site[tri[0]], &b = m.site[tri[1]], &c = m.site[tri[2]];
+    const Edges<FilterInterval> e = edges_of(a.x, a.y, b.x, b.y, c.x, c.y);
     FilterInterval q{INFINITY, INFINITY};
     bool reported = false;
     for (const int v : tri) {
       const auto& M = m.metric[v];
-      const auto p = quality_parts<FilterInterval>({a.x, a.y, b.x, b.y, c.x, c.y, M.m11, M.m12, M.m22});
+      const auto p = quality_parts(e, M.m11, M.m12, M.m22);
       FilterInterval qv = sqrt(FilterInterval(12) * p.det) * p.D / p.S;
       qv.lo = std::max(qv.lo, 0.0);  // the exact value is positive (D > 0, M positive definite)
       q = min(q, qv);

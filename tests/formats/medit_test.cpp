@@ -174,9 +174,11 @@ TEST(Medit, MalformedFilesNameTheFileTheLineAndTheKeyword) {
       {"MeshVersionFormatted 2\nDimension 2\nVertices 99999999999\n", "count 99999999999 exceeds what the file can hold"},
       {"MeshVersionFormatted 2\nDimension 2\nCorners 1 1\n", "in Corners: a corner 1 is not a vertex (1..0)"},
   };
-  for (const auto& [text, message] : cases)
+  for (const auto& c : cases) {
+    const char *text = c.first, *message = c.second;  // named copies: clang 14 lambdas cannot capture bindings
     EXPECT_NE(error_of([&] { read_medit(text, "bad.mesh"); }).find(message), std::string::npos)
         << text << "\n got: " << error_of([&] { read_medit(text, "bad.mesh"); });
+  }
   const std::pair<const char*, const char*> sols[] = {
       {"MeshVersionFormatted 2 Dimension 2 SolAtVertices 1 1 3 1 2 1 End", "vertex 1: the metric [1 2 1] is not positive definite"},
       {"MeshVersionFormatted 2 Dimension 2 SolAtVertices 1 1 1 -2 End", "vertex 1: the size -2 is not positive"},
@@ -185,9 +187,11 @@ TEST(Medit, MalformedFilesNameTheFileTheLineAndTheKeyword) {
       {"MeshVersionFormatted 2 Dimension 2 SolAtVertices 2 1 3 1 0 1", "in SolAtVertices: the file ends where m11 was expected"},
       {"MeshVersionFormatted 2 Dimension 2 End", "no SolAtVertices"},
   };
-  for (const auto& [text, message] : sols)
+  for (const auto& c : sols) {
+    const char *text = c.first, *message = c.second;
     EXPECT_NE(error_of([&] { read_medit_sol(text, "bad.sol"); }).find(message), std::string::npos)
         << text << "\n got: " << error_of([&] { read_medit_sol(text, "bad.sol"); });
+  }
 }
 
 TEST(Medit, BinaryTruncationsAndBadPositionsNameTheByte) {
