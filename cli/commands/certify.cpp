@@ -97,7 +97,7 @@ int run_certify(CertifyCommandOptions& c) {
   const oracle::CertifyReport report = oracle::certify_mesh(file.mesh, o);
   const io::CertifyVerdict v = io::certify_verdict(report, o, file.mesh, c.bounds);
   std::vector<OutputFile> files;
-  if (!c.json_path.empty()) files.push_back({c.json_path, render(io::to_json(v))});
+  if (!c.json_path.empty()) files.push_back({c.json_path, render(io::to_json(v, report))});
   if (!c.svg_path.empty()) files.push_back({c.svg_path, io::certify_svg(file.mesh, report, c.input + (v.holds ? ": certified" : ": not certified"))});
   write_files_atomically(files);
   emit(io::full_text(v, c.input));

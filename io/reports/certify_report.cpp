@@ -13,10 +13,14 @@ ReportJson witnesses_json(const std::vector<oracle::MeshWitness>& ws) {
   return out;
 }
 
-std::vector<std::string> texts(const std::vector<oracle::MeshWitness>& ws) {
-  std::vector<std::string> out;
-  for (const auto& w : ws) out.push_back(w.text);
-  return out;
+WitnessLines texts(const std::vector<oracle::MeshWitness>& ws) {
+  WitnessLines l{{}, ws.size()};
+  for (std::size_t i = 0; i < ws.size() && i < 3; ++i) l.first.push_back(ws[i].text);
+  return l;
+}
+
+WitnessLines texts(const std::vector<std::string>& lines, std::size_t count) {
+  return {std::vector<std::string>(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(3, lines.size()))), count};
 }
 
 // An enclosure to 10 significant digits, its ends rounded outward in print.
@@ -36,7 +40,8 @@ void add_validity(const oracle::CertifyReport& r, CertifyVerdict& v) {
                                      std::to_string(t.failures.size()) + " described)"
                                : "";
   v.checks.push_back({"valid", "valid (a triangulation of the domain, segments are unions of edges)", "valid",
-                      r.valid_holds(), true, more, "", {t.failures, r.segment_failures},
+                      r.valid_holds(), true, more, "",
+                      {texts(t.failures, t.failure_count), texts(r.segment_failures, r.segment_failures.size())},
                       {{"holds", r.valid_holds()}, {"checks_run", t.checks_run}, {"failure_count", t.failure_count},
                        {"failures", t.failures}, {"bad_triangles", t.bad_cells}, {"bad_edges", t.bad_edges},
                        {"segment_failures", r.segment_failures}}});
@@ -52,7 +57,7 @@ void add_uniform(const oracle::CertifyReport& r, CertifyVerdict& v) {
                           std::to_string(r.uniform_ties.size()) + " cocircular ties" + unmeasured + ")",
                       " (" + std::to_string(r.uniform_ties.size()) + " ties)", {texts(r.uniform_violations)},
                       {{"holds", holds}, {"incircle_tests", r.incircle_tests}, {"unmeasured_triangles", r.unmeasured},
-                       {"violations", witnesses_json(r.uniform_violations)}, {"ties", witnesses_json(r.uniform_ties)}}});
+                       }});
 }
 
 void add_lengths(const oracle::LengthReport& l, const BoundTexts& b, CertifyVerdict& v) {
@@ -68,8 +73,7 @@ void add_lengths(const oracle::LengthReport& l, const BoundTexts& b, CertifyVerd
        " (" + percent(l.unit_edges, l.edges) + " unit)", {texts(l.range_violations)},
        {{"range", bounded ? ReportJson::array({b.length_lo, b.length_hi}) : ReportJson(nullptr)}, {"holds", l.range_violations.empty()},
         {"edges", l.edges}, {"unit_edges", l.unit_edges}, {"shortest", l.shortest}, {"longest", l.longest},
-        {"shortest_edge", l.shortest_edge}, {"longest_edge", l.longest_edge},
-        {"violations", witnesses_json(l.range_violations)}}});
+        {"shortest_edge", l.shortest_edge}, {"longest_edge", l.longest_edge}}});
 }
 
 void add_quality(const oracle::QualityReport& q, const BoundTexts& b, CertifyVerdict& v) {
@@ -88,7 +92,7 @@ void add_quality(const oracle::QualityReport& q, const BoundTexts& b, CertifyVer
        "", {texts(q.violations)},
        {{"threshold", bounded ? ReportJson(b.min_quality) : ReportJson(nullptr)}, {"holds", q.violations.empty()},
         {"measured", q.measured}, {"unmeasured", q.undecided}, {"least", enclosure_json(q.worst)},
-        {"least_triangle", q.worst_triangle}, {"quantiles", qj}, {"violations", witnesses_json(q.violations)}}});
+        {"least_triangle", q.worst_triangle}, {"quantiles", qj}}});
 }
 
 void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdict& v) {
@@ -102,8 +106,7 @@ void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdic
                       "", {texts(a.violations)},
                       {{"threshold_degrees", bounded ? ReportJson(b.min_angle) : ReportJson(nullptr)}, {"holds", holds},
                        {"measured", a.measured}, {"unmeasured", a.undecided}, {"smallest_degrees", a.smallest},
-                       {"smallest_triangle", a.smallest_triangle}, {"undecided_triangles", a.undecided_triangles},
-                       {"violations", witnesses_json(a.violations)}}});
+                       {"smallest_triangle", a.smallest_triangle}, {"undecided_triangles", a.undecided_triangles}}});
 }
 
 }  // namespace
@@ -123,8 +126,7 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
                             std::to_string(r.worst_rho_vertex) + ")",
                         "", {texts(r.rho_violations)},
                         {{"threshold", b.rho0}, {"holds", holds}, {"worst", r.worst_rho},
-                         {"worst_triangle", r.worst_rho_triangle}, {"worst_vertex", r.worst_rho_vertex},
-                         {"violations", witnesses_json(r.rho_violations)}}});
+                         {"worst_triangle", r.worst_rho_triangle}, {"worst_vertex", r.worst_rho_vertex}}});
   }
   if (o.gamma0 && v.has_metrics) {
     const bool holds = r.gamma_violations.empty();
@@ -133,7 +135,7 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
                         " (worst ≈ " + as_printed(r.worst_gamma) + ", triangle " + std::to_string(r.worst_gamma_triangle) + ")", "",
                         {texts(r.gamma_violations)},
                         {{"threshold", b.gamma0}, {"holds", holds}, {"worst", r.worst_gamma},
-                         {"worst_triangle", r.worst_gamma_triangle}, {"violations", witnesses_json(r.gamma_violations)}}});
+                         {"worst_triangle", r.worst_gamma_triangle}}});
   }
   if (r.lengths) add_lengths(*r.lengths, b, v);
   if (r.quality) add_quality(*r.quality, b, v);
@@ -146,9 +148,9 @@ std::string full_text(const CertifyVerdict& v, const std::string& input) {
   o << input << ": " << v.vertices << " vertices, " << v.triangles << " triangles\n";
   for (const CheckReport& c : v.checks) {
     o << "  " << c.title << ": " << verdict(c) << c.detail << "\n";
-    for (const auto& lines : c.witnesses) {
-      for (std::size_t i = 0; i < lines.size() && i < 3; ++i) o << "    " << lines[i] << "\n";
-      if (lines.size() > 3) o << "    … and " << lines.size() - 3 << " more\n";
+    for (const WitnessLines& lines : c.witnesses) {
+      for (const std::string& line : lines.first) o << "    " << line << "\n";
+      if (lines.count > lines.first.size()) o << "    … and " << lines.count - lines.first.size() << " more\n";
     }
   }
   if (!v.has_metrics) o << "  no metric: only validity was checked (the other checks need a metric at every vertex)\n";
@@ -163,9 +165,20 @@ std::string one_line(const CertifyVerdict& v) {
   return s + ": " + (v.holds ? "certified" : "NOT certified") + "\n";
 }
 
-ReportJson to_json(const CertifyVerdict& v) {
+ReportJson to_json(const CertifyVerdict& v, const oracle::CertifyReport& r) {
   ReportJson j{{"holds", v.holds}, {"vertices", v.vertices}, {"triangles", v.triangles}, {"has_metrics", v.has_metrics}};
   for (const CheckReport& c : v.checks) j[c.key] = c.json;
+  // The witnesses, one list per check, from the report (one per triangle at most).
+  auto add = [&j](const char* key, const char* list, const std::vector<oracle::MeshWitness>& ws) {
+    if (j.contains(key)) j[key][list] = witnesses_json(ws);
+  };
+  add("locally_uniform", "violations", r.uniform_violations);
+  add("locally_uniform", "ties", r.uniform_ties);
+  add("radius_edge", "violations", r.rho_violations);
+  add("distortion", "violations", r.gamma_violations);
+  if (r.lengths) add("lengths", "violations", r.lengths->range_violations);
+  if (r.quality) add("quality", "violations", r.quality->violations);
+  if (r.angles) add("angles", "violations", r.angles->violations);
   return j;
 }
 

@@ -13,15 +13,22 @@ namespace anisocert::io {
 
 using ReportJson = nlohmann::ordered_json;
 
-// One check that ran: its JSON key and object, its title in the full text and in the one line,
-// the verdict (or none: a measurement), what follows it in each (" (…)"), and lists of witnesses
-// (text shows the first three of each).
+// The first lines of a list of witnesses, as the full text shows them, and how many there are.
+struct WitnessLines {
+  std::vector<std::string> first;   // at most three
+  std::size_t count = 0;
+};
+
+// One check that ran: its JSON key and object (without its lists of witnesses, which to_json adds
+// from the report itself: a bad mesh's witnesses are not copied), its title in the full text and
+// in the one line, the verdict (or none: a measurement), what follows it in each (" (…)"), and the
+// first lines of its lists of witnesses.
 struct CheckReport {
   std::string key, title, short_title;
   bool holds = true;
   bool is_verdict = true;   // false: statistics only, no bound was given
   std::string detail, short_detail;
-  std::vector<std::vector<std::string>> witnesses;
+  std::vector<WitnessLines> witnesses;
   ReportJson json;
 };
 
@@ -42,6 +49,7 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
 
 std::string full_text(const CertifyVerdict& v, const std::string& input);
 std::string one_line(const CertifyVerdict& v);
-ReportJson to_json(const CertifyVerdict& v);
+// The report behind v gives the lists of witnesses.
+ReportJson to_json(const CertifyVerdict& v, const oracle::CertifyReport& r);
 
 }  // namespace anisocert::io

@@ -33,7 +33,6 @@ struct LengthReport {
   std::size_t edges = 0, unit_edges = 0;   // unit: both lengths in [1/√2, √2], decided exactly
   double shortest = 0, longest = 0;        // approximate extreme lengths over both metrics
   int shortest_edge = -1, longest_edge = -1;
-  std::vector<std::pair<int, int>> edge_list;  // the edges measured (a < b)
   std::vector<double> lengths;             // approximate, two per edge (for the histogram)
   std::vector<MeshWitness> range_violations;   // one per edge outside the range (when given)
 };

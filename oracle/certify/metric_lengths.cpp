@@ -57,7 +57,6 @@ LengthReport check_lengths(const EnclosedMesh& m, const std::vector<std::pair<in
     range2_i = {enclose(range2->first), enclose(range2->second)};
   }
   r.edges = edges.size();
-  r.edge_list = edges;
   r.lengths.reserve(2 * edges.size());
   r.shortest = INFINITY;
   for (std::size_t k = 0; k < edges.size(); ++k) {
