@@ -231,24 +231,19 @@ void check_loops(const EnclosedMesh& m, const std::vector<std::pair<int, int>>& 
   const std::size_t n = m.mesh.sites.size();
   std::vector<int> out(n, -1), in(n, -1);
   bool simple = true;
+  // Each site starts at most one boundary edge and ends at most one: slot is out[site] or in[site].
+  auto once = [&](std::size_t i, int site, int& slot, const char* how) {
+    if (slot >= 0) {
+      t.fail("the boundary passes through site " + std::to_string(site) + " twice (edges " +
+             pair_text(e[slot].first, e[slot].second) + " and " + pair_text(e[i].first, e[i].second) + " " + how + " it)");
+      t.bad_edges.push_back(e[i]);
+      simple = false;
+    }
+    slot = static_cast<int>(i);
+  };
   for (std::size_t i = 0; i < e.size(); ++i) {
-    int& into = in[e[i].second];
-    if (into >= 0) {
-      t.fail("the boundary passes through site " + std::to_string(e[i].second) + " twice (edges " +
-             pair_text(e[into].first, e[into].second) + " and " + pair_text(e[i].first, e[i].second) + " enter it)");
-      t.bad_edges.push_back(e[i]);
-      simple = false;
-    }
-    into = static_cast<int>(i);
-    int& o = out[e[i].first];
-    if (o >= 0) {
-      t.fail("the boundary passes through site " + std::to_string(e[i].first) + " twice (edges " +
-             pair_text(e[o].first, e[o].second) + " and " + pair_text(e[i].first, e[i].second) + " leave it)");
-      t.bad_edges.push_back(e[i]);
-      simple = false;
-      continue;
-    }
-    o = static_cast<int>(i);
+    once(i, e[i].second, in[e[i].second], "enter");
+    once(i, e[i].first, out[e[i].first], "leave");
   }
   const auto& s = m.mesh.sites;
   EdgeGrid(m, e).each_pair([&](std::size_t i, std::size_t j) {

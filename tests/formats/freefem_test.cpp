@@ -4,6 +4,8 @@
 // and the catalogue's freefem-* and bamg-* cases failing in the readers with their messages.
 #include "io/formats/freefem.hpp"
 
+#include "format_test_support.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -11,6 +13,8 @@
 #include <fstream>
 
 namespace {
+
+using anisocert::test_support::error_of;
 
 using anisocert::parse_rational;
 using anisocert::Rational;
@@ -22,16 +26,6 @@ Rational q(const char* text) { return parse_rational(text); }
 
 const fs::path peers = fs::path(ANISOCERT_MALFORMED_DIR "/../peers/freefem");
 
-// The message of the InputError f throws; "" when it throws none.
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 void expect_metric(const Sym2<Rational>& m, const Rational& m11, const Rational& m12, const Rational& m22) {
   EXPECT_EQ(m.m11, m11);
@@ -148,9 +142,7 @@ TEST(FreeFem, WritesAMeshAndItsMetricsThatReadBackExactly) {
   MeshFile m = read_freefem(square, "square.msh");
   m.mesh.sites[2] = {q("12345678901234567890.125"), q("-7.5e-12")};
   m.mesh.metrics = {{4, -1, 3}, {q("0.1"), 0, q("0.2")}, {1, 0, 1}, {100, q("99.5"), 100}, {2, 1, 1}};
-  const fs::path dir = fs::path(::testing::TempDir()) / "freefem_test_round_trip";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = anisocert::test_support::fresh_dir("freefem_test_round_trip");
   const std::vector<FileText> files = write_freefem_file(m, (dir / "rt.msh").string());
   ASSERT_EQ(files.size(), 2u);
   EXPECT_EQ(files[0].path, (dir / "rt.msh").string());

@@ -4,6 +4,8 @@
 // other byte order, and malformed files refused with the file, the line or byte, and the keyword.
 #include "io/formats/medit.hpp"
 
+#include "format_test_support.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,20 +13,13 @@
 
 namespace {
 
+using anisocert::test_support::error_of;
+
 using anisocert::parse_rational;
 using anisocert::Rational;
 using anisocert::predicates::Sym2;
 using namespace anisocert::io;
 
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // Two triangles of the unit square, a boundary edge per side, a corner, a required edge; metrics
 // that are decimals (not doubles) or dyadic (doubles), per the test.

@@ -4,6 +4,8 @@
 // message their case.json expects.
 #include "io/formats/triangle.hpp"
 
+#include "format_test_support.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -12,6 +14,8 @@
 
 namespace {
 
+using anisocert::test_support::error_of;
+
 using anisocert::parse_rational;
 using anisocert::Rational;
 using namespace anisocert::io;
@@ -19,27 +23,12 @@ namespace fs = std::filesystem;
 
 Rational q(const char* text) { return parse_rational(text); }
 
-// The message of the InputError f throws; "" when it throws none.
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 std::string error_reading(const char* node, const char* ele, const char* poly = "") {
   return error_of([&] { read_triangle(node, ele, poly, "t"); });
 }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("triangle_test_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return anisocert::test_support::fresh_dir("triangle_test_" + name); }
 
 void write_all(const std::vector<FileText>& files) {
   for (const FileText& f : files) std::ofstream(f.path, std::ios::binary) << f.content;
