@@ -52,6 +52,24 @@ TEST(CliCertify, MetricChecksAsVerdictsOnARefinedMesh) {
   EXPECT_EQ(run(certify + " --length-range 1 1").exit_code, 1);
 }
 
+// MMG's convention: BASE.mesh's metric is BASE.sol beside it; the report says where the metrics
+// came from, and a bound without any metric is refused rather than skipped.
+TEST(CliCertify, TheSolBesideAMeditMeshIsItsMetric) {
+  const fs::path d = fresh("beside");
+  const std::string mesh = (d / "m.mesh").string();
+  ASSERT_EQ(run("refine --field constant --param m11=20 --param m22=20 --quiet -o " + mesh).exit_code, 0);
+  const Outcome r = run("certify " + mesh + " --rho0 3 --gamma0 1.5");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("metrics from " + (d / "m.sol").string()), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("radius-edge ratio ≤ 3 in each vertex's metric: holds"), std::string::npos) << r.out;
+  fs::remove(d / "m.sol");
+  const Outcome none = run("certify " + mesh + " --rho0 3");
+  EXPECT_EQ(none.exit_code, 2) << none.out;
+  EXPECT_NE(none.err.find("has no metric, which the requested checks and bounds need"), std::string::npos) << none.err;
+  EXPECT_EQ(run("certify " + mesh).exit_code, 0);  // validity alone, said so
+  EXPECT_EQ(run("certify " + mesh + " --checks valid,uniform").exit_code, 2);  // asked for explicitly
+}
+
 TEST(CliCertify, PeersFilesInEveryFormat) {
   for (const std::string f : {"gmsh/square-hole-41.msh", "gmsh/square-hole-22.msh", "gmsh/square-hole-41-bin.msh",
                               "freefem/square_hole.msh"}) {

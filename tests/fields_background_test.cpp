@@ -377,20 +377,23 @@ TEST(BackgroundCli, UncoveredPointIsBadInput) {
   EXPECT_NE(r.err.find("no background triangle holds it"), std::string::npos) << r.err;
 }
 
-// Medit .mesh has no metric of its own: without :METRIC that is bad input; with a .sol beside it
-// the field is defined.
+// Medit .mesh has no metric of its own: without :METRIC and without BASE.sol beside it that is bad
+// input; BASE.sol beside it is its metric (MMG's convention), and :METRIC names one explicitly.
 TEST(BackgroundCli, MeshWithoutMetricNeedsAMetricFile) {
-  const std::string mesh = temp_file("square.mesh",
-                                     "MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
-                                     "Triangles\n2\n1 2 3 0\n1 3 4 0\nEnd\n");
+  const char* square = "MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+                       "Triangles\n2\n1 2 3 0\n1 3 4 0\nEnd\n";
+  const std::string bare_mesh = temp_file("bare.mesh", square);
+  const std::string mesh = temp_file("square.mesh", square);
   const std::string sol = temp_file("square.sol",
                                     "MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n4\n1 3\n25 0 25\n25 0 25\n25 0 25\n"
                                     "25 0 25\nEnd\n");
-  const Outcome bare = run("refine --field background:" + mesh + " --quiet");
+  const Outcome bare = run("refine --field background:" + bare_mesh + " --quiet");
   EXPECT_EQ(bare.exit_code, 2);
   EXPECT_NE(bare.err.find("background mesh has no metric (give MESH:METRIC)"), std::string::npos) << bare.err;
-  const Outcome with = run("refine --field background:" + mesh + ":" + sol + " --max-vertices 2000 --quiet");
-  EXPECT_TRUE(with.exit_code == 0 || with.exit_code == 1) << with.exit_code << ": " << with.err;
+  for (const std::string& field : {mesh, mesh + ":" + sol}) {
+    const Outcome with = run("refine --field background:" + field + " --max-vertices 2000 --quiet");
+    EXPECT_TRUE(with.exit_code == 0 || with.exit_code == 1) << field << ": " << with.exit_code << ": " << with.err;
+  }
 }
 
 TEST(BackgroundCli, BackgroundFieldTakesNoParameters) {

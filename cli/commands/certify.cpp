@@ -23,6 +23,7 @@ struct CertifyCommandOptions {
   std::vector<std::string> length_range;
   std::vector<std::string> checks{"valid", "uniform", "metric"};
   bool planar_3d = false;
+  bool checks_given = false;   // --checks was on the command line
 };
 
 oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
@@ -94,8 +95,17 @@ int run_certify(CertifyCommandOptions& c) {
     throw UsageError(e.what());
   }
   if (file.mesh.triangles.empty()) throw UsageError(c.input + ": the file has no triangles");
+  if (file.mesh.metrics.empty()) {
+    // A bound or a check the user asked for must run or be refused, never be skipped quietly.
+    const bool asked = o.rho0 || o.gamma0 || o.length_range || o.min_quality || o.min_angle ||
+                       (c.checks_given && (o.uniform || o.metric));
+    if (asked)
+      throw UsageError(c.input + ": has no metric, which the requested checks and bounds need (give --metric FILE or --field NAME)");
+  }
+  if (!c.field.empty()) file.metric_source = "--field " + c.field;
   const oracle::CertifyReport report = oracle::certify_mesh(file.mesh, o);
-  const io::CertifyVerdict v = io::certify_verdict(report, o, file.mesh, c.bounds);
+  io::CertifyVerdict v = io::certify_verdict(report, o, file.mesh, c.bounds);
+  v.metric_source = file.metric_source;
   std::vector<OutputFile> files;
   if (!c.json_path.empty()) files.push_back({c.json_path, render(io::to_json(v, report))});
   if (!c.svg_path.empty()) files.push_back({c.svg_path, io::certify_svg(file.mesh, report, c.input + (v.holds ? ": certified" : ": not certified"))});
@@ -132,18 +142,22 @@ void add_certify(CLI::App& app, int& exit_code) {
       "locally uniform (every triangle at a vertex v has an empty circumellipse in M_v, ties reported apart); metric\n"
       "(edge lengths in the endpoints' metrics, the share in [1/sqrt2, sqrt2], mean-ratio qualities, angles), with\n"
       "bounds as verdicts; radius-edge ratio and distortion when thresholds are given. The metric: the file's own\n"
-      "(Gmsh $NodeData, JSON), --metric FILE, or --field. Each check's verdict stands on its own.\n"
+      "(Gmsh $NodeData, JSON; a Medit BASE.mesh's BASE.sol), --metric FILE, or --field. Without a metric only `valid`\n"
+      "runs, and bounds that need one are refused. Each check's verdict stands on its own.\n"
       "Exit 0 all hold, 1 a check fails (witnesses), 2 bad input (one line, nothing written).\nMesh formats (by extension, or --format):\n" +
           format_list());
   c->add_option("mesh", o->input, "the mesh file")->required();
   c->add_option("--format", o->format, "the mesh format, when the extension does not tell");
-  c->add_option("--metric", o->metric, "per-vertex metrics in a separate file (.sol/.solb, .mtr)");
+  c->add_option("--metric", o->metric,
+                "per-vertex metrics in a separate file (.sol/.solb, .mtr); a Medit BASE.mesh reads BASE.sol beside it\n"
+                "without this option, as MMG does");
   c->add_option("--metric-format", o->metric_format, "the metric file's format (medit, bamg)");
   c->add_option("--field", o->field, std::string("a metric field instead: a built-in name (see refine --help) or\n") +
                                          background_field_help);
   c->add_option("--param", o->params, "a parameter of the built-in field, name=value (repeatable)");
   c->add_flag("--planar-3d", o->planar_3d, "read a 3D Medit file whose every z is 0 as a 2D mesh");
-  c->add_option("--checks", o->checks, "which of valid, uniform, metric to run (default all)")->delimiter(',');
+  CLI::Option* checks =
+      c->add_option("--checks", o->checks, "which of valid, uniform, metric to run (default all)")->delimiter(',');
   c->add_option("--rho0", o->bounds.rho0, "check radius-edge ratio <= this (exact rational)");
   c->add_option("--gamma0", o->bounds.gamma0, "check distortion <= this (exact rational)");
   c->add_option("--length-range", o->length_range, "check every metric edge length in [a, b] (e.g. 0.7071 1.4143)")
@@ -152,7 +166,10 @@ void add_certify(CLI::App& app, int& exit_code) {
   c->add_option("--min-angle", o->bounds.min_angle, "check every angle in its vertex's metric >= this many degrees");
   c->add_option("--json", o->json_path, "write the full report to this file");
   c->add_option("--svg", o->svg_path, "write a picture: the mesh, failures coloured, histograms of lengths and qualities");
-  c->callback([o, &exit_code] { exit_code = run_certify(*o); });
+  c->callback([o, checks, &exit_code] {
+    o->checks_given = checks->count() > 0;
+    exit_code = run_certify(*o);
+  });
 }
 
 }  // namespace anisocert::cli

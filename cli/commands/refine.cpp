@@ -66,13 +66,16 @@ int run_refine(const RefineOptions& o) {
   }
   const geometry::Mesh<double>& m = run.result.mesh;
   std::vector<OutputFile> files;
+  std::string written;
   if (!o.output.empty()) {
     io::MeshFile file;
     file.mesh = geometry::exact(m);
     file.mesh.edges = file.mesh.segments;  // the boundary subsegments, as every mesher's file declares them
     try {
-      for (io::FileText& f : io::mesh_format_to_write(o.output, o.output_format).write(file, o.output))
+      for (io::FileText& f : io::mesh_format_to_write(o.output, o.output_format).write(file, o.output)) {
+        written += (written.empty() ? "" : ", ") + f.path;
         files.push_back({std::move(f.path), std::move(f.content)});
+      }
     } catch (const io::InputError& e) {
       throw UsageError(e.what());
     }
@@ -81,7 +84,7 @@ int run_refine(const RefineOptions& o) {
     files.push_back({o.svg, io::mesh_svg(m, entry->name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices")});
   write_files_atomically(files);
   std::string text = "refine: domain " + o.domain + ", field " + o.field + "\n" + report_text(run);
-  if (!o.output.empty()) text += "  mesh: " + o.output + " (check it with anisocert certify)\n";
+  if (!o.output.empty()) text += "  mesh: " + written + " (check it with anisocert certify)\n";
   emit(text);
   return run.result.consistent ? 0 : 1;
 }

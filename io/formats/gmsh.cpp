@@ -323,9 +323,26 @@ int site_of(Input& in, const Reading& r, std::uint64_t element, std::uint64_t no
   return it->second;
 }
 
+// The surface elements of § "elm-type" other than the 3-node triangle: a mesh holding one is not a
+// mesh of linear triangles, and skipping it would leave a hole the certifier would blame on the mesh.
+const char* other_surface_element(std::int32_t type) {
+  switch (type) {
+    case 3: return "a 4-node quadrangle";
+    case 9: return "a 6-node (second-order) triangle";
+    case 10: return "a 9-node quadrangle";
+    case 16: return "an 8-node quadrangle";
+    case 20: case 21: case 22: case 23: case 24: case 25: return "a higher-order triangle";
+    default: return nullptr;
+  }
+}
+
 // An element's node tags, after its tag: a 2-node line (type 1: a boundary edge) or a 3-node
-// triangle (type 2) is kept with its reference; any other type is skipped.
+// triangle (type 2) is kept with its reference; another surface element is refused; any other
+// type is skipped.
 void read_element(Input& in, Reading& r, std::uint64_t tag, std::int32_t type, int ref) {
+  if (const char* other = other_surface_element(type))
+    in.fail("element " + std::to_string(tag) + " is " + other + " (type " + std::to_string(type) +
+            "): anisocert certifies meshes of 3-node triangles only");
   if (type != 1 && type != 2) return in.skip_element(type, tag);
   const int k = type == 1 ? 2 : 3;
   std::array<int, 3> v{};

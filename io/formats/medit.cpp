@@ -16,7 +16,7 @@ using predicates::Sym2;
 
 // Keyword codes of the binary files (libMeshb's GmfKwdCod enumeration).
 enum Code : int {
-  version_formatted = 1, dimension = 3, vertices = 4, edges = 5, triangles = 6, corners = 13, ridges = 14,
+  version_formatted = 1, dimension = 3, vertices = 4, edges = 5, triangles = 6, quadrilaterals = 7, corners = 13, ridges = 14,
   required_vertices = 15, required_edges = 16, end = 54, sol_at_vertices = 62
 };
 
@@ -26,6 +26,7 @@ struct KeywordName {
 };
 constexpr KeywordName keyword_names[] = {{dimension, "Dimension"},     {vertices, "Vertices"},
                                          {edges, "Edges"},             {triangles, "Triangles"},
+                                         {quadrilaterals, "Quadrilaterals"},
                                          {corners, "Corners"},         {ridges, "Ridges"},
                                          {required_vertices, "RequiredVertices"},
                                          {required_edges, "RequiredEdges"}, {end, "End"},
@@ -232,6 +233,9 @@ MeshFile read_medit(std::string_view bytes, const std::string& source, const Med
         }
         break;
       }
+      case quadrilaterals:
+        if (s.count("the quadrilateral count") > 0) s.fail("the mesh has quadrilaterals: anisocert certifies meshes of triangles only");
+        break;
       case corners: f.corners = read_index_list(s, nv, "a corner"); break;
       case required_vertices: f.required_vertices = read_index_list(s, nv, "a required vertex"); break;
       case required_edges:

@@ -15,6 +15,7 @@ void attach_metrics(MeshFile& f, std::vector<predicates::Sym2<Rational>> metrics
     throw InputError(source + ": " + std::to_string(metrics.size()) + " metrics for a mesh of " +
                      std::to_string(f.mesh.sites.size()) + " vertices");
   f.mesh.metrics = std::move(metrics);
+  f.metric_source = source;
 }
 
 bool positive_definite(const predicates::Sym2<Rational>& m) { return m.m11 > 0 && m.m11 * m.m22 - m.m12 * m.m12 > 0; }

@@ -25,6 +25,7 @@ struct MeshFile {
   std::vector<int> required_edges;    // indices into mesh.edges (Medit RequiredEdges)
   std::vector<int> ridges;            // indices into mesh.edges (Medit Ridges)
   std::vector<predicates::Point2<Rational>> holes;  // a point in each hole (Triangle .poly)
+  std::string metric_source;          // where mesh.metrics came from, for reports ("" when none)
 };
 
 // A file a writer produces: its path and its bytes.

@@ -41,27 +41,27 @@ std::string head_of(const std::string& path) {
 
 template <class Format>
 const Format& format_of(const std::vector<Format>& formats, const std::string& path, const std::string& forced,
-                        const char* kind) {
+                        const char* kind, const char* option) {
   std::string names;
   for (const Format& f : formats) names += (names.empty() ? "" : ", ") + f.name;
   if (!forced.empty()) {
     for (const Format& f : formats)
       if (f.name == forced) return f;
-    throw InputError("--format: unknown " + std::string(kind) + " format \"" + forced + "\" (" + names + ")");
+    throw InputError(std::string(option) + ": unknown " + kind + " format \"" + forced + "\" (" + names + ")");
   }
   const std::string ext = extension_of(path);
   std::vector<const Format*> by_extension;
   for (const Format& f : formats)
     if (std::find(f.extensions.begin(), f.extensions.end(), ext) != f.extensions.end()) by_extension.push_back(&f);
   if (by_extension.empty())
-    throw InputError(path + ": no " + std::string(kind) + " format has the extension \"" + ext +
-                     "\"; name one with --format (" + names + ")");
+    throw InputError(path + ": no " + std::string(kind) + " format has the extension \"" + ext + "\"; name one with " +
+                     option + " (" + names + ")");
   if (by_extension.size() == 1) return *by_extension.front();
   const std::string head = head_of(path);
   for (const Format* f : by_extension)
     if (f->recognizes && f->recognizes(head)) return *f;
   throw InputError(path + ": the first bytes are not those of any " + std::string(kind) + " format with the extension \"" +
-                   ext + "\"; name one with --format (" + names + ")");
+                   ext + "\"; name one with " + option + " (" + names + ")");
 }
 
 }  // namespace
@@ -98,11 +98,11 @@ std::vector<std::string> mesh_format_names() {
 }
 
 const MeshFormat& mesh_format_of(const std::string& path, const std::string& forced) {
-  return format_of(mesh_formats(), path, forced, "mesh");
+  return format_of(mesh_formats(), path, forced, "mesh", "--format");
 }
 
 const MetricFormat& metric_format_of(const std::string& path, const std::string& forced) {
-  return format_of(metric_formats(), path, forced, "metric");
+  return format_of(metric_formats(), path, forced, "metric", "--metric-format");
 }
 
 const MeshFormat& mesh_format_to_write(const std::string& path, const std::string& forced) {
@@ -117,8 +117,17 @@ const MeshFormat& mesh_format_to_write(const std::string& path, const std::strin
 
 MeshFile read_mesh_file(const std::string& path, const std::string& format, const ReadOptions& o,
                         const std::string& metric_path, const std::string& metric_format) {
-  MeshFile f = mesh_format_of(path, format).read(path, o);
-  if (!metric_path.empty()) attach_metrics(f, metric_format_of(metric_path, metric_format).read(metric_path), metric_path);
+  const MeshFormat& mf = mesh_format_of(path, format);
+  MeshFile f = mf.read(path, o);
+  if (!f.mesh.metrics.empty()) f.metric_source = path;
+  std::string metrics = metric_path;
+  // MMG's convention: BASE.mesh's metric is BASE.sol (BASE.meshb's, BASE.solb), read when present.
+  if (metrics.empty() && f.mesh.metrics.empty() && mf.name == "medit") {
+    const std::string ext = extension_of(path), base = path.substr(0, path.size() - ext.size());
+    const std::string beside = base + (ext == ".meshb" ? ".solb" : ".sol");
+    if (std::ifstream(beside).good()) metrics = beside;
+  }
+  if (!metrics.empty()) attach_metrics(f, metric_format_of(metrics, metric_format).read(metrics), metrics);
   return f;
 }
 

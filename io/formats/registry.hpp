@@ -49,8 +49,9 @@ const MetricFormat& metric_format_of(const std::string& path, const std::string&
 // (Gmsh for ".msh"). Throws InputError naming the path.
 const MeshFormat& mesh_format_to_write(const std::string& path, const std::string& forced = "");
 
-// Read a mesh file (and its metric file when given) in one call; the mesh's own metrics (Gmsh
-// $NodeData, a Medit .sol beside it is not read implicitly) stay when metric_path is empty.
+// Read a mesh file and its metrics in one call: from metric_path when given, else the file's own
+// (Gmsh $NodeData, JSON), else for a Medit BASE.mesh (.meshb) the BASE.sol (.solb) beside it when
+// there is one (MMG's convention). MeshFile::metric_source says which.
 MeshFile read_mesh_file(const std::string& path, const std::string& format = "", const ReadOptions& o = {},
                         const std::string& metric_path = "", const std::string& metric_format = "");
 

@@ -53,7 +53,7 @@ void add_uniform(const oracle::CertifyReport& r, CertifyVerdict& v) {
       r.unmeasured ? ", " + std::to_string(r.unmeasured) + " flat or clockwise triangles cannot be checked" : "";
   v.checks.push_back({"locally_uniform", "locally uniform (every triangle at v has an empty M_v-circumellipse)",
                       "locally uniform", holds, true,
-                      " (" + std::to_string(r.incircle_tests) + " exact in-circle tests, " +
+                      " (" + std::to_string(r.incircle_tests) + " nearby sites tested exactly, " +
                           std::to_string(r.uniform_ties.size()) + " cocircular ties" + unmeasured + ")",
                       " (" + std::to_string(r.uniform_ties.size()) + " ties)", {texts(r.uniform_violations)},
                       {{"holds", holds}, {"incircle_tests", r.incircle_tests}, {"unmeasured_triangles", r.unmeasured},
@@ -145,7 +145,9 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
 
 std::string full_text(const CertifyVerdict& v, const std::string& input) {
   std::ostringstream o;
-  o << input << ": " << v.vertices << " vertices, " << v.triangles << " triangles\n";
+  o << input << ": " << v.vertices << " vertices, " << v.triangles << " triangles";
+  if (!v.metric_source.empty()) o << ", metrics from " << v.metric_source;
+  o << "\n";
   for (const CheckReport& c : v.checks) {
     o << "  " << c.title << ": " << verdict(c) << c.detail << "\n";
     for (const WitnessLines& lines : c.witnesses) {
@@ -154,6 +156,7 @@ std::string full_text(const CertifyVerdict& v, const std::string& input) {
     }
   }
   if (!v.has_metrics) o << "  no metric: only validity was checked (the other checks need a metric at every vertex)\n";
+  if (!v.holds) o << "  (witnesses number vertices, triangles and edges from 0, in the order of the file)\n";
   o << (v.holds ? "certified\n" : "not certified\n");
   return o.str();
 }
@@ -166,7 +169,9 @@ std::string one_line(const CertifyVerdict& v) {
 }
 
 ReportJson to_json(const CertifyVerdict& v, const oracle::CertifyReport& r) {
-  ReportJson j{{"holds", v.holds}, {"vertices", v.vertices}, {"triangles", v.triangles}, {"has_metrics", v.has_metrics}};
+  ReportJson j{{"holds", v.holds},           {"vertices", v.vertices},
+               {"triangles", v.triangles},   {"has_metrics", v.has_metrics},
+               {"metric_source", v.metric_source}, {"indices_from", 0}};
   for (const CheckReport& c : v.checks) j[c.key] = c.json;
   // The witnesses, one list per check, from the report (one per triangle at most).
   auto add = [&j](const char* key, const char* list, const std::vector<oracle::MeshWitness>& ws) {

@@ -35,6 +35,7 @@ struct CheckReport {
 struct CertifyVerdict {
   std::size_t vertices = 0, triangles = 0;
   bool has_metrics = true;
+  std::string metric_source;   // where the metrics came from (a file, "--field shock"); "" when unknown
   bool holds = false;
   std::vector<CheckReport> checks;
 };

@@ -1,6 +1,5 @@
 #include "io/svg/certify_svg.hpp"
 
-#include "io/reports/printed.hpp"
 #include "io/svg/canvas.hpp"
 
 #include <algorithm>
@@ -10,24 +9,25 @@
 namespace anisocert::io {
 namespace {
 
-// A histogram of values in bins over [lo, hi] (values outside go to the end bins), bars scaled to
-// the tallest, at (x, y),
-// w × h px, with a shaded band [band_lo, band_hi] and tick labels from `label`.
+// A histogram of values in bins over [lo, hi] (values outside are counted and said, not drawn),
+// bars scaled to the tallest, at (x, y), w × h px, with a shaded band [band_lo, band_hi] and five
+// tick labels from `label`.
 template <class Label>
 void histogram(std::ostream& o, const std::vector<double>& values, double lo, double hi, int bins, double x, double y, double w,
                double h, double band_lo, double band_hi, const std::string& title, Label label) {
   std::vector<std::size_t> count(bins, 0);
+  std::size_t below = 0, above = 0;
   for (double v : values) {
-    if (!std::isfinite(v)) continue;
-    const int b = static_cast<int>(std::floor((v - lo) / (hi - lo) * bins));
-    ++count[std::clamp(b, 0, bins - 1)];
+    if (!(v >= lo)) ++below;
+    else if (v > hi) ++above;
+    else ++count[std::min(bins - 1, static_cast<int>((v - lo) / (hi - lo) * bins))];
   }
   const std::size_t top = std::max<std::size_t>(1, *std::max_element(count.begin(), count.end()));
   auto X = [&](double v) { return x + (v - lo) / (hi - lo) * w; };
   o << "<g font-family=\"sans-serif\" font-size=\"10\">\n";
   if (band_hi > band_lo)
-    o << "<rect x=\"" << X(band_lo) << "\" y=\"" << y << "\" width=\"" << X(band_hi) - X(band_lo) << "\" height=\"" << h
-      << "\" fill=\"#e3f2e1\"/>\n";
+    o << "<rect x=\"" << X(std::max(lo, band_lo)) << "\" y=\"" << y << "\" width=\"" << X(std::min(hi, band_hi)) - X(std::max(lo, band_lo))
+      << "\" height=\"" << h << "\" fill=\"#e3f2e1\"/>\n";
   for (int b = 0; b < bins; ++b) {
     const double bh = h * static_cast<double>(count[b]) / static_cast<double>(top);
     o << "<rect x=\"" << x + w * b / bins << "\" y=\"" << y + h - bh << "\" width=\"" << w / bins * 0.9 << "\" height=\"" << bh
@@ -38,8 +38,22 @@ void histogram(std::ostream& o, const std::vector<double>& values, double lo, do
     const double v = lo + (hi - lo) * k / 4;
     o << "<text x=\"" << X(v) << "\" y=\"" << y + h + 12 << "\" text-anchor=\"middle\">" << label(v) << "</text>\n";
   }
-  o << "<text x=\"" << x << "\" y=\"" << y - 6 << "\" font-size=\"11\">" << title << " (" << values.size()
-    << ")</text>\n</g>\n";
+  // The title on two lines: what is counted, then how.
+  const auto cut = title.find(" (");
+  o << "<text x=\"" << x << "\" y=\"" << y - 20 << "\" font-size=\"11\">" << title.substr(0, cut) << "</text>\n";
+  if (cut != std::string::npos)
+    o << "<text x=\"" << x << "\" y=\"" << y - 6 << "\">" << title.substr(cut + 1) << "</text>\n";
+  o << "<text x=\"" << x << "\" y=\"" << y + h + 26 << "\">tallest bar " << top
+    << (below ? ", " + std::to_string(below) + " left of the axis" : "") << (above ? ", " + std::to_string(above) + " right of it" : "")
+    << "</text>\n</g>\n";
+}
+
+// Three significant digits, for tick labels.
+std::string tick(double v) {
+  std::ostringstream o;
+  o.precision(3);
+  o << v;
+  return o.str();
 }
 
 void triangle_path(std::ostream& o, const Canvas& c, const std::vector<predicates::Point2<double>>& p,
@@ -57,7 +71,7 @@ std::string certify_svg(const geometry::Mesh<Rational>& mesh, const oracle::Cert
   geometry::Polygon<double> frame;
   for (const auto& q : p) frame.push_back(q);
   const Canvas c(frame, 0.03);
-  constexpr double footer = 190, width = 660;
+  constexpr double footer = 210, width = 660;
   std::ostringstream o;
   o.precision(6);
   c.open(o, footer, width);
@@ -84,16 +98,26 @@ std::string certify_svg(const geometry::Mesh<Rational>& mesh, const oracle::Cert
     for (const auto& w : r.lengths->range_violations) edges.emplace_back(w.vertex, w.site);
   for (const auto& [a, b] : edges) o << "M" << c.X(p[a].x) << " " << c.Y(p[a].y) << " L" << c.X(p[b].x) << " " << c.Y(p[b].y) << " ";
   o << "\"/>\n";
-  const double y = c.height() + 40;
-  if (r.lengths) {
+  const double y = c.height() + 50;
+  if (r.lengths && !r.lengths->lengths.empty()) {
+    // log₂ of each length, on an axis spanning the data and the unit band [1/√2, √2] (±½), at most
+    // 2⁻¹² … 2¹² (the rest counted below or above).
     std::vector<double> log_lengths;
-    for (double l : r.lengths->lengths) log_lengths.push_back(l > 0 ? std::log2(l) : -INFINITY);
-    histogram(o, log_lengths, -3, 3, 48, 20, y, 290, 100, -0.5, 0.5, "metric edge lengths, unit band shaded",
-              [](double v) { return as_printed(std::exp2(v)); });
+    double lo = -0.5, hi = 0.5;
+    for (double l : r.lengths->lengths) {
+      const double v = l > 0 ? std::log2(l) : -INFINITY;
+      log_lengths.push_back(v);
+      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    lo = std::max(std::floor(lo), -12.0), hi = std::min(std::ceil(hi), 12.0);
+    histogram(o, log_lengths, lo, hi, 48, 20, y, 290, 100, -0.5, 0.5,
+              "edge lengths in both endpoints' metrics (" + std::to_string(log_lengths.size()) +
+                  ", 2 per edge; log scale, unit band shaded)",
+              [](double v) { return tick(std::exp2(v)); });
   }
   if (r.quality)
-    histogram(o, r.quality->qualities, 0, 1, 40, 350, y, 290, 100, 0, 0, "mean-ratio quality",
-              [](double v) { return as_printed(v); });
+    histogram(o, r.quality->qualities, 0, 1, 40, 350, y, 290, 100, 0, 0,
+              "mean-ratio quality (" + std::to_string(r.quality->qualities.size()) + " triangles, 1 = equilateral)", tick);
   o << "<text x=\"8\" y=\"" << c.height() + footer - 10 << "\" font-family=\"sans-serif\" font-size=\"12\">" << caption
     << ": failing triangles in red, failing edges in orange</text>\n</svg>\n";
   return o.str();

@@ -66,7 +66,7 @@ TEST(Gmsh, RecognizesItsFileByTheFirstToken) {
   EXPECT_FALSE(looks_like_gmsh(""));
 }
 
-// 2.2: sparse, unordered node tags (10, 3, 7, 20, 99), a point, a quadrangle, lines with 2 tags,
+// 2.2: sparse, unordered node tags (10, 3, 7, 20, 99), a point, a tetrahedron, lines with 2 tags,
 // with none and with 3; the first tag is the reference.
 const std::string v22 = R"($MeshFormat
 2.2 0 8
@@ -91,7 +91,7 @@ $Elements
 3 1 0 3 7
 4 2 2 3 1 10 3 7
 5 2 3 3 1 4 10 7 20
-6 3 2 3 1 10 3 7 20
+6 4 2 3 1 10 3 7 20
 7 1 3 8 2 1 20 10
 $EndElements
 )";
@@ -102,7 +102,7 @@ TEST(Gmsh, Reads22WithSparseTagsAndFirstTagReferences) {
   ASSERT_EQ(f.mesh.sites.size(), 5u);
   EXPECT_EQ(f.mesh.sites[3].x, Rational(1, 10));  // "20 0.1 1 0": exactly 1/10
   EXPECT_EQ(f.mesh.sites[4].x, 5);
-  // Tags 10, 3, 7, 20 are sites 0, 1, 2, 3; the point (15) and the quadrangle (3) are skipped.
+  // Tags 10, 3, 7, 20 are sites 0, 1, 2, 3; the point (15) and the tetrahedron (4) are skipped.
   EXPECT_EQ(f.mesh.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}}));
   EXPECT_EQ(f.triangle_refs, (std::vector<int>{3, 3}));
   EXPECT_EQ(f.mesh.edges, (std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {3, 0}}));
@@ -113,7 +113,7 @@ TEST(Gmsh, Reads22WithSparseTagsAndFirstTagReferences) {
 
 // 4.1: a point, a curve with two physical tags (11 first), a curve without any, a surface with
 // physical tag 4; node blocks on each, the curve's parametric (one u per node); element blocks
-// of points, lines, triangles and a quadrangle.
+// of points, lines, triangles and a tetrahedron (a volume element: skipped).
 const std::string v41 = R"($MeshFormat
 4.1 0 8
 $EndMeshFormat
@@ -152,7 +152,7 @@ $Elements
 4 30 8
 2 2 2 1
 5 40 2 8
-2 2 3 1
+2 2 4 1
 6 40 2 30 8
 $EndElements
 )";
@@ -299,7 +299,7 @@ class Bytes {
 };
 
 // § MSH file format, 4.1 binary: a curve with physical tag 9 and a surface; nodes 7, 3, 5 at
-// (0.1, 0), (1, 0), (0, 1) — 0.1 the double nearest 1/10; two lines, a quadrangle (skipped: 4
+// (0.1, 0), (1, 0), (0, 1) — 0.1 the double nearest 1/10; two lines, a tetrahedron (skipped: 4
 // node tags), a triangle; a 3-component $NodeData (tags ints).
 std::string hand_binary(bool big_endian) {
   Bytes b(big_endian);
@@ -311,7 +311,7 @@ std::string hand_binary(bool big_endian) {
   b.f64(0.1).f64(0).f64(0).f64(1).f64(0).f64(0).f64(0).f64(1).f64(0).text("\n$EndNodes\n");
   b.text("$Elements\n").u64(3).u64(4).u64(1).u64(4);
   b.i32(1).i32(4).i32(1).u64(2).u64(1).u64(7).u64(3).u64(2).u64(3).u64(5);
-  b.i32(2).i32(1).i32(3).u64(1).u64(3).u64(7).u64(3).u64(5).u64(7);
+  b.i32(2).i32(1).i32(4).u64(1).u64(3).u64(7).u64(3).u64(5).u64(7);
   b.i32(2).i32(1).i32(2).u64(1).u64(4).u64(7).u64(3).u64(5).text("\n$EndElements\n");
   b.text("$NodeData\n1\n\"m\"\n1\n0\n3\n0\n3\n3\n");
   b.i32(3).f64(2).f64(0.5).f64(3).i32(5).f64(1).f64(0).f64(1).i32(7).f64(4).f64(-1).f64(1).text("\n$EndNodeData\n");
@@ -341,10 +341,10 @@ TEST(Gmsh, BinaryFailuresNameTheByteAndTheSection) {
   const std::size_t cut = nodes + 32 + 20 + 24 + 32 + 3;
   EXPECT_EQ(error_of(file.substr(0, cut)),
             "t.msh: byte " + std::to_string(cut - 3) + ": in $Nodes: the file ends inside the y of node 3 (8 bytes needed)");
-  // The quadrangle's type made unknown: its node tags cannot be skipped.
+  // The tetrahedron's type made unknown: its node tags cannot be skipped.
   std::string unknown = file;
   // After the header (4 sizes) and the line block (3 ints, a size, 2 lines of 3 sizes): the
-  // quadrangle block's entityDim, entityTag, then its elementType, big-endian 3.
+  // tetrahedron block's entityDim, entityTag, then its elementType, big-endian 4.
   const std::size_t quad = file.find("$Elements\n") + 10 + 32 + 20 + 2 * 24 + 8;
   unknown[quad + 3] = 100;
   EXPECT_NE(error_of(unknown).find("in $Elements: element 3 has type 100, whose number of nodes the manual does not list"),
