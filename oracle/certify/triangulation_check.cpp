@@ -387,7 +387,8 @@ TriangulationCheck check_triangulation(const EnclosedMesh& m, const CellList& ce
         const auto [a, b] = m.mesh.edges[k];
         declared.push_back(ordered(a, b));
         if (!has_edge(edges, a, b)) {
-          t.fail("edge " + std::to_string(k) + " " + pair_text(a, b) + " of the file is not an edge of the cells");
+          t.fail("edge " + std::to_string(k) + " " + pair_text(a, b) +
+                 " of the file is not an edge of the cells (the file declares edges where no triangle is: a surface left out?)");
           t.bad_edges.emplace_back(a, b);
         }
       }
