@@ -517,7 +517,8 @@ void read_node_data(Input& in, Reading& r) {
   std::vector<std::optional<Metric>> of_site(r.tags.size());
   std::vector<Rational> v(static_cast<std::size_t>(h.components));
   for (std::int64_t i = 0; i < h.count; ++i) {
-    const std::int64_t tag = in.data_tag("a nodeTag");
+    const std::int64_t tag =
+        in.data_tag(("the nodeTag of value " + std::to_string(i + 1) + " of the " + std::to_string(h.count) + " the view declares"));
     const std::string node = node_name(tag);
     const auto site = tag > 0 ? r.site_of.find(static_cast<std::uint64_t>(tag)) : r.site_of.end();
     if (site == r.site_of.end()) in.fail("the view gives a value to " + node + ", which is not in $Nodes");
