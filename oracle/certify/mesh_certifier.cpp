@@ -100,6 +100,11 @@ void check_segments(const EnclosedMesh& m, const SiteTree& tree, const std::vect
   const auto& mesh = m.mesh;
   for (std::size_t k = 0; k < mesh.segments.size(); ++k) {
     const int a = mesh.segments[k].first, b = mesh.segments[k].second;
+    if (mesh.sites[a].x == mesh.sites[b].x && mesh.sites[a].y == mesh.sites[b].y) {
+      r.segment_failures.push_back("segment " + std::to_string(k) + " has length zero (sites " + std::to_string(a) + " and " +
+                                   std::to_string(b) + "): it is no union of edges");
+      continue;
+    }
     std::vector<std::pair<Rational, int>> on;
     const auto &pa = m.approx[a], &pb = m.approx[b];
     tree.visit(std::min(pa.x, pb.x), std::max(pa.x, pb.x), std::min(pa.y, pb.y), std::max(pa.y, pb.y), [&](int s) {
