@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -31,6 +32,13 @@ std::function<void(const std::string&)> progress_printer(bool quiet) {
 std::string render(const Json& j) { return j.dump(2) + "\n"; }
 
 void write_files_atomically(const std::vector<OutputFile>& files) {
+  // What would make a rename fail after others succeeded is refused before anything is written:
+  // two outputs at one path, or a path that is a directory.
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j)
+      if (files[i].path == files[j].path) throw UsageError("cannot write " + files[i].path + ": two outputs given the same path");
+    if (std::filesystem::is_directory(files[i].path)) throw UsageError("cannot write " + files[i].path + ": it is a directory");
+  }
   const auto partial = [](const OutputFile& f) { return f.path + ".partial"; };
   const auto remove_partials = [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from; i < to; ++i) std::remove(partial(files[i]).c_str());

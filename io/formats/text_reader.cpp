@@ -93,7 +93,15 @@ std::int64_t TextReader::integer(std::string_view what, std::int64_t lo, std::in
 Rational TextReader::number(std::string_view what) {
   const std::string_view t = token(what);
   try {
-    return parse_rational(t);
+    Rational q = parse_rational(t);
+    // Magnitudes far beyond the doubles' (1e100000 is a valid decimal) are no mesh's: every
+    // predicate on them would fall to exact arithmetic on huge integers. Refused, not rounded.
+    const long bits = static_cast<long>(mpz_sizeinbase(mpq_numref(q.backend().data()), 2)) -
+                      static_cast<long>(mpz_sizeinbase(mpq_denref(q.backend().data()), 2));
+    if (q != 0 && (bits > max_magnitude_bits || bits < -max_magnitude_bits))
+      fail(std::string(what) + ": \"" + shown(t) + "\" is outside the magnitudes a mesh file may hold (2^-" +
+           std::to_string(max_magnitude_bits) + " to 2^" + std::to_string(max_magnitude_bits) + ", past the doubles')");
+    return q;
   } catch (const NumberSyntaxError& e) {
     const std::string why = e.what();
     const auto k = why.find("is not an exact number");

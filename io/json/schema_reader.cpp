@@ -2,10 +2,33 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <vector>
 
 namespace anisocert::io {
 
+namespace {
+
+// Whether v nests containers more than `limit` deep, found without recursion.
+bool deeper_than(const nlohmann::json& v, int limit) {
+  std::vector<std::pair<const nlohmann::json*, int>> todo{{&v, 0}};
+  while (!todo.empty()) {
+    const auto [j, depth] = todo.back();
+    todo.pop_back();
+    if (depth > limit) return true;
+    if (j->is_structured())
+      for (const auto& child : *j) todo.push_back({&child, depth + 1});
+  }
+  return false;
+}
+
+}  // namespace
+
 std::string show(const nlohmann::json& v) {
+  // A deeply nested container is named by its size, not dumped: dumping recurses once per level,
+  // and a hostile file nests arrays tens of thousands deep.
+  if (deeper_than(v, 32))
+    return std::string(v.is_array() ? "an array" : "an object") + " nested more than 32 deep, of " + std::to_string(v.size()) +
+           " entries";
   std::string s = v.dump();
   if (s.size() <= 60) return s;
   std::size_t cut = 57;

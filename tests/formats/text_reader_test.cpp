@@ -13,6 +13,7 @@
 
 namespace {
 
+using anisocert::parse_rational;
 using anisocert::Rational;
 using anisocert::test_support::error_of;
 using namespace anisocert::io;
@@ -40,6 +41,11 @@ TEST(TextReader, MessagesNameTheFileTheLineTheContextAndWhat) {
             "f:1: n: 99999999999999999999 is out of range");
   EXPECT_NE(error_of([] { TextReader("nan", "f").number("x"); }).find("f:1: x: \"nan\" is not an exact number"),
             std::string::npos);
+  // 1e400 is exact but far past the doubles: refused by name rather than certified for minutes.
+  EXPECT_NE(error_of([] { TextReader("1e400", "f").number("x"); }).find("f:1: x: \"1e400\" is outside the magnitudes"),
+            std::string::npos);
+  EXPECT_EQ(TextReader("1e300", "f").number("x"), parse_rational("1e300"));
+  EXPECT_EQ(TextReader("1e-300", "f").number("x"), parse_rational("1e-300"));
   // A binary byte in a text file is shown escaped, never printed raw.
   EXPECT_EQ(error_of([] { TextReader(std::string_view("\x01\x02z", 3), "f").expect("MeshVersionFormatted"); }),
             "f:1: expected \"MeshVersionFormatted\", found \"\\x01\\x02z\"");
