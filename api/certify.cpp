@@ -21,7 +21,7 @@ void check_metrics(const std::vector<Metric>& metrics, std::size_t sites, const 
     throw std::invalid_argument(std::string(what) + ": " + std::to_string(metrics.size()) + " metrics for " +
                                 std::to_string(sites) + " sites (one per site)");
   for (std::size_t i = 0; i < metrics.size(); ++i)
-    if (!io::positive_definite(metrics[i]))
+    if (!predicates::positive_definite(metrics[i]))
       throw std::invalid_argument(indexed(what, i) + ": the metric [" + to_exact_string(metrics[i].m11) + ", " +
                                   to_exact_string(metrics[i].m12) + ", " + to_exact_string(metrics[i].m22) +
                                   "] is not positive definite (m11 > 0 and m11 m22 - m12^2 > 0)");

@@ -44,6 +44,8 @@ Metric2 Metric2::from_doubles(double m11, double m12, double m22) {
 
 Rational Metric2::determinant() const { return m_.m11 * m_.m22 - m_.m12 * m_.m12; }
 
+bool positive_definite(const Sym2<Rational>& m) { return m.m11 > 0 && m.m11 * m.m22 - m.m12 * m.m12 > 0; }
+
 LDLt2 Metric2::ldlt() const {
   return {m_.m12 / m_.m11, m_.m11, determinant() / m_.m11};
 }

@@ -24,6 +24,10 @@ struct LDLt3 {
   Rational l21, l31, l32, d1, d2, d3;
 };
 
+// Whether m is symmetric positive definite, exactly: m11 > 0 and m11 m22 − m12² > 0 (what Metric2
+// requires, as a test for readers that name the place themselves).
+bool positive_definite(const Sym2<Rational>& m);
+
 class Metric2 {
  public:
   // Throws NotPositiveDefinite.

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <bit>
 #include <cstring>
+#include <filesystem>
 #include <optional>
 
 namespace anisocert::io {
@@ -391,12 +392,6 @@ void write_index_list(MeditWriter& w, Code c, const std::vector<int>& list) {
   for (int i : list) w.integer(i + 1), w.line_end();
 }
 
-std::string replace_extension(const std::string& path, const std::string& from, const std::string& to) {
-  if (path.size() >= from.size() && path.compare(path.size() - from.size(), from.size(), from) == 0)
-    return path.substr(0, path.size() - from.size()) + to;
-  return path + to;
-}
-
 }  // namespace
 
 std::string medit_mesh_text(const MeshFile& m, MeditEncoding e, int version) {
@@ -449,7 +444,7 @@ std::vector<FileText> write_medit_file(const MeshFile& m, const std::string& pat
   const MeditEncoding e = binary ? MeditEncoding::binary : MeditEncoding::ascii;
   std::vector<FileText> files{{path, medit_mesh_text(m, e)}};
   if (!m.mesh.metrics.empty()) {
-    const std::string sol = binary ? replace_extension(path, ".meshb", ".solb") : replace_extension(path, ".mesh", ".sol");
+    const std::string sol = std::filesystem::path(path).replace_extension(binary ? ".solb" : ".sol").string();
     files.push_back({sol, medit_sol_text(m.mesh.metrics, e)});
   }
   return files;

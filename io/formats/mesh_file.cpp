@@ -18,8 +18,6 @@ void attach_metrics(MeshFile& f, std::vector<predicates::Sym2<Rational>> metrics
   f.metric_source = source;
 }
 
-bool positive_definite(const predicates::Sym2<Rational>& m) { return m.m11 > 0 && m.m11 * m.m22 - m.m12 * m.m12 > 0; }
-
 predicates::Sym2<Rational> metric_of_size(const Rational& h) {
   const Rational inv = 1 / (h * h);
   return {inv, 0, inv};

@@ -9,6 +9,7 @@
 // that is not a double in a binary one).
 #include "geometry/mesh.hpp"
 #include "io/input_error.hpp"
+#include "predicates/metric.hpp"
 
 #include <string>
 #include <vector>
@@ -40,8 +41,7 @@ void set_constrained_segments(MeshFile& f);
 // stores them in f.mesh.metrics. source names the metric's origin in the message.
 void attach_metrics(MeshFile& f, std::vector<predicates::Sym2<Rational>> metrics, const std::string& source);
 
-// Whether m is symmetric positive definite, exactly (m11 > 0 and m11 m22 − m12² > 0).
-bool positive_definite(const predicates::Sym2<Rational>& m);
+using predicates::positive_definite;
 // The metric of a scalar size h > 0: I / h² (MMG, BAMG and Gmsh's isotropic size fields).
 predicates::Sym2<Rational> metric_of_size(const Rational& h);
 

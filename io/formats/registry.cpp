@@ -8,6 +8,7 @@
 #include "io/mesh_json.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 
 namespace anisocert::io {
@@ -123,8 +124,7 @@ MeshFile read_mesh_file(const std::string& path, const std::string& format, cons
   std::string metrics = metric_path;
   // MMG's convention: BASE.mesh's metric is BASE.sol (BASE.meshb's, BASE.solb), read when present.
   if (metrics.empty() && f.mesh.metrics.empty() && mf.name == "medit") {
-    const std::string ext = extension_of(path), base = path.substr(0, path.size() - ext.size());
-    const std::string beside = base + (ext == ".meshb" ? ".solb" : ".sol");
+    const std::string beside = std::filesystem::path(path).replace_extension(extension_of(path) == ".meshb" ? ".solb" : ".sol").string();
     if (std::ifstream(beside).good()) metrics = beside;
   }
   if (!metrics.empty()) attach_metrics(f, metric_format_of(metrics, metric_format).read(metrics), metrics);
