@@ -1,10 +1,6 @@
 #include "property_tests/second_engine/qqbar_conics.hpp"
 
-#include <calcium/qqbar.h>
-#include <flint/fmpq.h>
-#include <flint/fmpq_poly.h>
-#include <flint/fmpz_mpoly.h>
-#include <flint/fmpz_poly.h>
+#include "property_tests/second_engine/calcium_shim.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -13,14 +9,15 @@ namespace anisocert::second_engine {
 
 class Qqbar {
  public:
-  Qqbar() { qqbar_init(v); }
-  Qqbar(const Qqbar& o) { qqbar_init(v), qqbar_set(v, o.v); }
+  Qqbar() : v(anisocert_qqbar_new()) {}
+  explicit Qqbar(anisocert_qqbar* adopted) : v(adopted) {}
+  Qqbar(const Qqbar& o) : v(anisocert_qqbar_new()) { anisocert_qqbar_set(v, o.v); }
   Qqbar& operator=(const Qqbar& o) {
-    qqbar_set(v, o.v);
+    anisocert_qqbar_set(v, o.v);
     return *this;
   }
-  ~Qqbar() { qqbar_clear(v); }
-  qqbar_t v;
+  ~Qqbar() { anisocert_qqbar_delete(v); }
+  anisocert_qqbar* v;
 };
 
 struct QNumber : Qqbar {
@@ -68,16 +65,14 @@ std::vector<Qqbar> roots(const fmpz_poly_t p, bool distinct) {
   const slong d = fmpz_poly_degree(p);
   std::vector<Qqbar> out;
   if (d < 1) return out;
-  qqbar_ptr r = _qqbar_vec_init(d);
-  qqbar_roots_fmpz_poly(r, p, 0);
-  for (slong i = 0; i < d; ++i) {
-    const bool seen = distinct && std::any_of(out.begin(), out.end(), [&](const Qqbar& q) { return qqbar_equal(q.v, r + i); });
-    if (!seen) {
-      out.emplace_back();
-      qqbar_set(out.back().v, r + i);
-    }
+  std::vector<anisocert_qqbar*> r(static_cast<std::size_t>(d));
+  anisocert_qqbar_roots_fmpz_poly(r.data(), p);
+  for (anisocert_qqbar* root : r) {
+    Qqbar owned(root);
+    const bool seen =
+        distinct && std::any_of(out.begin(), out.end(), [&](const Qqbar& q) { return anisocert_qqbar_equal(q.v, root); });
+    if (!seen) out.push_back(owned);
   }
-  _qqbar_vec_clear(r, d);
   return out;
 }
 
@@ -92,11 +87,9 @@ bool resultant(fmpz_poly_t out, const MPoly& A, const MPoly& B, slong var, const
 
 bool vanishes(const MPoly& f, const Qqbar& x, const Qqbar& y, const Ctx& ctx) {
   Qqbar v;
-  qqbar_struct xy[2];
-  xy[0] = *x.v;
-  xy[1] = *y.v;
-  if (!qqbar_evaluate_fmpz_mpoly(v.v, f.p, xy, 10000, 10000000, ctx.c)) throw std::runtime_error("qqbar evaluation limit");
-  return qqbar_is_zero(v.v);
+  if (!anisocert_qqbar_evaluate_fmpz_mpoly(v.v, f.p, x.v, y.v, 10000, 10000000, ctx.c))
+    throw std::runtime_error("qqbar evaluation limit");
+  return anisocert_qqbar_is_zero(v.v);
 }
 
 }  // namespace
@@ -128,12 +121,12 @@ QIntersection intersect(const oracle::Conic& A, const oracle::Conic& B) {
   for (slong t = 1;; ++t) {
     std::vector<Qqbar> u(common.size());
     for (std::size_t k = 0; k < common.size(); ++k) {
-      qqbar_mul_si(u[k].v, common[k].y.v, t);
-      qqbar_add(u[k].v, u[k].v, common[k].x.v);
+      anisocert_qqbar_mul_si(u[k].v, common[k].y.v, t);
+      anisocert_qqbar_add(u[k].v, u[k].v, common[k].x.v);
     }
     bool separated = true;
     for (std::size_t i = 0; i < u.size(); ++i)
-      for (std::size_t j = i + 1; j < u.size(); ++j) separated = separated && !qqbar_equal(u[i].v, u[j].v);
+      for (std::size_t j = i + 1; j < u.size(); ++j) separated = separated && !anisocert_qqbar_equal(u[i].v, u[j].v);
     if (!separated) continue;
     MPoly xs(ctx), ys(ctx), at(ctx), bt(ctx);  // x → x − t y, y → y
     fmpz_mpoly_gen(xs.p, 0, ctx.c);
@@ -153,9 +146,9 @@ QIntersection intersect(const oracle::Conic& A, const oracle::Conic& B) {
     const std::vector<Qqbar> all = roots(rt, false);
     fmpz_poly_clear(rt);
     for (std::size_t k = 0; k < common.size(); ++k) {
-      if (!qqbar_is_real(common[k].x.v) || !qqbar_is_real(common[k].y.v)) continue;
+      if (!anisocert_qqbar_is_real(common[k].x.v) || !anisocert_qqbar_is_real(common[k].y.v)) continue;
       QPoint p{std::make_shared<const QNumber>(common[k].x), std::make_shared<const QNumber>(common[k].y), 0};
-      p.multiplicity = static_cast<int>(std::count_if(all.begin(), all.end(), [&](const Qqbar& r) { return qqbar_equal(r.v, u[k].v); }));
+      p.multiplicity = static_cast<int>(std::count_if(all.begin(), all.end(), [&](const Qqbar& r) { return anisocert_qqbar_equal(r.v, u[k].v); }));
       out.points.push_back(p);
     }
     break;
@@ -175,15 +168,13 @@ int sign_at(const oracle::Bivariate& f, const QPoint& p) {
   for (const auto& [ij, c] : f.terms) l = boost::multiprecision::lcm(l, boost::multiprecision::denominator(c));
   to_mpoly(m, f, ctx);  // f · l with l > 0: same sign
   Qqbar v;
-  qqbar_struct xy[2];
-  xy[0] = *p.x->v;
-  xy[1] = *p.y->v;
-  if (!qqbar_evaluate_fmpz_mpoly(v.v, m.p, xy, 10000, 10000000, ctx.c)) throw std::runtime_error("qqbar evaluation limit");
-  return qqbar_sgn_re(v.v);
+  if (!anisocert_qqbar_evaluate_fmpz_mpoly(v.v, m.p, p.x->v, p.y->v, 10000, 10000000, ctx.c))
+    throw std::runtime_error("qqbar evaluation limit");
+  return anisocert_qqbar_sgn_re(v.v);
 }
 
-int compare_x(const QPoint& p, const QPoint& q) { return qqbar_cmp_re(p.x->v, q.x->v); }
-int compare_y(const QPoint& p, const QPoint& q) { return qqbar_cmp_re(p.y->v, q.y->v); }
+int compare_x(const QPoint& p, const QPoint& q) { return anisocert_qqbar_cmp_re(p.x->v, q.x->v); }
+int compare_y(const QPoint& p, const QPoint& q) { return anisocert_qqbar_cmp_re(p.y->v, q.y->v); }
 
 bool equals(const QNumberPtr& q, const oracle::RealAlgebraic& ours) {
   fmpq_poly_t p;
@@ -195,13 +186,13 @@ bool equals(const QNumberPtr& q, const oracle::RealAlgebraic& ours) {
     fmpq_poly_set_coeff_fmpq(p, i, c);
   }
   Qqbar v, lo, hi;
-  qqbar_evaluate_fmpq_poly(v.v, p, q->v);
-  bool same = qqbar_is_zero(v.v);
+  anisocert_qqbar_evaluate_fmpq_poly(v.v, p, q->v);
+  bool same = anisocert_qqbar_is_zero(v.v);
   fmpq_set_mpq(c, ours.lo().backend().data());
-  qqbar_set_fmpq(lo.v, c);
+  anisocert_qqbar_set_fmpq(lo.v, c);
   fmpq_set_mpq(c, ours.hi().backend().data());
-  qqbar_set_fmpq(hi.v, c);
-  same = same && qqbar_cmp_re(lo.v, q->v) <= 0 && qqbar_cmp_re(q->v, hi.v) <= 0;
+  anisocert_qqbar_set_fmpq(hi.v, c);
+  same = same && anisocert_qqbar_cmp_re(lo.v, q->v) <= 0 && anisocert_qqbar_cmp_re(q->v, hi.v) <= 0;
   fmpq_clear(c);
   fmpq_poly_clear(p);
   return same;

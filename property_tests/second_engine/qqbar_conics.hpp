@@ -16,7 +16,7 @@
 namespace anisocert::second_engine {
 
 // An exact algebraic number of Calcium (opaque here: Calcium's headers are not C++-clean, so
-// only qqbar_conics.cpp includes them).
+// only calcium_shim.c, compiled as C, includes them).
 struct QNumber;
 using QNumberPtr = std::shared_ptr<const QNumber>;
 
