@@ -1,0 +1,108 @@
+// The oracle's exact conic intersection against the second engine (docs/fuzzing.md § Differential):
+// FLINT's resultants and Calcium's qqbar (property_tests/second_engine/, no code shared with
+// oracle/). Small integer coefficients, decoded from bytes; the first byte picks a construction
+// that reaches the degenerate cases bytes alone rarely hit (as property_tests/oracle_conics does):
+//   0 two conics from their coefficients;
+//   1 two members of the pencil through four points (four common points, some possibly equal);
+//   2 a conic through a point and one tangent to it there (a double point);
+//   3 two line pairs sharing a line (a shared component);
+//   4 two line pairs through one point (a point singular for both).
+// Both engines must give the same shared-component verdict, the same real points (each qqbar point
+// a root of our defining polynomial inside our isolating interval), the same multiplicities and
+// the same order in x and y. Limit: 32 bytes.
+#include "fuzz/support/finding.hpp"
+#include "oracle/algebraic/conic_intersection.hpp"
+#include "property_tests/second_engine/qqbar_conics.hpp"
+
+#include <array>
+
+using anisocert::Rational;
+using anisocert::fuzz::require;
+using anisocert::oracle::Conic;
+namespace qq = anisocert::second_engine;
+
+namespace {
+
+struct Bytes {
+  const std::uint8_t* data;
+  std::size_t size, at = 0;
+  // A small integer in [−6, 6]; 0 past the end.
+  Rational small() { return at < size ? Rational(static_cast<int>(data[at++] % 13) - 6) : Rational(0); }
+  Conic conic() {
+    Conic c;
+    for (Rational* k : {&c.a, &c.b, &c.c, &c.d, &c.e, &c.f}) *k = small();
+    return c;
+  }
+  std::array<Rational, 2> point() { return {small(), small()}; }
+};
+
+using Line = std::array<Rational, 3>;
+
+Line line(const std::array<Rational, 2>& p, const std::array<Rational, 2>& q) {
+  return {q[1] - p[1], p[0] - q[0], q[0] * p[1] - p[0] * q[1]};
+}
+Conic product(const Line& l, const Line& m) {
+  return {l[0] * m[0], l[0] * m[1] + l[1] * m[0], l[1] * m[1], l[0] * m[2] + l[2] * m[0], l[1] * m[2] + l[2] * m[1], l[2] * m[2]};
+}
+Conic combine(const Conic& P, const Rational& s, const Conic& Q) {
+  return {P.a + s * Q.a, P.b + s * Q.b, P.c + s * Q.c, P.d + s * Q.d, P.e + s * Q.e, P.f + s * Q.f};
+}
+
+std::pair<Conic, Conic> decode(Bytes& b, int kind) {
+  switch (kind) {
+    case 1: {
+      const auto p1 = b.point(), p2 = b.point(), p3 = b.point(), p4 = b.point();
+      const Conic Q1 = product(line(p1, p2), line(p3, p4)), Q2 = product(line(p1, p3), line(p2, p4));
+      const Rational l = b.small(), m = b.small();
+      return {combine(Q1, l, Q2), combine(Q1, m, Q2)};
+    }
+    case 2: {
+      Conic A = b.conic();
+      const auto p = b.point();
+      A.f -= A(p[0], p[1]);
+      const Rational gx = 2 * A.a * p[0] + A.b * p[1] + A.d, gy = A.b * p[0] + 2 * A.c * p[1] + A.e;
+      const Line T{gx, gy, -(gx * p[0] + gy * p[1])};
+      const Rational l = b.small();
+      return {A, combine(A, l == 0 ? Rational(1) : l, product(T, T))};
+    }
+    case 3: {
+      const auto p = b.point(), q = b.point(), r = b.point(), s = b.point(), t = b.point();
+      return {product(line(p, q), line(r, s)), product(line(p, q), line(s, t))};
+    }
+    case 4: {
+      const auto o = b.point(), p = b.point(), q = b.point(), r = b.point(), s = b.point();
+      return {product(line(o, p), line(o, q)), product(line(o, r), line(o, s))};
+    }
+    default: {
+      const Conic A = b.conic();
+      return {A, b.conic()};
+    }
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size < 1 || size > 32) return -1;
+  Bytes b{data, size, 1};
+  const auto [A, B] = decode(b, data[0] % 5);
+  if (A.polynomial().is_zero() || B.polynomial().is_zero()) return 0;  // not conics
+  const auto ours = anisocert::oracle::intersect(A, B);
+  const qq::QIntersection theirs = qq::intersect(A, B);
+  require(ours.shared_component == theirs.shared_component, "the two engines disagree on a shared component");
+  require(ours.points.size() == theirs.points.size(), "the two engines find different numbers of common points");
+  for (std::size_t k = 0; k < ours.points.size(); ++k) {
+    const auto& p = ours.points[k].point;
+    require(qq::equals(theirs.points[k].x, p.x()) && qq::equals(theirs.points[k].y, p.y()),
+            "common point " + std::to_string(k) + " differs between the engines");
+    require(ours.points[k].multiplicity == theirs.points[k].multiplicity,
+            "the multiplicity of common point " + std::to_string(k) + " differs between the engines");
+    for (std::size_t j = 0; j < ours.points.size(); ++j) {
+      require(static_cast<int>(compare_x(p, ours.points[j].point)) == qq::compare_x(theirs.points[k], theirs.points[j]),
+              "the engines order common points differently in x");
+      require(static_cast<int>(compare_y(p, ours.points[j].point)) == qq::compare_y(theirs.points[k], theirs.points[j]),
+              "the engines order common points differently in y");
+    }
+  }
+  return 0;
+}

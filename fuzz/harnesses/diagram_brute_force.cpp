@@ -1,0 +1,98 @@
+// The exact diagram against brute force (docs/fuzzing.md § Differential; LS Definition 1). Up to
+// 6 sites on the grid of eighths, metrics M = FᵀF with F = [[a, b], [0, c]] of small integers (up to
+// 4:1 anisotropy), in a square, a triangle or an L-shaped domain (non-convex), all decoded from
+// bytes: the grid makes ties, cocircular sites and sites on ∂Ω and its corners common.
+//   - the oracle either builds D|Ω or declines a degenerate input it documents (std::domain_error);
+//     any other exception is a finding;
+//   - at every point of the grid of twelfths inside Ω, the owners of what contains it (locate) are
+//     exactly its nearest sites, computed here from the definition: d_v(p)² = (p − v)ᵀ M_v (p − v),
+//     compared exactly (the oracle's own nearest_sites is not used);
+//   - every site lies in exactly one face of its own cell that is not an orphan.
+// Limit: 2 + 5·6 bytes.
+#include "fuzz/support/finding.hpp"
+#include "oracle/diagram/diagram.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+using anisocert::Rational;
+using anisocert::fuzz::require;
+namespace oracle = anisocert::oracle;
+using Point = anisocert::predicates::Point2<Rational>;
+
+namespace {
+
+enum class Shape { square, triangle, l_shape };
+
+anisocert::geometry::Polygon<Rational> domain(Shape s) {
+  const Rational h(1, 2);
+  switch (s) {
+    case Shape::triangle: return {{0, 0}, {1, 0}, {0, 1}};
+    case Shape::l_shape: return {{0, 0}, {1, 0}, {1, h}, {h, h}, {h, 1}, {0, 1}};
+    default: return {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  }
+}
+
+// p ∈ Ω (closed), for the three shapes of the unit square.
+bool inside(const Point& p, Shape s) {
+  const Rational h(1, 2);
+  if (p.x < 0 || p.y < 0 || p.x > 1 || p.y > 1) return false;
+  if (s == Shape::triangle) return p.x + p.y <= 1;
+  if (s == Shape::l_shape) return p.x <= h || p.y <= h;
+  return true;
+}
+
+std::vector<int> nearest_by_definition(const anisocert::geometry::Mesh<Rational>& in, const Point& p) {
+  std::vector<int> best;
+  Rational least;
+  for (std::size_t v = 0; v < in.sites.size(); ++v) {
+    const Rational dx = p.x - in.sites[v].x, dy = p.y - in.sites[v].y;
+    const auto& M = in.metrics[v];
+    const Rational d = M.m11 * dx * dx + 2 * M.m12 * dx * dy + M.m22 * dy * dy;
+    if (best.empty() || d < least) {
+      best = {static_cast<int>(v)};
+      least = d;
+    } else if (d == least) {
+      best.push_back(static_cast<int>(v));
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size < 2 || size > 32) return -1;
+  const Shape shape = static_cast<Shape>(data[1] % 3);
+  anisocert::geometry::Mesh<Rational> in;
+  in.domain = domain(shape);
+  const std::size_t wanted = 1 + data[0] % 6;
+  for (std::size_t at = 2; at + 5 <= size && in.sites.size() < wanted; at += 5) {
+    const Point p{Rational(data[at] % 9, 8), Rational(data[at + 1] % 9, 8)};
+    if (!inside(p, shape)) continue;
+    if (std::any_of(in.sites.begin(), in.sites.end(), [&](const Point& q) { return q.x == p.x && q.y == p.y; })) continue;
+    const Rational a(1 + data[at + 2] % 4), b(static_cast<int>(data[at + 3] % 7) - 3), c(1 + data[at + 4] % 4);
+    in.sites.push_back(p);
+    in.metrics.push_back({a * a, a * b, b * b + c * c});
+  }
+  if (in.sites.empty()) return 0;
+  oracle::Diagram d;
+  try {
+    d = oracle::compute_diagram(in);
+  } catch (const std::domain_error&) {
+    return 0;  // a degenerate input the oracle declines by name (docs/oracle.md)
+  }
+  for (int i = 0; i <= 12; ++i)
+    for (int j = 0; j <= 12; ++j) {
+      const Point p{Rational(i, 12), Rational(j, 12)};
+      if (!inside(p, shape)) continue;
+      const oracle::Location loc = oracle::locate(d, p);
+      require(loc.owners == nearest_by_definition(in, p),
+              "at (" + std::to_string(i) + "/12, " + std::to_string(j) + "/12) the diagram's owners are not the nearest sites");
+    }
+  for (std::size_t s = 0; s < in.sites.size(); ++s)
+    require(std::count_if(d.faces.begin(), d.faces.end(),
+                          [&](const oracle::Face& f) { return f.site == static_cast<int>(s) && !f.orphan; }) == 1,
+            "site " + std::to_string(s) + " is not in exactly one non-orphan face of its cell");
+  return 0;
+}

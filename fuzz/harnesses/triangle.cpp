@@ -1,0 +1,10 @@
+// Triangle (docs/fuzzing.md § Parsers): a .node, then after file markers its .ele and .poly; the
+// properties of fuzz/support/mesh_reader_check.hpp. Limit: 64 KiB (-max_len in fuzz/campaign).
+#include "fuzz/support/mesh_reader_check.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size > 65536) return -1;
+  static const anisocert::fuzz::MeshReaderCase triangle{"triangle", {".node", ".ele", ".poly"}, "", false};
+  anisocert::fuzz::check_mesh_reader(triangle, data, size);
+  return 0;
+}

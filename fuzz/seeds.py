@@ -1,0 +1,77 @@
+"""The hand-made seeds of fuzz/corpora (run by fuzz/seed-corpora): inputs that are not files of
+the tests. Each aims at a case the harness's header comment names."""
+import os
+import struct
+import sys
+
+corpora = sys.argv[1]
+
+
+def put(harness, name, data):
+    os.makedirs(os.path.join(corpora, harness), exist_ok=True)
+    with open(os.path.join(corpora, harness, name), "wb") as f:
+        f.write(data if isinstance(data, bytes) else data.encode())
+
+
+def slots(header, *values):
+    return bytes(header) + b"".join(struct.pack("<d", v) for v in values)
+
+
+# exact_numbers: every form parse_rational reads, and texts it must refuse in one line.
+for name, text in {
+    "integer": "-12", "plus": "+7", "decimal": "12.5", "leading-point": ".5", "trailing-point": "3.",
+    "exponent": "1.25e-3", "capital-exponent": "4E2", "fraction": "-7/3", "tenth": "0.1",
+    "tiny": "1e-1000", "long": "123456789012345678901234567890.000000000000000000001",
+    "largest-exponent": "1e100000", "exponent-too-large": "1e100001", "nan": "nan", "zero-denominator": "1/0",
+    "newline": "1\nanisocert: fake second line", "hex": "0x10", "double-sign": "--1", "empty-exponent": "1e",
+    "lone-point": ".", "negative-zero": "-0", "leading-zeros": "00012", "subnormal": "4.9406564584124654e-324",
+    "largest-double": "1.7976931348623157e308", "halfway": "9007199254740993",
+}.items():
+    put("exact_numbers", name, text)
+
+# filtered_predicates: one degenerate input per check (header byte = the check), and hostile values.
+nan, inf = float("nan"), float("inf")
+put("filtered_predicates", "orientation-collinear", slots([0], 0, 0, 1, 1, 2, 2))
+put("filtered_predicates", "orientation-nearly-collinear", slots([0], 0.1, 0.1, 0.2, 0.2, 0.30000000000000004, 0.3))
+put("filtered_predicates", "orientation-nan", slots([0], nan, 0, 1, 1, 2, 2))
+put("filtered_predicates", "incircle-cocircular-square", slots([1], 0, 0, 1, 0, 1, 1, 0, 1, 1, 0, 1))
+put("filtered_predicates", "incircle-cocircular-metric", slots([1], 0, 0, 2, 0, 2, 1, 0, 1, 1, 0, 4))
+put("filtered_predicates", "incircle-infinity", slots([1], 0, 0, 1, 0, 1, 1, 0, inf, 1, 0, 1))
+put("filtered_predicates", "bisector-on", slots([2], 0.5, 7, 0, 0, 1, 0, 1, 0, 1, 1, 0, 1))
+for k in range(3, 11):
+    put("filtered_predicates", f"check-{k}-zeros", slots([k], *([0.0] * 12)))
+    put("filtered_predicates", f"check-{k}-extremes", slots([k], 1.7976931348623157e308, -5e-324, 1, 2.2250738585072014e-308, -1, 0.5, 3, 1e300, 1e-300, 2, 1, 1))
+put("filtered_predicates", "root-sum-zero", slots([9], 3, -1, 9))
+put("filtered_predicates", "enclosure-third", slots([10], 1, 3))
+
+# conics_second_engine: each construction (first byte), coefficients in [-6, 6] as byte % 13 - 6.
+def conic_bytes(kind, *ints):
+    return bytes([kind] + [(i + 6) % 13 for i in ints])
+
+put("conics_second_engine", "circles", conic_bytes(0, 1, 0, 1, 0, 0, -4, 1, 0, 1, -2, 0, 0))
+put("conics_second_engine", "pencil-four-points", conic_bytes(1, 0, 0, 1, 0, 0, 1, 1, 1, 2, -1))
+put("conics_second_engine", "tangent", conic_bytes(2, 1, 0, 1, 0, 0, -1, 1, 0, 2))
+put("conics_second_engine", "shared-line", conic_bytes(3, 0, 0, 1, 1, 2, 0, 0, 2, -1, 3))
+put("conics_second_engine", "singular-point", conic_bytes(4, 0, 0, 1, 0, 0, 1, 1, 1, -1, 1))
+
+# diagram_brute_force: sites, shape (0 square, 1 triangle, 2 L), then x, y (eighths), a, b, c per site.
+put("diagram_brute_force", "two-isotropic", bytes([1, 0, 2, 4, 0, 3, 0, 6, 4, 0, 3, 0]))
+put("diagram_brute_force", "four-cocircular", bytes([3, 0, 2, 2, 0, 3, 0, 6, 2, 0, 3, 0, 6, 6, 0, 3, 0, 2, 6, 0, 3, 0]))
+put("diagram_brute_force", "anisotropic-l-shape", bytes([4, 2, 1, 1, 3, 5, 2, 3, 1, 0, 3, 1, 1, 3, 1, 0, 1, 2, 4, 3, 0]))
+put("diagram_brute_force", "corner-site", bytes([2, 1, 0, 0, 0, 3, 0, 4, 4, 1, 4, 2]))
+
+# star_refiner: refiner, field, shape, stretch, seed, then field and refiner parameter scales (2 = x1).
+put("star_refiner", "constant-square", bytes([0, 0, 0, 2, 1] + [2] * 12))
+put("star_refiner", "linear-l-shape", bytes([0, 1, 3, 2, 2] + [2] * 12))
+put("star_refiner", "field-2-pentagon", bytes([0, 2, 4, 2, 3] + [2] * 12))
+put("star_refiner", "field-3-triangle", bytes([0, 3, 2, 2, 4] + [1] * 12))
+
+# certify_simple: k − 2, metric mode, corruption, then perturbations, metrics, diagonals.
+put("certify_simple", "grid-identity", bytes([1, 0, 0] + [4] * 8 + [0, 1, 0, 1, 0, 1, 0, 1, 0]))
+put("certify_simple", "grid-shared-metric", bytes([2, 1, 0] + [4, 5, 3, 4, 4, 4, 2, 6] + [1, 3, 2] + [1, 0] * 8))
+put("certify_simple", "grid-per-vertex", bytes([3, 2, 0] + list(range(40))))
+put("certify_simple", "duplicated-triangle", bytes([1, 0, 1] + [4] * 8 + [0] * 9 + [3]))
+put("certify_simple", "clockwise-triangle", bytes([1, 0, 2] + [4] * 8 + [0] * 9 + [2]))
+put("certify_simple", "missing-triangle", bytes([1, 0, 3] + [4] * 8 + [0] * 9 + [1]))
+put("certify_simple", "coincident-vertices", bytes([1, 0, 4] + [4] * 8 + [0] * 9 + [0, 1]))
+put("certify_simple", "folded", bytes([2, 0, 0] + [8, 8, 0, 0, 8, 0, 0, 8] + [1, 0] * 8))
