@@ -30,7 +30,9 @@ struct Insertion {
 
 struct RefineResult {
   geometry::Mesh<double> mesh;
-  bool consistent = false;      // the refiner's output condition holds (star sets: every star triangle is in its vertices' stars)
+  // The run finished (no rule applies anywhere: not stopped by a budget or a stall) and the
+  // refiner's output condition holds (star sets: every star triangle is in its vertices' stars).
+  bool consistent = false;
   std::string stop_reason;      // that condition's name, the budget that stopped it, or why it cannot go on
   std::string last_rule = "none";                            // the rule still firing when it stopped
   std::vector<std::pair<std::string, std::size_t>> rule_counts;  // insertions per rule, in priority order

@@ -65,11 +65,14 @@ class StarRefiner {
     return false;
   }
 
-  StarResult result(std::string stop_reason) const {
+  // finished: the run ended because no rule applies anywhere (not a budget, not a stall).
+  StarResult result(std::string stop_reason, bool finished) const {
     StarResult r;
     r.mesh.triangles = stars_.consistent_triangles(r.inconsistent_triangles);
     r.empty_stars = empty_stars();
-    r.consistent = r.inconsistent_triangles == 0 && r.empty_stars == 0;
+    // A run stopped early can have consistent stars while its rules still fire (ρ₀, γ₀ unmet):
+    // only a finished run claims its output condition.
+    r.consistent = finished && r.inconsistent_triangles == 0 && r.empty_stars == 0;
     r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
     r.mesh.segments = boundary_.segments();
     r.stop_reason = std::move(stop_reason);
@@ -187,7 +190,8 @@ StarResult refine_star(const common::Domain& domain, const fields::MetricField& 
   const common::Stopwatch clock;
   StarRefiner r(domain, field, p);
   std::string stop = common::refine_until_done(r, p, clock, progress);
-  StarResult result = r.result(std::move(stop));
+  const bool finished = r.stalled().empty() && r.queued() == 0 && stop == r.done();
+  StarResult result = r.result(std::move(stop), finished);
   result.seconds = clock.seconds();
   return result;
 }
