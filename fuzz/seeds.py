@@ -60,11 +60,11 @@ put("diagram_brute_force", "four-cocircular", bytes([3, 0, 2, 2, 0, 3, 0, 6, 2, 
 put("diagram_brute_force", "anisotropic-l-shape", bytes([4, 2, 1, 1, 3, 5, 2, 3, 1, 0, 3, 1, 1, 3, 1, 0, 1, 2, 4, 3, 0]))
 put("diagram_brute_force", "corner-site", bytes([2, 1, 0, 0, 0, 3, 0, 4, 4, 1, 4, 2]))
 
-# star_refiner: refiner, field, shape, stretch, seed, then field and refiner parameter scales (2 = x1).
-put("star_refiner", "constant-square", bytes([0, 0, 0, 2, 1] + [2] * 12))
-put("star_refiner", "linear-l-shape", bytes([0, 1, 3, 2, 2] + [2] * 12))
-put("star_refiner", "field-2-pentagon", bytes([0, 2, 4, 2, 3] + [2] * 12))
-put("star_refiner", "field-3-triangle", bytes([0, 3, 2, 2, 4] + [1] * 12))
+# refiners_certified: refiner, field, shape, stretch, seed, then field and refiner parameter scales (2 = x1).
+put("refiners_certified", "constant-square", bytes([0, 0, 0, 2, 1] + [2] * 12))
+put("refiners_certified", "linear-l-shape", bytes([0, 1, 3, 2, 2] + [2] * 12))
+put("refiners_certified", "field-2-pentagon", bytes([0, 2, 4, 2, 3] + [2] * 12))
+put("refiners_certified", "field-3-triangle", bytes([0, 3, 2, 2, 4] + [1] * 12))
 
 # certify_simple: k − 2, metric mode, corruption, then perturbations, metrics, diagonals.
 put("certify_simple", "grid-identity", bytes([1, 0, 0] + [4] * 8 + [0, 1, 0, 1, 0, 1, 0, 1, 0]))
