@@ -4,6 +4,7 @@
 #include "cli/usage_error.hpp"
 #include "fields/registry.hpp"
 #include "io/formats/registry.hpp"
+#include "numbers/excerpt.hpp"
 
 namespace anisocert::cli {
 namespace {
@@ -15,8 +16,8 @@ fields::Parameters parameters_of(const std::vector<std::string>& params) {
   fields::Parameters p;
   for (const std::string& kv : params) {
     const auto eq = kv.find('=');
-    if (eq == std::string::npos) throw UsageError("--param \"" + kv + "\": expected name=value");
-    p[kv.substr(0, eq)] = parse_option("--param " + kv.substr(0, eq), kv.substr(eq + 1)).convert_to<double>();
+    if (eq == std::string::npos) throw UsageError("--param " + quoted_excerpt(kv) + ": expected name=value");
+    p[kv.substr(0, eq)] = parse_option("--param " + excerpt(kv.substr(0, eq)), kv.substr(eq + 1)).convert_to<double>();
   }
   return p;
 }
@@ -27,7 +28,7 @@ FieldSource background_source(const std::string& text) {
   const auto colon = spec.find(':');
   const std::string mesh_path = spec.substr(0, colon), metric_path = colon == std::string::npos ? "" : spec.substr(colon + 1);
   if (mesh_path.empty() || (colon != std::string::npos && metric_path.empty()))
-    throw UsageError("--field \"" + text + "\": expected background:MESH or background:MESH:METRIC");
+    throw UsageError("--field " + quoted_excerpt(text) + ": expected background:MESH or background:MESH:METRIC");
   io::MeshFile file;
   try {
     file = io::read_mesh_file(mesh_path, "", {}, metric_path);

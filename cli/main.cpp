@@ -4,6 +4,7 @@
 
 #include "cli/command.hpp"
 #include "cli/usage_error.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -21,11 +22,12 @@ int main(int argc, char** argv) {
   try {
     const auto known = app.get_subcommands([&](CLI::App* s) { return argc > 1 && s->check_name(argv[1]); });
     if (argc > 1 && argv[1][0] != '-' && known.empty())
-      throw anisocert::cli::UsageError(std::string("unknown command \"") + argv[1] + "\" (see anisocert --help)");
+      throw anisocert::cli::UsageError("unknown command " + anisocert::quoted_excerpt(argv[1]) + " (see anisocert --help)");
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, for the command it follows
-    std::cerr << "anisocert: " << e.what() << " (see anisocert --help)\n";
+    // CLI11's message may quote an argument: one line of it, at most a few hundred characters.
+    std::cerr << "anisocert: " << anisocert::excerpt(e.what(), 300) << " (see anisocert --help)\n";
     return 2;
   } catch (const anisocert::cli::UsageError& e) {
     std::cerr << "anisocert: " << e.what() << "\n";

@@ -3,7 +3,9 @@
 #include "cli/usage_error.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -13,7 +15,7 @@ namespace anisocert::cli {
 
 Rational parse_option(const std::string& name, const std::string& text) {
   try {
-    return parse_rational(text);
+    return parse_input_number(text);
   } catch (const NumberSyntaxError& e) {
     throw UsageError(name + ": " + e.what());
   }
@@ -43,19 +45,33 @@ void write_files_atomically(const std::vector<OutputFile>& files) {
   const auto remove_partials = [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from; i < to; ++i) std::remove(partial(files[i]).c_str());
   };
+  // Why a file cannot be written, when the system said ("No such file or directory").
+  const auto reason = [](int error) { return error != 0 ? std::string(": ") + std::strerror(error) : std::string(); };
   for (std::size_t i = 0; i < files.size(); ++i) {
+    errno = 0;
     std::ofstream out(partial(files[i]), std::ios::binary | std::ios::trunc);
-    out << files[i].content;
-    out.flush();
+    if (out) {
+      try {
+        if (files[i].write) files[i].write(out);
+        else out << files[i].content;
+      } catch (...) {
+        out.close();
+        remove_partials(0, i + 1);
+        throw;
+      }
+      out.close();  // flushes: a full disk fails here at the latest
+    }
     if (!out) {
+      const int error = errno;
       remove_partials(0, i + 1);
-      throw UsageError("cannot write " + files[i].path);
+      throw UsageError("cannot write " + files[i].path + reason(error));
     }
   }
   for (std::size_t i = 0; i < files.size(); ++i)
     if (std::rename(partial(files[i]).c_str(), files[i].path.c_str()) != 0) {
+      const int error = errno;
       remove_partials(i, files.size());
-      throw UsageError("cannot write " + files[i].path);
+      throw UsageError("cannot write " + files[i].path + reason(error));
     }
 }
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,8 @@ namespace anisocert::cli {
 
 using Json = nlohmann::ordered_json;
 
-// Parses the text of option `name` exactly, or throws UsageError naming the option and text.
+// Parses the text of option `name` exactly, within the magnitudes anisocert reads
+// (parse_input_number), or throws UsageError naming the option and text.
 Rational parse_option(const std::string& name, const std::string& text);
 
 using io::as_printed;
@@ -31,6 +33,9 @@ std::string render(const Json& j);
 // UsageError naming the path that cannot be written.
 struct OutputFile {
   std::string path, content;
+  // When set, writes the file instead of `content`: an output too large to hold twice (a report
+  // listing every witness of a bad mesh) is streamed into the temporary file.
+  std::function<void(std::ostream&)> write = {};
 };
 void write_files_atomically(const std::vector<OutputFile>& files);
 void write_file_atomically(const std::string& path, const std::string& content);

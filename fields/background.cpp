@@ -35,8 +35,8 @@ const geometry::Mesh<Rational>& checked(const geometry::Mesh<Rational>& mesh) {
     const Sign o = predicates::orientation(mesh.sites[v[0]], mesh.sites[v[1]], mesh.sites[v[2]]);
     if (o == Sign::negative) throw BackgroundMeshError(triangle_text(t, v) + " is clockwise");
     if (o == Sign::zero)
-      throw BackgroundMeshError(triangle_text(t, v) + " is flat: " + geometry::exact_text(mesh.sites[v[0]]) + ", " +
-                                geometry::exact_text(mesh.sites[v[1]]) + " and " + geometry::exact_text(mesh.sites[v[2]]) +
+      throw BackgroundMeshError(triangle_text(t, v) + " is flat: " + geometry::point_excerpt(mesh.sites[v[0]]) + ", " +
+                                geometry::point_excerpt(mesh.sites[v[1]]) + " and " + geometry::point_excerpt(mesh.sites[v[2]]) +
                                 " are collinear");
   }
   return mesh;
@@ -64,7 +64,7 @@ std::vector<Point2<FilterInterval>> site_intervals(const std::vector<Point2<Rati
     x.push_back(around(sites[i]));
     if (!std::isfinite(x.back().x.lo) || !std::isfinite(x.back().x.hi) || !std::isfinite(x.back().y.lo) ||
         !std::isfinite(x.back().y.hi))
-      throw BackgroundMeshError("background site " + std::to_string(i) + " " + geometry::exact_text(sites[i]) +
+      throw BackgroundMeshError("background site " + std::to_string(i) + " " + geometry::point_excerpt(sites[i]) +
                                 " lies beyond the range of doubles");
   }
   return x;

@@ -1,6 +1,7 @@
 #include "fields/registry.hpp"
 
 #include "fields/builtin.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -28,7 +29,7 @@ MetricField make_field(const std::string& name, const Parameters& given) {
     if (f.name != name) continue;
     Parameters p = f.defaults;
     for (const auto& [k, v] : given) {
-      if (!p.count(k)) throw std::invalid_argument("field " + name + " has no parameter \"" + k + "\"");
+      if (!p.count(k)) throw std::invalid_argument("field " + name + " has no parameter " + quoted_excerpt(k));
       if (!std::isfinite(v)) throw std::invalid_argument("parameter " + k + " must be finite");
       p[k] = v;
     }
@@ -36,7 +37,7 @@ MetricField make_field(const std::string& name, const Parameters& given) {
   }
   std::string known;
   for (const std::string& n : field_names()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown field \"" + name + "\" (" + known + ")");
+  throw std::invalid_argument("unknown field " + quoted_excerpt(name) + " (" + known + ")");
 }
 
 void require_positive(const std::string& field, const Parameters& p, const char* name) {

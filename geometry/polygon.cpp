@@ -1,5 +1,7 @@
 #include "geometry/polygon.hpp"
 
+#include "numbers/excerpt.hpp"
+
 namespace anisocert::geometry {
 namespace {
 
@@ -26,7 +28,7 @@ Point touching_point(const Point& p1, const Point& p2, const Point& q1, const Po
 
 }  // namespace
 
-std::string exact_text(const Point& p) { return "(" + to_exact_string(p.x) + ", " + to_exact_string(p.y) + ")"; }
+std::string point_excerpt(const Point& p) { return "(" + exact_excerpt(p.x) + ", " + exact_excerpt(p.y) + ")"; }
 
 std::string describe(const PolygonDefect& d, const Polygon<Rational>& v, const std::string& name) {
   const std::size_t m = v.size();
@@ -36,13 +38,13 @@ std::string describe(const PolygonDefect& d, const Polygon<Rational>& v, const s
   };
   switch (d.kind) {
     case PolygonDefect::Kind::zero_length_edge:
-      return corner(d.i) + " and " + corner((d.i + 1) % m) + " are the same point " + exact_text(v[d.i]) + " (edge " +
+      return corner(d.i) + " and " + corner((d.i + 1) % m) + " are the same point " + point_excerpt(v[d.i]) + " (edge " +
              std::to_string(d.i) + " has length zero)";
     case PolygonDefect::Kind::folds_back:
-      return "the boundary folds back at " + corner(d.i) + " " + exact_text(v[d.i]) + ": " + edge((d.i + m - 1) % m) + " and " +
+      return "the boundary folds back at " + corner(d.i) + " " + point_excerpt(v[d.i]) + ": " + edge((d.i + m - 1) % m) + " and " +
              edge(d.i) + " overlap";
     case PolygonDefect::Kind::edges_meet:
-      return edge(d.i) + " and " + edge(d.j) + (d.crossing ? " cross" : " touch") + " at " + exact_text(d.at) +
+      return edge(d.i) + " and " + edge(d.j) + (d.crossing ? " cross" : " touch") + " at " + point_excerpt(d.at) +
              "; the domain must be a simple polygon";
     case PolygonDefect::Kind::clockwise:
       return "the vertices are clockwise; list the vertices counter-clockwise";

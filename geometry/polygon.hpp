@@ -87,10 +87,11 @@ struct PolygonDefect {
 };
 std::optional<PolygonDefect> simplicity_defect(const Polygon<Rational>& polygon);
 
-// "(x, y)" with each coordinate's exact text (to_exact_string).
-std::string exact_text(const Point2<Rational>& p);
+// "(x, y)" as messages name a point: each coordinate as exact_excerpt shows it (numbers/excerpt.hpp:
+// its exact text when short, else about ten digits), so that a message stays one short line.
+std::string point_excerpt(const Point2<Rational>& p);
 
-// One line on the defect, naming corners as name[k] (e.g. "domain[3]") and points exactly.
+// One line on the defect, naming corners as name[k] (e.g. "domain[3]") and points as point_excerpt does.
 std::string describe(const PolygonDefect& defect, const Polygon<Rational>& polygon, const std::string& name);
 
 }  // namespace anisocert::geometry

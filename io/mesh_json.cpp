@@ -43,7 +43,7 @@ class MeshReader : SchemaReader {
       m.domain = domain(doc.at("domain"));
       for (std::size_t i = 0; i < m.sites.size(); ++i)
         if (!geometry::in_closed_polygon(m.sites[i], m.domain))
-          fail("", indexed("sites", i) + " " + geometry::exact_text(m.sites[i]) + " lies outside the domain");
+          fail("", indexed("sites", i) + " " + geometry::point_excerpt(m.sites[i]) + " lies outside the domain");
     } else if (!doc.contains("triangles")) {
       m.domain = default_box(m.sites);
     }
@@ -83,7 +83,7 @@ class MeshReader : SchemaReader {
     for (std::size_t k = 1; k < order.size(); ++k) {
       const Point &p = sites[order[k - 1]], &q = sites[order[k]];
       if (p.x == q.x && p.y == q.y)
-        fail("", indexed("sites", order[k - 1]) + " and " + indexed("sites", order[k]) + " coincide at " + geometry::exact_text(p));
+        fail("", indexed("sites", order[k - 1]) + " and " + indexed("sites", order[k]) + " coincide at " + geometry::point_excerpt(p));
     }
   }
 

@@ -1,5 +1,7 @@
 #include "numbers/rational.hpp"
 
+#include "numbers/excerpt.hpp"
+
 #include <cctype>
 #include <cmath>
 
@@ -19,8 +21,9 @@ Integer decimal_integer(const std::string& digits) {
   return z;
 }
 
+// The text is quoted as an excerpt (numbers/excerpt.hpp): one short line, whatever it holds.
 [[noreturn]] void reject(std::string_view text, const std::string& why) {
-  throw NumberSyntaxError("\"" + std::string(text) + "\" is not an exact number: " + why);
+  throw NumberSyntaxError(quoted_excerpt(text) + " is not an exact number: " + why);
 }
 
 Integer parse_integer(std::string_view whole, std::string_view digits_with_sign) {
@@ -30,7 +33,7 @@ Integer parse_integer(std::string_view whole, std::string_view digits_with_sign)
     negative = d.front() == '-';
     d.remove_prefix(1);
   }
-  if (d.empty() || !all_digits(d)) reject(whole, "expected an integer, got \"" + std::string(digits_with_sign) + "\"");
+  if (d.empty() || !all_digits(d)) reject(whole, "expected an integer, got \"" + excerpt(digits_with_sign) + "\"");
   Integer z = decimal_integer(std::string(d));
   return negative ? Integer(-z) : z;
 }
@@ -90,6 +93,28 @@ Rational parse_rational(std::string_view text) {
     return Rational(num, den);
   }
   return parse_decimal(text);
+}
+
+bool within_magnitude_limit(const Rational& q) {
+  static const Rational largest = Rational(boost::multiprecision::pow(Integer(2), max_magnitude_bits));
+  static const Rational smallest = 1 / largest;
+  if (q == 0) return true;
+  // Bit lengths first: they decide all but the values within a factor 4 of a bound.
+  const long bits = static_cast<long>(mpz_sizeinbase(mpq_numref(q.backend().data()), 2)) -
+                    static_cast<long>(mpz_sizeinbase(mpq_denref(q.backend().data()), 2));  // 2^(bits-1) < |q| < 2^(bits+1)
+  if (bits < max_magnitude_bits && bits > -max_magnitude_bits) return true;
+  if (bits > max_magnitude_bits + 1 || bits < -max_magnitude_bits - 1) return false;
+  const Rational a = abs(q);
+  return a >= smallest && a <= largest;
+}
+
+Rational parse_input_number(std::string_view text) {
+  Rational q = parse_rational(text);
+  if (!within_magnitude_limit(q))
+    throw NumberSyntaxError(quoted_excerpt(text) + " is outside the magnitudes anisocert reads (0, or 2^-" +
+                            std::to_string(max_magnitude_bits) + " to 2^" + std::to_string(max_magnitude_bits) +
+                            " in absolute value)");
+  return q;
 }
 
 Rational rational_from_double(double x) {

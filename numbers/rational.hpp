@@ -29,6 +29,18 @@ struct NumberSyntaxError : std::invalid_argument {
 Rational parse_rational(std::string_view text);
 inline constexpr long max_decimal_exponent = 100000;
 
+// The magnitudes a number read from input (a file, a command line) may have: 0, or
+// 2^-max_magnitude_bits <= |q| <= 2^max_magnitude_bits (about 7.4e-332 to 1.4e331), a little past
+// the doubles' (2^-1074 to 2^1024). Beyond them (1e-100000 is a valid decimal) every predicate
+// would fall to exact arithmetic on integers of hundreds of thousands of bits: such numbers are
+// refused, not rounded. Decided exactly.
+inline constexpr long max_magnitude_bits = 1100;
+bool within_magnitude_limit(const Rational& q);
+
+// parse_rational, then a NumberSyntaxError naming the text (an excerpt) when the value is beyond
+// within_magnitude_limit: how every reader and every numeric option reads its numbers.
+Rational parse_input_number(std::string_view text);
+
 // The rational a binary double denotes, exactly (0.1 gives 3602879701896397/36028797018963968).
 // Throws NumberSyntaxError for NaN and infinities, naming the value.
 Rational rational_from_double(double x);

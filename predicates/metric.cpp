@@ -1,22 +1,24 @@
 #include "predicates/metric.hpp"
 
+#include "numbers/excerpt.hpp"
+
 #include <string>
 
 namespace anisocert::predicates {
 namespace {
 
 std::string show(const Sym2<Rational>& m) {
-  return "[" + to_exact_string(m.m11) + ", " + to_exact_string(m.m12) + ", " + to_exact_string(m.m22) + "]";
+  return "[" + exact_excerpt(m.m11) + ", " + exact_excerpt(m.m12) + ", " + exact_excerpt(m.m22) + "]";
 }
 std::string show(const Sym3<Rational>& m) {
-  return "[" + to_exact_string(m.m11) + ", " + to_exact_string(m.m12) + ", " + to_exact_string(m.m13) + ", " +
-         to_exact_string(m.m22) + ", " + to_exact_string(m.m23) + ", " + to_exact_string(m.m33) + "]";
+  return "[" + exact_excerpt(m.m11) + ", " + exact_excerpt(m.m12) + ", " + exact_excerpt(m.m13) + ", " +
+         exact_excerpt(m.m22) + ", " + exact_excerpt(m.m23) + ", " + exact_excerpt(m.m33) + "]";
 }
 
 void require_positive(const Rational& pivot, const std::string& matrix, const std::string& what) {
   if (!(pivot > 0))
     throw NotPositiveDefinite("metric " + matrix + " is not positive definite: " + what + " = " +
-                              to_exact_string(pivot) + " is not > 0");
+                              exact_excerpt(pivot) + " is not > 0");
 }
 
 // q = r^k for a rational r: exact integer k-th roots of numerator and denominator.

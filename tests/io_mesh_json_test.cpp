@@ -83,8 +83,50 @@ TEST(SiteSet, MalformedJsonNamesTheBytePosition) {
   EXPECT_ERROR("", "t.json: invalid JSON at byte ");
   // Beyond double range: the JSON parser refuses it; a string holds any exact number.
   EXPECT_ERROR(R"({"sites": [{"x": 1e400, "y": 0, "metric": [1, 0, 1]}]})", "t.json: invalid JSON at byte ");
-  EXPECT_EQ(read(R"({"sites": [{"x": "1e400", "y": 0, "metric": [1, 0, 1]}]})").sites[0].x,
-            Rational(boost::multiprecision::pow(Integer(10), 400)));
+  EXPECT_EQ(read(R"({"sites": [{"x": "1e320", "y": 0, "metric": [1, 0, 1]}]})").sites[0].x,
+            Rational(boost::multiprecision::pow(Integer(10), 320)));
+}
+
+TEST(SiteSet, NumbersBeyondTheMagnitudeLimitAreRefusedByName) {
+  // Past 2^±1100 (numbers/rational.hpp), as the text formats refuse them: 1e-1000 made anisocert
+  // diagram run for seconds, 1e-5000 without end.
+  EXPECT_ERROR(R"({"sites": [{"x": "1e400", "y": 0, "metric": [1, 0, 1]}]})",
+               "t.json: sites[0].x: \"1e400\" is outside the magnitudes anisocert reads");
+  EXPECT_ERROR(R"({"sites": [{"x": 0, "y": 0, "metric": [1, 0, "1e-1000"]}]})",
+               "t.json: sites[0].metric[2]: \"1e-1000\" is outside the magnitudes anisocert reads");
+  EXPECT_ERROR(R"({"sites": [{"x": 1e-400, "y": 0, "metric": [1, 0, 1]}]})",  // a plain JSON number too
+               "t.json: sites[0].x: \"1e-400\" is outside the magnitudes anisocert reads");
+  EXPECT_ERROR(R"({"sites": [{"x": 0, "y": 0, "metric": [1, 0, 1]}], "domain": [[0, 0], ["1e-2000", 0], [0, 1]]})",
+               "t.json: domain[1][0]: \"1e-2000\" is outside the magnitudes anisocert reads");
+  EXPECT_EQ(read(R"({"sites": [{"x": "1e-330", "y": 0, "metric": [1, 0, 1]}]})").sites[0].x, parse_rational("1e-330"));
+}
+
+TEST(SiteSet, MessagesQuoteOneShortLine) {
+  // A newline in a number, a long key, a long number: the message stays one short line.
+  const std::string long_key(5000, 'k');
+  const std::string long_number = "0." + std::string(5000, '3');
+  for (const std::string& doc :
+       {std::string(R"({"sites": [{"x": "1\nanisocert: forged", "y": 0, "metric": [1, 0, 1]}]})"),
+        R"({"sites": [{"x": 0, "y": 0, "metric": [1, 0, 1], ")" + long_key + R"(": 1}]})",
+        R"({")" + long_key + R"(": 1, ")" + long_key + R"(": 2})",
+        R"({"sites": [{"x": ")" + long_number + R"(", "y": 0, "metric": [1, 0, 1]}, {"x": ")" + long_number +
+            R"(", "y": 0, "metric": [1, 0, 1]}]})",
+        R"({"sites": [{"x": ")" + long_number + R"(", "y": 0, "metric": [1, 0, 1]}], "domain": [[1, 0], [2, 0], [1, 1]]})",
+        R"({"sites": [{"x": ")" + long_number + R"()" + "\n" + R"(", "y": 0, "metric": [1, 0, 1]}]})"}) {
+    try {
+      read(doc);
+      ADD_FAILURE() << doc.substr(0, 80);
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+      EXPECT_LT(m.size(), 250u) << m;
+    }
+  }
+  EXPECT_ERROR(R"({"sites": [{"x": "1\nanisocert: forged", "y": 0, "metric": [1, 0, 1]}]})",
+               "t.json: sites[0].x: \"1\\x0aanisocert: forged\" is not an exact number");
+  EXPECT_ERROR(R"({"sites": [{"x": ")" + long_number + R"(", "y": 0, "metric": [1, 0, 1]}, {"x": ")" + long_number +
+                   R"(", "y": 0, "metric": [1, 0, 1]}]})",
+               "t.json: sites[0] and sites[1] coincide at (≈3.333333333e-01, 0)");
 }
 
 TEST(SiteSet, TopLevelErrors) {

@@ -7,7 +7,8 @@
 //          "refine"   a refiner of the registry on "domain" and a built-in field, once per entry of
 //                     "params": consistency, and the exact certifier's verdict at the run's ρ₀, γ₀;
 //          "cli"      `anisocert ARGS` ({case}: the folder, {tmp}: a fresh temporary folder): the
-//                     exit code, fragments of standard output and error, files that must not exist;
+//                     exit code, fragments of standard output and error, the number of lines on
+//                     standard error, files that must not exist;
 //          "conics"   the exact common points of two conics and the signs of polynomials there.
 #include "fields/registry.hpp"
 #include "io/mesh_json.hpp"
@@ -116,6 +117,9 @@ void run_cli(const fs::path& dir, const Json& c) {
   if (e.contains("stderr_contains")) {
     EXPECT_NE(r.err.find(e["stderr_contains"].get<std::string>()), std::string::npos) << r.err;
   }
+  if (e.contains("stderr_lines")) {  // the contract for bad input: one line
+    EXPECT_EQ(static_cast<std::size_t>(std::count(r.err.begin(), r.err.end(), '\n')), e["stderr_lines"].get<std::size_t>()) << r.err;
+  }
   for (const Json& f : e.value("absent", Json::array())) {
     EXPECT_FALSE(fs::exists(expand(f.get<std::string>()))) << f;
   }
@@ -167,7 +171,7 @@ TEST_P(Regression, StillAnsweredRight) {
     expect_only_keys(c.at("expect"), {"why", "consistent", "certified"}, "expect");
   } else if (kind == "cli") {
     expect_only_keys(c, {"caught", "found_by", "run", "args", "expect"}, "case.json");
-    expect_only_keys(c.at("expect"), {"why", "exit", "stdout_contains", "stderr_contains", "absent"}, "expect");
+    expect_only_keys(c.at("expect"), {"why", "exit", "stdout_contains", "stderr_contains", "stderr_lines", "absent"}, "expect");
   } else if (kind == "conics") {
     expect_only_keys(c, {"caught", "found_by", "run", "conics", "expect"}, "case.json");
     expect_only_keys(c.at("expect"), {"why", "points", "signs"}, "expect");

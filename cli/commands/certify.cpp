@@ -8,6 +8,7 @@
 #include "io/formats/registry.hpp"
 #include "io/reports/certify_report.hpp"
 #include "io/svg/certify_svg.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -33,7 +34,7 @@ oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
     if (k == "valid") o.valid = true;
     else if (k == "uniform") o.uniform = true;
     else if (k == "metric") o.metric = true;
-    else throw UsageError("--checks: unknown check \"" + k + "\" (valid, uniform, metric)");
+    else throw UsageError("--checks: unknown check " + quoted_excerpt(k) + " (valid, uniform, metric)");
   }
   const io::BoundTexts& b = c.bounds;
   if (!b.rho0.empty()) o.rho0 = parse_option("--rho0", b.rho0);
@@ -69,7 +70,7 @@ std::vector<predicates::Sym2<Rational>> field_metrics(const CertifyCommandOption
     const auto& p = mesh.sites[i];
     if (source.background) {
       const auto m = source.background->metric_at(p);
-      if (!m) throw UsageError("--field " + c.field + ": vertex " + std::to_string(i) + " " + geometry::exact_text(p) +
+      if (!m) throw UsageError("--field " + c.field + ": vertex " + std::to_string(i) + " " + geometry::point_excerpt(p) +
                                " lies outside the background mesh");
       metrics.push_back(*m);
     } else {

@@ -9,6 +9,7 @@
 #include "io/formats/registry.hpp"
 #include "io/mesh_json.hpp"
 #include "io/svg/mesh_svg.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -37,7 +38,7 @@ struct RefineOptions {
 
 int run_refine(const RefineOptions& o) {
   const refiners::RefinerEntry* entry = refiners::find_refiner(o.algo);
-  if (!entry) throw UsageError("--algo: unknown refiner \"" + o.algo + "\" (" + names_of(refiners::refiner_names()) + ")");
+  if (!entry) throw UsageError("--algo: unknown refiner " + quoted_excerpt(o.algo) + " (" + names_of(refiners::refiner_names()) + ")");
   refiners::ParameterValues values;
   for (const auto& spec : entry->parameters) values[spec.name] = o.values.at(spec.name);
   for (const auto& [name, option] : o.options)

@@ -5,6 +5,7 @@
 
 #include "cli/theory_output.hpp"
 #include "cli/usage_error.hpp"
+#include "numbers/excerpt.hpp"
 #include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_lemma_factors.hpp"
 #include "theory/ls_theorem11.hpp"
@@ -27,7 +28,7 @@ const std::vector<std::string> default_thetas = {"0", "5", "10", "15", "20"};
 Rational admissible_theta(const std::string& text, const Interval& theta_max, int digits) {
   Rational theta = parse_option("--theta", text);
   if (!theory::ls_t11_theta_admissible(theta))
-    throw UsageError("--theta " + text + ": out of range: LS Theorem 11 needs 0 <= θ_bound < arcsin(1/(2√2)) = " +
+    throw UsageError("--theta " + excerpt(text) + ": out of range: LS Theorem 11 needs 0 <= θ_bound < arcsin(1/(2√2)) = " +
                      enclosure_text(theta_max, digits, 16) + " degrees");
   return theta;
 }

@@ -4,6 +4,7 @@
 #include "cli/theory_output.hpp"
 #include "cli/command.hpp"
 #include "cli/usage_error.hpp"
+#include "numbers/excerpt.hpp"
 #include "theory/bwy_section4.hpp"
 #include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_theorem9.hpp"
@@ -23,7 +24,7 @@ struct BwyOptions {
 int run_bwy(const BwyOptions& o) {
   const OutputOptions& out = o.output;
   const Rational B = parse_option("--B", o.B);
-  if (!(B > 1)) throw UsageError("--B " + o.B + ": BWY Lemma 2 needs a shape bound B > 1");
+  if (!(B > 1)) throw UsageError("--B " + excerpt(o.B) + ": BWY Lemma 2 needs a shape bound B > 1");
   const Interval gamma_max = theory::bwy_lemma2_gamma_max(B, out.precision());
   const anisocert::DecimalEnclosure printed = anisocert::to_decimal(gamma_max, out.digits);
   if (!theory::bwy_lemma2_gamma_max_bracket_verified(B, parse_rational(printed.lo), parse_rational(printed.hi)))
@@ -36,7 +37,7 @@ int run_bwy(const BwyOptions& o) {
   int exit_code = 0;
   if (!o.G.empty()) {
     const Rational G = parse_option("--G", o.G);
-    if (!(G >= 1)) throw UsageError("--G " + o.G + ": the distortion coefficient G must be >= 1");
+    if (!(G >= 1)) throw UsageError("--G " + excerpt(o.G) + ": the distortion coefficient G must be >= 1");
     const theory::BwyConditions c = theory::bwy_s42_conditions(B, G);
     const theory::BwyInterdistanceFactors f = theory::bwy_s42_factors(B, G, out.precision());
     const ConditionReport r = report_conditions({

@@ -3,6 +3,7 @@
 #include "cli/theory_output.hpp"
 #include "cli/command.hpp"
 #include "cli/usage_error.hpp"
+#include "numbers/excerpt.hpp"
 #include "theory/ls_theorem9.hpp"
 
 #include <sstream>
@@ -19,8 +20,8 @@ struct ChiOptions {
 int run_chi(const ChiOptions& o) {
   const Rational beta = parse_option("--beta", o.beta);
   const Rational gamma = parse_option("--gamma", o.gamma);
-  if (!(beta > 0)) throw UsageError("--beta " + o.beta + ": β must be > 0 (χ = 1/(2β) − (γ²−1)β/2)");
-  if (!(gamma > 0)) throw UsageError("--gamma " + o.gamma + ": γ must be > 0");
+  if (!(beta > 0)) throw UsageError("--beta " + excerpt(o.beta) + ": β must be > 0 (χ = 1/(2β) − (γ²−1)β/2)");
+  if (!(gamma > 0)) throw UsageError("--gamma " + excerpt(o.gamma) + ": γ must be > 0");
   const OutputOptions& out = o.output;
   const Rational chi = theory::ls_chi(beta, gamma);
   const bool gamma_ok = theory::ls_t9_gamma_in_range(gamma);

@@ -6,6 +6,7 @@
 #include "io/formats/freefem.hpp"
 
 #include "io/formats/text_reader.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -33,8 +34,8 @@ int read_vertex(TextReader& r, const std::string& what, std::int64_t nv) {
 // Nothing but blanks after the declared entries.
 void expect_end(TextReader& r, const std::string& section, std::int64_t declared) {
   if (!r.at_end())
-    r.fail(section + ": more data than the header declares (" + std::to_string(declared) + "): \"" +
-           std::string(r.peek()) + "\"");
+    r.fail(section + ": more data than the header declares (" + std::to_string(declared) + "): " +
+           quoted_excerpt(r.peek()));
 }
 
 std::string entry(const char* kind, std::int64_t i) { return kind + std::string(" ") + std::to_string(i + 1); }
@@ -42,7 +43,7 @@ std::string entry(const char* kind, std::int64_t i) { return kind + std::string(
 // "nbv 1": a size h > 0, the metric I/h².
 Sym2<Rational> read_size(TextReader& r, const std::string& what) {
   const Rational h = r.number(what + ": size h");
-  if (h <= 0) r.fail(what + ": size h = " + to_exact_string(h) + " is not positive (the metric is I/h²)");
+  if (h <= 0) r.fail(what + ": size h = " + exact_excerpt(h) + " is not positive (the metric is I/h²)");
   return metric_of_size(h);
 }
 
@@ -50,8 +51,8 @@ Sym2<Rational> read_size(TextReader& r, const std::string& what) {
 Sym2<Rational> read_tensor(TextReader& r, const std::string& what) {
   Sym2<Rational> m{r.number(what + ": a11"), r.number(what + ": a21"), r.number(what + ": a22")};
   if (!positive_definite(m))
-    r.fail(what + ": metric a11 a21 a22 = " + to_exact_string(m.m11) + " " + to_exact_string(m.m12) + " " +
-           to_exact_string(m.m22) + " is not positive definite (a11 > 0 and a11 a22 - a21² > 0 required)");
+    r.fail(what + ": metric a11 a21 a22 = " + exact_excerpt(m.m11) + " " + exact_excerpt(m.m12) + " " +
+           exact_excerpt(m.m22) + " is not positive definite (a11 > 0 and a11 a22 - a21² > 0 required)");
   return m;
 }
 

@@ -11,6 +11,7 @@
 
 #include "io/formats/binary_reader.hpp"
 #include "io/formats/text_reader.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <algorithm>
 #include <array>
@@ -28,14 +29,6 @@ namespace gmsh_format {  // io/ is one unity-build unit: these names stay apart 
 using Metric = predicates::Sym2<Rational>;
 
 bool blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
-
-// s as a message shows it: quoted, at most 40 characters, anything unprintable as '?' (a binary
-// file may put any byte where a section name was expected).
-std::string as_shown(std::string_view s) {
-  std::string q = "\"";
-  for (char c : s.substr(0, 40)) q += c >= ' ' && c <= '~' ? c : '?';
-  return q + (s.size() > 40 ? "...\"" : "\"");
-}
 
 // § "elm-type": the number of nodes of each element type the manual lists (1 2-node line, 2
 // 3-node triangle, 3 4-node quadrangle, ..., 15 1-node point, ..., 93 125-node hexahedron); 0 for
@@ -104,7 +97,7 @@ class TextInput final : public Input {
   void skip_to_end(const std::string& section) override {  // by lines: a quoted name may hold any word
     const std::string end = "$End" + section;
     for (std::string_view t = r_.peek(); t != end; t = r_.peek()) {
-      if (t.empty()) r_.fail("the file ends before \"" + end + "\"");
+      if (t.empty()) r_.fail("the file ends before " + quoted_excerpt(end));
       r_.rest_of_line();
     }
   }
@@ -159,7 +152,7 @@ class BinaryInput final : public Input {
     } catch (const NumberSyntaxError&) {
     }
     if (!q || boost::multiprecision::denominator(*q) != 1 || *q < lo || *q > hi)
-      r_.fail_at(start, std::string(what) + " is " + as_shown(t) + ", not an integer in [" + std::to_string(lo) + ", " +
+      r_.fail_at(start, std::string(what) + " is " + quoted_excerpt(t) + ", not an integer in [" + std::to_string(lo) + ", " +
                             std::to_string(hi) + "]");
     return q->convert_to<std::int64_t>();
   }
@@ -194,7 +187,7 @@ class BinaryInput final : public Input {
       const std::size_t after = at + end.size();
       if ((at == 0 || bytes_[at - 1] == '\n') && (after == bytes_.size() || blank(bytes_[after]))) return r_.seek(at, end);
     }
-    r_.fail("the file ends before \"" + end + "\"");
+    r_.fail("the file ends before " + quoted_excerpt(end));
   }
   [[noreturn]] void fail(const std::string& what) override { r_.fail(what); }
 
@@ -225,8 +218,8 @@ void within(const std::string& section, const std::string& source, Read&& read) 
 
 void expect_end(Input& in, const std::string& section) {
   const std::string end = "$End" + section;
-  const std::string_view w = in.word("\"" + end + "\"");
-  if (w != end) in.fail("expected \"" + end + "\", found " + as_shown(w));
+  const std::string_view w = in.word(quoted_excerpt(end));
+  if (w != end) in.fail("expected " + quoted_excerpt(end) + ", found " + quoted_excerpt(w));
 }
 
 // An entity of $Entities or $PartitionedEntities, as the elements on it need it.
@@ -267,7 +260,7 @@ void add_point(Input& in, Reading& r, std::uint64_t tag) {
   Rational x = in.real("the x of " + node);
   Rational y = in.real("the y of " + node);
   const Rational z = in.real("the z of " + node);
-  if (z != 0) in.fail(node + " has z = " + to_exact_string(z) + ": the mesh must be planar (every z exactly 0)");
+  if (z != 0) in.fail(node + " has z = " + exact_excerpt(z) + ": the mesh must be planar (every z exactly 0)");
   r.f.mesh.sites.push_back({std::move(x), std::move(y)});
 }
 
@@ -490,7 +483,7 @@ void skip_data(Input& in, const DataHeader& h, bool per_element_node) {
 
 std::string values_text(const std::vector<Rational>& v) {
   std::string t;
-  for (const Rational& q : v) t += (t.empty() ? "" : ", ") + to_exact_string(q);
+  for (const Rational& q : v) t += (t.empty() ? "" : ", ") + exact_excerpt(q);
   return "[" + t + "]";
 }
 
@@ -498,14 +491,14 @@ std::string values_text(const std::vector<Rational>& v) {
 // 3×3 tensor row by row, symmetric exactly, whose z row and column the planar mesh ignores.
 Metric metric_of(Input& in, const std::string& node, const std::vector<Rational>& v) {
   if (v.size() == 1) {
-    if (v[0] <= 0) in.fail("the size of " + node + " is " + to_exact_string(v[0]) + ", not positive");
+    if (v[0] <= 0) in.fail("the size of " + node + " is " + exact_excerpt(v[0]) + ", not positive");
     return metric_of_size(v[0]);
   }
   if (v.size() == 3) return {v[0], v[1], v[2]};
   for (const auto& [i, j] : {std::pair<std::size_t, std::size_t>{1, 3}, {2, 6}, {5, 7}})  // m12 m21, m13 m31, m23 m32
     if (v[i] != v[j])
       in.fail("the tensor of " + node + ", " + values_text(v) + ", is not symmetric: value " + std::to_string(i + 1) +
-              " is " + to_exact_string(v[i]) + " but value " + std::to_string(j + 1) + " is " + to_exact_string(v[j]));
+              " is " + exact_excerpt(v[i]) + " but value " + std::to_string(j + 1) + " is " + exact_excerpt(v[j]));
   return {v[0], v[1], v[4]};
 }
 
@@ -608,8 +601,8 @@ void read_section(Input& in, int version, const std::string& section, Reading& r
 void read_sections(Input& in, const std::string& source, int version, Reading& r) {
   while (!in.at_end()) {
     const std::string name(in.word("a section"));
-    if (name.size() < 2 || name[0] != '$') in.fail("expected a section \"$Name\", found " + as_shown(name));
-    within(name, source, [&] {
+    if (name.size() < 2 || name[0] != '$') in.fail("expected a section \"$Name\", found " + quoted_excerpt(name));
+    within(excerpt(name), source, [&] {  // a binary file may put any byte in a section's name
       in.begin_data();
       read_section(in, version, name.substr(1), r);
       expect_end(in, name.substr(1));
@@ -632,7 +625,7 @@ Format read_format(TextReader& text) {
   } catch (const NumberSyntaxError&) {
   }
   const int version = q == Rational(22, 10) ? 22 : q == Rational(41, 10) ? 41 : 0;
-  if (version == 0) text.fail("version " + as_shown(v) + " is not supported (2.2 and 4.1 are)");
+  if (version == 0) text.fail("version " + quoted_excerpt(v) + " is not supported (2.2 and 4.1 are)");
   const bool binary = text.integer("the file-type", 0, 1) == 1;
   const std::int64_t data_size = text.integer("the data-size", INT64_MIN, INT64_MAX);
   if (data_size != 8) text.fail("data-size " + std::to_string(data_size) + " is not supported (8 is)");

@@ -2,6 +2,7 @@
 
 #include "io/formats/binary_reader.hpp"
 #include "io/formats/text_reader.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -279,14 +280,14 @@ std::vector<Sym2<Rational>> read_medit_sol(std::string_view bytes, const std::st
       const std::string at = "vertex " + std::to_string(i + 1);
       if (type == 1) {
         const Rational h = s.real("a size");
-        if (h <= 0) s.fail(at + ": the size " + to_exact_string(h) + " is not positive");
+        if (h <= 0) s.fail(at + ": the size " + exact_excerpt(h) + " is not positive");
         metrics.push_back(metric_of_size(h));
       } else {
         Rational m11 = s.real("m11"), m12 = s.real("m12"), m22 = s.real("m22");
         Sym2<Rational> m{std::move(m11), std::move(m12), std::move(m22)};
         if (!positive_definite(m))
-          s.fail(at + ": the metric [" + to_exact_string(m.m11) + " " + to_exact_string(m.m12) + " " +
-                 to_exact_string(m.m22) + "] is not positive definite");
+          s.fail(at + ": the metric [" + exact_excerpt(m.m11) + " " + exact_excerpt(m.m12) + " " +
+                 exact_excerpt(m.m22) + "] is not positive definite");
         metrics.push_back(std::move(m));
       }
     }
@@ -347,7 +348,7 @@ class MeditWriter {
     } else if (version_ == 1) {
       const double d = exact_double(q, what);
       const float f = static_cast<float>(d);
-      if (static_cast<double>(f) != d) throw InputError(what + " = " + to_exact_string(q) + " is not a float: version 1 cannot hold it");
+      if (static_cast<double>(f) != d) throw InputError(what + " = " + exact_excerpt(q) + " is not a float: version 1 cannot hold it");
       put32(std::bit_cast<std::int32_t>(f));
     } else {
       put64(std::bit_cast<std::int64_t>(exact_double(q, what)));

@@ -1,5 +1,7 @@
 #include "io/formats/mesh_file.hpp"
 
+#include "numbers/excerpt.hpp"
+
 #include <cmath>
 
 namespace anisocert::io {
@@ -26,14 +28,14 @@ predicates::Sym2<Rational> metric_of_size(const Rational& h) {
 std::string decimal_text(const Rational& q, const std::string& what) {
   std::string s = to_exact_string(q);
   if (s.find('/') != std::string::npos)
-    throw InputError(what + " = " + s + " has no finite decimal expansion: the text format cannot hold it exactly");
+    throw InputError(what + " = " + excerpt(s) + " has no finite decimal expansion: the text format cannot hold it exactly");
   return s;
 }
 
 double exact_double(const Rational& q, const std::string& what) {
   const double d = q.convert_to<double>();
   if (!std::isfinite(d) || Rational(d) != q)
-    throw InputError(what + " = " + to_exact_string(q) + " is not a double: the binary format cannot hold it exactly");
+    throw InputError(what + " = " + exact_excerpt(q) + " is not a double: the binary format cannot hold it exactly");
   return d;
 }
 

@@ -6,6 +6,7 @@
 #include "io/formats/text_reader.hpp"
 #include "io/formats/triangle.hpp"
 #include "io/mesh_json.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -48,7 +49,7 @@ const Format& format_of(const std::vector<Format>& formats, const std::string& p
   if (!forced.empty()) {
     for (const Format& f : formats)
       if (f.name == forced) return f;
-    throw InputError(std::string(option) + ": unknown " + kind + " format \"" + forced + "\" (" + names + ")");
+    throw InputError(std::string(option) + ": unknown " + kind + " format " + quoted_excerpt(forced) + " (" + names + ")");
   }
   const std::string ext = extension_of(path);
   std::vector<const Format*> by_extension;

@@ -24,9 +24,8 @@ class TextReader {
   std::string_view peek();             // the next token without consuming it ("" at the end)
   void expect(std::string_view keyword);
   std::int64_t integer(std::string_view what, std::int64_t lo, std::int64_t hi);
-  // Exact; its magnitude must lie within 2^±max_magnitude_bits (else refused, named).
+  // Exact, within the magnitudes anisocert reads (parse_input_number; else refused, named).
   Rational number(std::string_view what);
-  static constexpr long max_magnitude_bits = 1100;
   std::string_view rest_of_line();     // the remainder of the current line, blanks trimmed
   int line() const { return line_; }
   const std::string& source() const { return source_; }

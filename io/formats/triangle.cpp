@@ -13,6 +13,7 @@
 #include "io/formats/triangle.hpp"
 
 #include "io/formats/text_reader.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <climits>
 #include <filesystem>
@@ -84,8 +85,8 @@ std::int64_t read_count(TextReader& r, const std::string& what) { return r.integ
 // Nothing but blanks and comments after the declared entries.
 void expect_end(TextReader& r, const std::string& section, std::int64_t declared) {
   if (!r.at_end())
-    r.fail(section + ": more data than the header declares (" + std::to_string(declared) + "): \"" +
-           std::string(r.peek()) + "\"");
+    r.fail(section + ": more data than the header declares (" + std::to_string(declared) + "): " +
+           quoted_excerpt(r.peek()));
 }
 
 // triangle.node.html (and the first section of a .poly): "<# of vertices> <dimension (must be 2)>

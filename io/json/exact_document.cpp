@@ -1,5 +1,7 @@
 #include "io/json/exact_document.hpp"
 
+#include "numbers/excerpt.hpp"
+
 #include <utility>
 #include <vector>
 
@@ -29,16 +31,20 @@ class ExactDocument : public nlohmann::json_sax<Json> {
   bool key(string_t& k) override {
     if (open_.back()->contains(k)) {
       const std::string where = path();
-      throw InputError(source_ + ": " + (where.empty() ? "" : where + ": ") + "key " + Json(k).dump() +
+      throw InputError(source_ + ": " + (where.empty() ? "" : where + ": ") + "key " + quoted_excerpt(k) +
                        " appears twice");
     }
     keys_.back() = std::move(k);
     return true;
   }
 
-  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
-    std::string what = e.what();  // "[json.exception.parse_error.101] parse error at line 1, ..."
+  bool parse_error(std::size_t position, const std::string& last_token, const nlohmann::detail::exception& e) override {
+    std::string what = e.what();  // "[json.exception.parse_error.101] parse error at line 1, ...; last read: '...'"
     if (const auto end_of_id = what.find("] "); end_of_id != std::string::npos) what.erase(0, end_of_id + 2);
+    // nlohmann quotes the last token read whole ("last read: '...'", "number overflow parsing
+    // '...'"): a string or a number of a megabyte would be, so it is cut.
+    const std::string quoted = "'" + last_token + "'";
+    if (const auto at = what.find(quoted); at != std::string::npos) what.replace(at, quoted.size(), "'" + excerpt(last_token) + "'");
     throw InputError(source_ + ": invalid JSON at byte " + std::to_string(position) + ": " + what);
   }
 
@@ -68,12 +74,14 @@ class ExactDocument : public nlohmann::json_sax<Json> {
     keys_.pop_back();
     return true;
   }
-  // The path of the innermost open container, "sites[3]" style.
+  // The path of the innermost open container, "sites[3]" style, each key an excerpt; past 32
+  // levels, its depth instead (a hostile file nests tens of thousands).
   std::string path() const {
+    if (open_.size() > 33) return "a value nested " + std::to_string(open_.size() - 1) + " deep";
     std::string p;
     for (std::size_t k = 0; k + 1 < open_.size(); ++k)
       p += open_[k]->is_array() ? "[" + std::to_string(open_[k]->size() - 1) + "]"
-                                : (p.empty() ? "" : ".") + keys_[k];
+                                : (p.empty() ? "" : ".") + excerpt(keys_[k]);
     return p;
   }
 

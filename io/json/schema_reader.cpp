@@ -1,5 +1,7 @@
 #include "io/json/schema_reader.hpp"
 
+#include "numbers/excerpt.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -29,11 +31,9 @@ std::string show(const nlohmann::json& v) {
   if (deeper_than(v, 32))
     return std::string(v.is_array() ? "an array" : "an object") + " nested more than 32 deep, of " + std::to_string(v.size()) +
            " entries";
-  std::string s = v.dump();
-  if (s.size() <= 60) return s;
-  std::size_t cut = 57;
-  while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;
-  return s.substr(0, cut) + "...";
+  // One line of ASCII (control characters and non-ASCII as JSON escapes), an excerpt of about 60.
+  const std::string s = v.dump(-1, ' ', true);
+  return excerpt(s, s.size() <= 60 ? 60 : 57);
 }
 
 std::string indexed(const std::string& name, std::size_t i) { return name + "[" + std::to_string(i) + "]"; }
@@ -48,7 +48,7 @@ void SchemaReader::require_keys(const Json& object, const std::string& path, std
   for (const char* k : allowed) expected += (expected.empty() ? "" : ", ") + std::string(k);
   for (const auto& item : object.items())
     if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
-      fail(path, "unknown key " + Json(item.key()).dump() + " (expected " + expected + ")");
+      fail(path, "unknown key " + show(Json(item.key())) + " (expected " + expected + ")");
   for (const char* k : required)
     if (!object.contains(k)) fail(path, "missing key \"" + std::string(k) + "\"");
 }
@@ -59,7 +59,7 @@ Rational SchemaReader::number(const Json& v, const std::string& path) const {
   if (!v.is_string())
     fail(path, "expected a number (a JSON number, or a string holding an integer, fraction or decimal), got " + show(v));
   try {
-    return parse_rational(v.get_ref<const std::string&>());
+    return parse_input_number(v.get_ref<const std::string&>());
   } catch (const NumberSyntaxError& e) {
     fail(path, e.what());
   }

@@ -21,7 +21,8 @@ class SchemaReader {
   // Unknown keys and missing required ones are errors.
   void require_keys(const Json& object, const std::string& path, std::initializer_list<const char*> required,
                     std::initializer_list<const char*> allowed) const;
-  // A JSON number, or a string holding an integer, fraction or decimal, exactly.
+  // A JSON number, or a string holding an integer, fraction or decimal, exactly; within the
+  // magnitudes anisocert reads (numbers/rational.hpp: parse_input_number).
   Rational number(const Json& v, const std::string& path) const;
   // An array of exactly n numbers; `expected` names the shape in messages ("[m11, m12, m22]").
   std::vector<Rational> numbers(const Json& v, std::size_t n, const std::string& path, const std::string& expected) const;
@@ -32,7 +33,8 @@ class SchemaReader {
   std::string source_;
 };
 
-// The JSON text of v on one line, cut after about 60 bytes (never inside a UTF-8 sequence).
+// The JSON text of v on one line of ASCII (other characters as \uXXXX), cut after about 60
+// characters.
 std::string show(const nlohmann::json& v);
 // "name[i]"
 std::string indexed(const std::string& name, std::size_t i);

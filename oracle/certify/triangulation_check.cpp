@@ -111,7 +111,7 @@ void check_coincident_sites(const EnclosedMesh& m, TriangulationCheck& t) {
         const auto &p = m.mesh.sites[order[i]], &q = m.mesh.sites[order[j]];
         if (p.x == q.x && p.y == q.y)
           t.fail("sites " + std::to_string(std::min(order[i], order[j])) + " and " + std::to_string(std::max(order[i], order[j])) +
-                 " coincide at " + geometry::exact_text(p));
+                 " coincide at " + geometry::point_excerpt(p));
       }
   }
 }

@@ -1,6 +1,7 @@
 #include "refiners/common/domain.hpp"
 
 #include "refiners/common/exact_split.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,23 +32,13 @@ Domain::Domain(const Polygon<double>& corners) : corners_(corners) {
   convex_ = geometry::is_convex(corners_);
 }
 
-namespace {
-
-// The exact text of q, cut to about 40 characters.
-std::string short_exact(const Rational& q) {
-  const std::string s = to_exact_string(q);
-  return s.size() <= 40 ? s : s.substr(0, 37) + "...";
-}
-
-}  // namespace
-
 Domain Domain::from_exact(const Polygon<Rational>& corners) {
   Polygon<double> d;
   for (std::size_t k = 0; k < corners.size(); ++k) {
     const Point2<Rational>& q = corners[k];
     const double x = q.x.convert_to<double>(), y = q.y.convert_to<double>();
     if (!std::isfinite(x) || !std::isfinite(y) || Rational(x) != q.x || Rational(y) != q.y)
-      throw DomainError("domain vertex " + std::to_string(k) + " (" + short_exact(q.x) + ", " + short_exact(q.y) +
+      throw DomainError("domain vertex " + std::to_string(k) + " (" + exact_excerpt(q.x) + ", " + exact_excerpt(q.y) +
                         ") is not a double; the refiner works in floating point");
     d.push_back({x, y});
   }
