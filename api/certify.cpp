@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -112,7 +113,11 @@ std::vector<Metric> exact_metrics(const std::vector<DoubleMetric>& metrics, cons
 
 std::string Certificate::text(const std::string& name) const { return io::full_text(verdict, name); }
 
-std::string Certificate::json() const { return io::to_json(verdict, report).dump(2); }
+std::string Certificate::json() const {
+  std::ostringstream out;
+  io::write_json(out, verdict, report);
+  return out.str();
+}
 
 Certificate certify(const Mesh& mesh, const std::vector<Metric>& metrics, const CertifyOptions& options) {
   check_mesh(mesh);

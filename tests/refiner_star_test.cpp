@@ -72,9 +72,9 @@ TEST(StarRefiner, ConsistentRunsAreCertifiedExactly) {
     oracle::CertifyOptions o;
     const oracle::CertifyReport c = certify(r, p, o);
     EXPECT_TRUE(c.valid_holds()) << (c.valid->failures.empty() ? "" : c.valid->failures[0]);
-    EXPECT_TRUE(c.uniform_violations.empty()) << c.uniform_violations[0].text;
-    EXPECT_TRUE(c.rho_violations.empty()) << c.rho_violations[0].text;
-    EXPECT_TRUE(c.gamma_violations.empty()) << c.gamma_violations[0].text;
+    EXPECT_TRUE(c.uniform_violations.empty()) << c.uniform_violations.described()[0].text;
+    EXPECT_TRUE(c.rho_violations.empty()) << c.rho_violations.described()[0].text;
+    EXPECT_TRUE(c.gamma_violations.empty()) << c.gamma_violations.described()[0].text;
   }
   EXPECT_GE(consistent, runs / 4) << "enough runs should converge to be checked";
 }

@@ -25,11 +25,13 @@ struct CertifyCommandOptions {
   std::vector<std::string> checks{"valid", "uniform", "metric"};
   bool planar_3d = false;
   bool checks_given = false;   // --checks was on the command line
+  bool all_witnesses = false;
 };
 
 oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
   oracle::CertifyOptions o;
   o.valid = o.uniform = o.metric = false;
+  o.described_witnesses = c.all_witnesses ? oracle::all_witnesses : oracle::default_described_witnesses;
   for (const std::string& k : c.checks) {
     if (k == "valid") o.valid = true;
     else if (k == "uniform") o.uniform = true;
@@ -108,7 +110,8 @@ int run_certify(CertifyCommandOptions& c) {
   io::CertifyVerdict v = io::certify_verdict(report, o, file.mesh, c.bounds);
   v.metric_source = file.metric_source;
   std::vector<OutputFile> files;
-  if (!c.json_path.empty()) files.push_back({c.json_path, render(io::to_json(v, report))});
+  // Streamed: with --all-witnesses a bad mesh's report lists a witness per triangle.
+  if (!c.json_path.empty()) files.push_back({c.json_path, "", [&](std::ostream& out) { io::write_json(out, v, report); }});
   if (!c.svg_path.empty()) files.push_back({c.svg_path, io::certify_svg(file.mesh, report, c.input + (v.holds ? ": certified" : ": not certified"))});
   write_files_atomically(files);
   emit(io::full_text(v, c.input));
@@ -165,7 +168,13 @@ void add_certify(CLI::App& app, int& exit_code) {
       ->expected(2);
   c->add_option("--min-quality", o->bounds.min_quality, "check every mean-ratio quality in the metrics >= q");
   c->add_option("--min-angle", o->bounds.min_angle, "check every angle in its vertex's metric >= this many degrees");
-  c->add_option("--json", o->json_path, "write the full report to this file");
+  const std::string first = "the first " + std::to_string(oracle::default_described_witnesses);
+  c->add_option("--json", o->json_path,
+                "write the full report to this file: per check, the exact count of failures and " + first + "\n"
+                "witnesses of each list (--all-witnesses: every one)");
+  c->add_flag("--all-witnesses", o->all_witnesses,
+              "list every witness in --json (one per failing triangle or edge: a bad mesh of a million triangles gives\n"
+              "a million), not only " + first + " of each list");
   c->add_option("--svg", o->svg_path, "write a picture: the mesh, failures coloured, histograms of lengths and qualities");
   c->callback([o, checks, &exit_code] {
     o->checks_given = checks->count() > 0;

@@ -1,21 +1,18 @@
 #include "io/reports/certify_report.hpp"
 
 #include "io/reports/printed.hpp"
+#include "numbers/excerpt.hpp"
 
+#include <algorithm>
+#include <functional>
 #include <sstream>
 
 namespace anisocert::io {
 namespace {
 
-ReportJson witnesses_json(const std::vector<oracle::MeshWitness>& ws) {
-  ReportJson out = ReportJson::array();
-  for (const auto& w : ws) out.push_back({{"vertex", w.vertex}, {"triangle", w.triangle}, {"site", w.site}, {"text", w.text}});
-  return out;
-}
-
-WitnessLines texts(const std::vector<oracle::MeshWitness>& ws) {
-  WitnessLines l{{}, ws.size()};
-  for (std::size_t i = 0; i < ws.size() && i < 3; ++i) l.first.push_back(ws[i].text);
+WitnessLines texts(const oracle::WitnessList& ws) {
+  WitnessLines l{{}, ws.count()};
+  for (std::size_t i = 0; i < ws.described().size() && i < 3; ++i) l.first.push_back(ws.described()[i].text);
   return l;
 }
 
@@ -41,10 +38,10 @@ void add_validity(const oracle::CertifyReport& r, CertifyVerdict& v) {
                                : "";
   v.checks.push_back({"valid", "valid (a triangulation of the domain, segments are unions of edges)", "valid",
                       r.valid_holds(), true, more, "",
-                      {texts(t.failures, t.failure_count), texts(r.segment_failures, r.segment_failures.size())},
+                      {texts(t.failures, t.failure_count), texts(r.segment_failures, r.segment_failure_count)},
                       {{"holds", r.valid_holds()}, {"checks_run", t.checks_run}, {"failure_count", t.failure_count},
-                       {"failures", t.failures}, {"bad_triangles", t.bad_cells}, {"bad_edges", t.bad_edges},
-                       {"segment_failures", r.segment_failures}}});
+                       {"bad_triangle_count", t.bad_cells.size()}, {"bad_edge_count", t.bad_edges.size()},
+                       {"segment_failure_count", r.segment_failure_count}}});
 }
 
 void add_uniform(const oracle::CertifyReport& r, CertifyVerdict& v) {
@@ -54,15 +51,15 @@ void add_uniform(const oracle::CertifyReport& r, CertifyVerdict& v) {
   v.checks.push_back({"locally_uniform", "locally uniform (every triangle at v has an empty M_v-circumellipse)",
                       "locally uniform", holds, true,
                       " (" + std::to_string(r.incircle_tests) + " nearby sites tested exactly, " +
-                          std::to_string(r.uniform_ties.size()) + " cocircular ties" + unmeasured + ")",
-                      " (" + std::to_string(r.uniform_ties.size()) + " ties)", {texts(r.uniform_violations)},
+                          std::to_string(r.uniform_ties.count()) + " cocircular ties" + unmeasured + ")",
+                      " (" + std::to_string(r.uniform_ties.count()) + " ties)", {texts(r.uniform_violations)},
                       {{"holds", holds}, {"incircle_tests", r.incircle_tests}, {"unmeasured_triangles", r.unmeasured},
-                       }});
+                       {"violation_count", r.uniform_violations.count()}, {"tie_count", r.uniform_ties.count()}}});
 }
 
 void add_lengths(const oracle::LengthReport& l, const BoundTexts& b, CertifyVerdict& v) {
   const bool bounded = !b.length_lo.empty();
-  const std::string range = "[" + b.length_lo + ", " + b.length_hi + "]";
+  const std::string range = "[" + excerpt(b.length_lo) + ", " + excerpt(b.length_hi) + "]";
   v.checks.push_back(
       {"lengths",
        bounded ? "every edge length in its endpoints' metrics within " + range : "edge lengths in their endpoints' metrics",
@@ -73,7 +70,7 @@ void add_lengths(const oracle::LengthReport& l, const BoundTexts& b, CertifyVerd
        " (" + percent(l.unit_edges, l.edges) + " unit)", {texts(l.range_violations)},
        {{"range", bounded ? ReportJson::array({b.length_lo, b.length_hi}) : ReportJson(nullptr)}, {"holds", l.range_violations.empty()},
         {"edges", l.edges}, {"unit_edges", l.unit_edges}, {"shortest", l.shortest}, {"longest", l.longest},
-        {"shortest_edge", l.shortest_edge}, {"longest_edge", l.longest_edge}}});
+        {"shortest_edge", l.shortest_edge}, {"longest_edge", l.longest_edge}, {"violation_count", l.range_violations.count()}}});
 }
 
 void add_quality(const oracle::QualityReport& q, const BoundTexts& b, CertifyVerdict& v) {
@@ -86,13 +83,13 @@ void add_quality(const oracle::QualityReport& q, const BoundTexts& b, CertifyVer
   }
   const std::string undecided = q.undecided ? ", " + std::to_string(q.undecided) + " flat or clockwise triangles not measured" : "";
   v.checks.push_back(
-      {"quality", bounded ? "mean-ratio quality >= " + b.min_quality + " in each vertex's metric" : "mean-ratio quality in the metrics",
-       bounded ? "quality >= " + b.min_quality : "quality", q.violations.empty(), bounded,
+      {"quality", bounded ? "mean-ratio quality >= " + excerpt(b.min_quality) + " in each vertex's metric" : "mean-ratio quality in the metrics",
+       bounded ? "quality >= " + excerpt(b.min_quality) : "quality", q.violations.empty(), bounded,
        " (least ∈ " + enclosure_text(q.worst) + " at triangle " + std::to_string(q.worst_triangle) + median + undecided + ")",
        "", {texts(q.violations)},
        {{"threshold", bounded ? ReportJson(b.min_quality) : ReportJson(nullptr)}, {"holds", q.violations.empty()},
         {"measured", q.measured}, {"unmeasured", q.undecided}, {"least", enclosure_json(q.worst)},
-        {"least_triangle", q.worst_triangle}, {"quantiles", qj}}});
+        {"least_triangle", q.worst_triangle}, {"quantiles", qj}, {"violation_count", q.violations.count()}}});
 }
 
 void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdict& v) {
@@ -100,13 +97,14 @@ void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdic
   const bool holds = a.violations.empty() && a.undecided_triangles.empty();
   const std::string undecided =
       a.undecided_triangles.empty() ? "" : ", " + std::to_string(a.undecided_triangles.size()) + " triangles undecided at 8192 bits";
-  v.checks.push_back({"angles", bounded ? "every angle >= " + b.min_angle + "° in its vertex's metric" : "angles in the vertices' metrics",
-                      bounded ? "angles >= " + b.min_angle + "°" : "angles", holds, bounded,
+  v.checks.push_back({"angles", bounded ? "every angle >= " + excerpt(b.min_angle) + "° in its vertex's metric" : "angles in the vertices' metrics",
+                      bounded ? "angles >= " + excerpt(b.min_angle) + "°" : "angles", holds, bounded,
                       " (smallest ≈ " + as_printed(a.smallest) + "°, triangle " + std::to_string(a.smallest_triangle) + undecided + ")",
                       "", {texts(a.violations)},
                       {{"threshold_degrees", bounded ? ReportJson(b.min_angle) : ReportJson(nullptr)}, {"holds", holds},
                        {"measured", a.measured}, {"unmeasured", a.undecided}, {"smallest_degrees", a.smallest},
-                       {"smallest_triangle", a.smallest_triangle}, {"undecided_triangles", a.undecided_triangles}}});
+                       {"smallest_triangle", a.smallest_triangle}, {"undecided_count", a.undecided_triangles.size()},
+                       {"violation_count", a.violations.count()}}});
 }
 
 }  // namespace
@@ -115,27 +113,29 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
                                const geometry::Mesh<Rational>& mesh, const BoundTexts& b) {
   CertifyVerdict v;
   v.vertices = mesh.sites.size(), v.triangles = mesh.triangles.size(), v.holds = r.holds(o);
+  v.described_witnesses = o.described_witnesses;
   v.has_metrics = mesh.metrics.size() == mesh.sites.size();
   if (r.valid) add_validity(r, v);
   if (r.uniform_checked) add_uniform(r, v);
   if (o.rho0 && v.has_metrics) {
     const bool holds = r.rho_violations.empty();
-    v.checks.push_back({"radius_edge", "radius-edge ratio ≤ " + b.rho0 + " in each vertex's metric", "radius-edge ≤ " + b.rho0,
+    v.checks.push_back({"radius_edge", "radius-edge ratio ≤ " + excerpt(b.rho0) + " in each vertex's metric", "radius-edge ≤ " + excerpt(b.rho0),
                         holds, true,
                         " (worst ≈ " + as_printed(r.worst_rho) + ", triangle " + std::to_string(r.worst_rho_triangle) + ", vertex " +
                             std::to_string(r.worst_rho_vertex) + ")",
                         "", {texts(r.rho_violations)},
                         {{"threshold", b.rho0}, {"holds", holds}, {"worst", r.worst_rho},
-                         {"worst_triangle", r.worst_rho_triangle}, {"worst_vertex", r.worst_rho_vertex}}});
+                         {"worst_triangle", r.worst_rho_triangle}, {"worst_vertex", r.worst_rho_vertex},
+                         {"violation_count", r.rho_violations.count()}}});
   }
   if (o.gamma0 && v.has_metrics) {
     const bool holds = r.gamma_violations.empty();
-    v.checks.push_back({"distortion", "distortion ≤ " + b.gamma0 + " between the vertices of each triangle",
-                        "distortion ≤ " + b.gamma0, holds, true,
+    v.checks.push_back({"distortion", "distortion ≤ " + excerpt(b.gamma0) + " between the vertices of each triangle",
+                        "distortion ≤ " + excerpt(b.gamma0), holds, true,
                         " (worst ≈ " + as_printed(r.worst_gamma) + ", triangle " + std::to_string(r.worst_gamma_triangle) + ")", "",
                         {texts(r.gamma_violations)},
                         {{"threshold", b.gamma0}, {"holds", holds}, {"worst", r.worst_gamma},
-                         {"worst_triangle", r.worst_gamma_triangle}}});
+                         {"worst_triangle", r.worst_gamma_triangle}, {"violation_count", r.gamma_violations.count()}}});
   }
   if (r.lengths) add_lengths(*r.lengths, b, v);
   if (r.quality) add_quality(*r.quality, b, v);
@@ -168,23 +168,121 @@ std::string one_line(const CertifyVerdict& v) {
   return s + ": " + (v.holds ? "certified" : "NOT certified") + "\n";
 }
 
-ReportJson to_json(const CertifyVerdict& v, const oracle::CertifyReport& r) {
-  ReportJson j{{"holds", v.holds},           {"vertices", v.vertices},
-               {"triangles", v.triangles},   {"has_metrics", v.has_metrics},
-               {"metric_source", v.metric_source}, {"indices_from", 0}};
-  for (const CheckReport& c : v.checks) j[c.key] = c.json;
-  // The witnesses, one list per check, from the report (one per triangle at most).
-  auto add = [&j](const char* key, const char* list, const std::vector<oracle::MeshWitness>& ws) {
-    if (j.contains(key)) j[key][list] = witnesses_json(ws);
-  };
-  add("locally_uniform", "violations", r.uniform_violations);
-  add("locally_uniform", "ties", r.uniform_ties);
-  add("radius_edge", "violations", r.rho_violations);
-  add("distortion", "violations", r.gamma_violations);
-  if (r.lengths) add("lengths", "violations", r.lengths->range_violations);
-  if (r.quality) add("quality", "violations", r.quality->violations);
-  if (r.angles) add("angles", "violations", r.angles->violations);
-  return j;
+namespace {
+
+// A list of the report streamed into --json: its key, how many entries are written, and how one is.
+struct StreamedList {
+  const char* key;
+  std::size_t size;
+  std::function<ReportJson(std::size_t)> entry;
+};
+
+StreamedList witness_list(const char* key, const oracle::WitnessList& ws) {
+  return {key, ws.described().size(), [&ws](std::size_t i) {
+            const oracle::MeshWitness& w = ws.described()[i];
+            return ReportJson{{"vertex", w.vertex}, {"triangle", w.triangle}, {"site", w.site}, {"text", w.text}};
+          }};
+}
+
+template <class T>
+StreamedList first_of(const char* key, const std::vector<T>& list, std::size_t limit) {
+  return {key, std::min(limit, list.size()), [&list](std::size_t i) { return ReportJson(list[i]); }};
+}
+
+// The lists of check `key`, after its other fields.
+std::vector<StreamedList> lists_of(const std::string& key, const oracle::CertifyReport& r, std::size_t limit) {
+  if (key == "valid")
+    return {first_of("failures", r.valid->failures, limit), first_of("bad_triangles", r.valid->bad_cells, limit),
+            first_of("bad_edges", r.valid->bad_edges, limit), first_of("segment_failures", r.segment_failures, limit)};
+  if (key == "locally_uniform") return {witness_list("violations", r.uniform_violations), witness_list("ties", r.uniform_ties)};
+  if (key == "radius_edge") return {witness_list("violations", r.rho_violations)};
+  if (key == "distortion") return {witness_list("violations", r.gamma_violations)};
+  if (key == "lengths") return {witness_list("violations", r.lengths->range_violations)};
+  if (key == "quality") return {witness_list("violations", r.quality->violations)};
+  if (key == "angles")
+    return {witness_list("violations", r.angles->violations), first_of("undecided_triangles", r.angles->undecided_triangles, limit)};
+  return {};
+}
+
+void indent(std::ostream& out, int n) {
+  for (int i = 0; i < n; ++i) out << ' ';
+}
+
+// v as nlohmann's dump(2) lays it out, at the given indentation.
+void write_pretty(std::ostream& out, const ReportJson& v, int at) {
+  if (v.is_structured() && !v.empty()) {
+    out << (v.is_object() ? "{\n" : "[\n");
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      if (it != v.begin()) out << ",\n";
+      indent(out, at + 2);
+      if (v.is_object()) out << ReportJson(it.key()).dump() << ": ";
+      write_pretty(out, it.value(), at + 2);
+    }
+    out << "\n";
+    indent(out, at);
+    out << (v.is_object() ? "}" : "]");
+  } else {
+    out << v.dump();
+  }
+}
+
+// An object: its fields, then its lists, one entry a line.
+void write_object(std::ostream& out, const ReportJson& fields, const std::vector<StreamedList>& lists, int at) {
+  out << "{";
+  const char* separator = "\n";
+  for (auto it = fields.begin(); it != fields.end(); ++it) {
+    out << separator;
+    indent(out, at + 2);
+    out << ReportJson(it.key()).dump() << ": ";
+    write_pretty(out, it.value(), at + 2);
+    separator = ",\n";
+  }
+  for (const StreamedList& l : lists) {
+    out << separator;
+    indent(out, at + 2);
+    out << ReportJson(l.key).dump() << ": [";
+    for (std::size_t i = 0; i < l.size; ++i) {
+      out << (i ? ",\n" : "\n");
+      indent(out, at + 4);
+      out << l.entry(i).dump();
+    }
+    if (l.size > 0) {
+      out << "\n";
+      indent(out, at + 2);
+    }
+    out << "]";
+    separator = ",\n";
+  }
+  out << "\n";
+  indent(out, at);
+  out << "}";
+}
+
+}  // namespace
+
+void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::CertifyReport& r) {
+  const std::size_t limit = v.described_witnesses;
+  ReportJson top{{"holds", v.holds},
+                 {"vertices", v.vertices},
+                 {"triangles", v.triangles},
+                 {"has_metrics", v.has_metrics},
+                 {"metric_source", v.metric_source},
+                 {"indices_from", 0},
+                 {"witnesses_listed", limit == oracle::all_witnesses ? ReportJson(nullptr) : ReportJson(limit)}};
+  // The checks as fields of the top level, each written with its lists (one witness per triangle
+  // at most, the first `limit` of them) from the report itself.
+  out << "{";
+  const char* separator = "\n";
+  for (auto it = top.begin(); it != top.end(); ++it) {
+    out << separator << "  " << ReportJson(it.key()).dump() << ": ";
+    write_pretty(out, it.value(), 2);
+    separator = ",\n";
+  }
+  for (const CheckReport& c : v.checks) {
+    out << separator << "  " << ReportJson(c.key).dump() << ": ";
+    write_object(out, c.json, lists_of(c.key, r, limit), 2);
+  }
+  out << "\n}\n";
 }
 
 }  // namespace anisocert::io

@@ -1,11 +1,14 @@
 #pragma once
 // The certifier's verdict as one report, built once from oracle::CertifyReport and rendered three
 // ways: the full text of `anisocert certify`, its --json file (docs/cli.md documents every field),
-// and the demo's one line. Also what the API's Certificate renders (api/anisocert.hpp).
+// and the demo's one line. Also what the API's Certificate renders (api/anisocert.hpp). Every
+// rendering is bounded by the report's own bound: per list, the exact count and the witnesses the
+// certifier described (CertifyOptions::described_witnesses; the text shows three of them).
 #include "oracle/certify/mesh_certifier.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -19,8 +22,8 @@ struct WitnessLines {
   std::size_t count = 0;
 };
 
-// One check that ran: its JSON key and object (without its lists of witnesses, which to_json adds
-// from the report itself: a bad mesh's witnesses are not copied), its title in the full text and
+// One check that ran: its JSON key and object (without its lists of witnesses, which write_json
+// streams from the report itself: a bad mesh's witnesses are not copied), its title in the full text and
 // in the one line, the verdict (or none: a measurement), what follows it in each (" (…)"), and the
 // first lines of its lists of witnesses.
 struct CheckReport {
@@ -34,6 +37,7 @@ struct CheckReport {
 
 struct CertifyVerdict {
   std::size_t vertices = 0, triangles = 0;
+  std::size_t described_witnesses = oracle::default_described_witnesses;   // per list (oracle::all_witnesses: all)
   bool has_metrics = true;
   std::string metric_source;   // where the metrics came from (a file, "--field shock"); "" when unknown
   bool holds = false;
@@ -50,7 +54,9 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
 
 std::string full_text(const CertifyVerdict& v, const std::string& input);
 std::string one_line(const CertifyVerdict& v);
-// The report behind v gives the lists of witnesses.
-ReportJson to_json(const CertifyVerdict& v, const oracle::CertifyReport& r);
+// The --json report, written as it goes (a list of a million witnesses is never one JSON value in
+// memory), laid out as nlohmann's dump(2) with one line per witness; the report behind v gives
+// the lists, each its first v.described_witnesses entries after its exact count.
+void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::CertifyReport& r);
 
 }  // namespace anisocert::io

@@ -83,11 +83,11 @@ std::string certify_svg(const geometry::Mesh<Rational>& mesh, const oracle::Cert
   if (r.valid)
     for (int t : r.valid->bad_cells) bad[t] = true;
   for (const auto* list : {&r.uniform_violations, &r.rho_violations, &r.gamma_violations})
-    for (const auto& w : *list) bad[w.triangle] = true;
+    for (const auto& w : list->places()) bad[w.triangle] = true;
   if (r.quality)
-    for (const auto& w : r.quality->violations) bad[w.triangle] = true;
+    for (const auto& w : r.quality->violations.places()) bad[w.triangle] = true;
   if (r.angles)
-    for (const auto& w : r.angles->violations) bad[w.triangle] = true;
+    for (const auto& w : r.angles->violations.places()) bad[w.triangle] = true;
   o << "<path fill=\"#e04030\" fill-opacity=\"0.6\" stroke=\"#a01010\" stroke-width=\"0.4\" d=\"";
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     if (bad[t]) triangle_path(o, c, p, mesh.triangles[t]);
@@ -95,7 +95,7 @@ std::string certify_svg(const geometry::Mesh<Rational>& mesh, const oracle::Cert
   std::vector<std::pair<int, int>> edges;
   if (r.valid) edges = r.valid->bad_edges;
   if (r.lengths)
-    for (const auto& w : r.lengths->range_violations) edges.emplace_back(w.vertex, w.site);
+    for (const auto& w : r.lengths->range_violations.places()) edges.emplace_back(w.vertex, w.site);
   for (const auto& [a, b] : edges) o << "M" << c.X(p[a].x) << " " << c.Y(p[a].y) << " L" << c.X(p[b].x) << " " << c.Y(p[b].y) << " ";
   o << "\"/>\n";
   const double y = c.height() + 50;

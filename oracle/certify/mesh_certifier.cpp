@@ -76,9 +76,10 @@ void check_uniform(const EnclosedMesh& m, const SiteTree& tree, CertifyReport& r
         const Sign in = incircle(m, tri, s, v);
         if (in == Sign::negative || (in == Sign::zero && tied)) return true;
         const bool strict = in == Sign::positive;
-        (strict ? r.uniform_violations : r.uniform_ties)
-            .push_back({v, t, s, name("site", s) + (strict ? " is strictly inside" : " is exactly on") +
-                                     " the circumellipse of " + name("triangle", t) + " in the metric of " + name("vertex", v)});
+        (strict ? r.uniform_violations : r.uniform_ties).add(v, t, s, [&] {
+          return name("site", s) + (strict ? " is strictly inside" : " is exactly on") + " the circumellipse of " +
+                 name("triangle", t) + " in the metric of " + name("vertex", v);
+        });
         (strict ? violated : tied) = true;
         return !strict;
       });
@@ -96,13 +97,19 @@ std::optional<Rational> parameter_on(const Point2<Rational>& a, const Point2<Rat
 
 // Every constrained segment is a union of edges: the sites on it, in order, are joined by edges.
 void check_segments(const EnclosedMesh& m, const SiteTree& tree, const std::vector<std::pair<int, int>>& edges,
-                    CertifyReport& r) {
+                    std::size_t described, CertifyReport& r) {
   const auto& mesh = m.mesh;
+  const auto fail = [&](auto text) {
+    if (r.segment_failures.size() < described) r.segment_failures.push_back(text());
+    ++r.segment_failure_count;
+  };
   for (std::size_t k = 0; k < mesh.segments.size(); ++k) {
     const int a = mesh.segments[k].first, b = mesh.segments[k].second;
     if (mesh.sites[a].x == mesh.sites[b].x && mesh.sites[a].y == mesh.sites[b].y) {
-      r.segment_failures.push_back("segment " + std::to_string(k) + " has length zero (sites " + std::to_string(a) + " and " +
-                                   std::to_string(b) + "): it is no union of edges");
+      fail([&] {
+        return "segment " + std::to_string(k) + " has length zero (sites " + std::to_string(a) + " and " + std::to_string(b) +
+               "): it is no union of edges";
+      });
       continue;
     }
     std::vector<std::pair<Rational, int>> on;
@@ -114,9 +121,10 @@ void check_segments(const EnclosedMesh& m, const SiteTree& tree, const std::vect
     std::sort(on.begin(), on.end());
     for (std::size_t i = 0; i + 1 < on.size(); ++i)
       if (!std::binary_search(edges.begin(), edges.end(), ordered(on[i].second, on[i + 1].second)))
-        r.segment_failures.push_back("segment " + std::to_string(k) + " is not a union of edges: sites " +
-                                     std::to_string(on[i].second) + " and " + std::to_string(on[i + 1].second) +
-                                     " are consecutive on it but not joined by an edge");
+        fail([&] {
+          return "segment " + std::to_string(k) + " is not a union of edges: sites " + std::to_string(on[i].second) + " and " +
+                 std::to_string(on[i + 1].second) + " are consecutive on it but not joined by an edge";
+        });
   }
 }
 
@@ -158,8 +166,10 @@ void check_quality_bounds(const EnclosedMesh& m, const CertifyOptions& o, Certif
         const double approx = std::sqrt(q.convert_to<double>());
         if (approx > r.worst_rho) r.worst_rho = approx, r.worst_rho_triangle = t, r.worst_rho_vertex = v;
         if (q > rho2) {
-          r.rho_violations.push_back({v, t, -1, name("triangle", t) + " has radius-edge ratio " + std::to_string(approx) +
-                                                    " > ρ₀ in the metric of " + name("vertex", v)});
+          r.rho_violations.add(v, t, -1, [&] {
+            return name("triangle", t) + " has radius-edge ratio " + std::to_string(approx) + " > ρ₀ in the metric of " +
+                   name("vertex", v);
+          });
           break;
         }
       }
@@ -169,8 +179,10 @@ void check_quality_bounds(const EnclosedMesh& m, const CertifyOptions& o, Certif
         const double g = std::sqrt(geometry::tau_squared_estimate(nearest_doubles(mesh.metrics[a]), nearest_doubles(mesh.metrics[b])));
         if (g > r.worst_gamma) r.worst_gamma = g, r.worst_gamma_triangle = t;
         if (!predicates::tau_at_most(mesh.metrics[a], mesh.metrics[b], gamma2)) {
-          r.gamma_violations.push_back({a, t, b, name("triangle", t) + ": distortion between vertices " + std::to_string(a) +
-                                                     " and " + std::to_string(b) + " is " + std::to_string(g) + " > γ₀"});
+          r.gamma_violations.add(a, t, b, [&] {
+            return name("triangle", t) + ": distortion between vertices " + std::to_string(a) + " and " + std::to_string(b) +
+                   " is " + std::to_string(g) + " > γ₀";
+          });
           break;
         }
       }
@@ -181,13 +193,15 @@ void check_quality_bounds(const EnclosedMesh& m, const CertifyOptions& o, Certif
 
 CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& o) {
   CertifyReport r;
+  const std::size_t described = o.described_witnesses;
+  r.uniform_violations = r.uniform_ties = r.rho_violations = r.gamma_violations = WitnessList(described);
   const EnclosedMesh m(mesh);
   const SiteTree tree(m.approx);
   const CellList cells = triangle_cells(mesh.triangles);
   const std::vector<std::pair<int, int>> edges = unique_edges(cells, mesh.sites.size());
   if (o.valid) {
-    r.valid = check_triangulation(m, cells);
-    check_segments(m, tree, edges, r);
+    r.valid = check_triangulation(m, cells, described);
+    check_segments(m, tree, edges, described, r);
   }
   const bool metrics = mesh.metrics.size() == mesh.sites.size();
   if (o.uniform && metrics) {
@@ -196,9 +210,9 @@ CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& o) 
   }
   if ((o.rho0 || o.gamma0) && metrics) check_quality_bounds(m, o, r);
   if (o.metric && metrics) {
-    r.lengths = check_lengths(m, edges, o.length_range);
-    r.quality = check_quality(m, o.min_quality);
-    r.angles = check_angles(m, o.min_angle);
+    r.lengths = check_lengths(m, edges, o.length_range, described);
+    r.quality = check_quality(m, o.min_quality, described);
+    r.angles = check_angles(m, o.min_angle, described);
   }
   return r;
 }

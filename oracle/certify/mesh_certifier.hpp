@@ -34,25 +34,31 @@ struct CertifyOptions {
   std::optional<std::pair<Rational, Rational>> length_range;   // verdict: every metric length in it
   std::optional<Rational> min_quality;                          // verdict: every mean ratio >= it
   std::optional<Rational> min_angle;                            // verdict: every angle >= it (degrees, in (0, 90])
+  // How many witnesses of each list (and failures of `valid`) are described in full; every one is
+  // counted and located whatever this is (witness_list.hpp). all_witnesses: every one.
+  std::size_t described_witnesses = default_described_witnesses;
 };
 
-// Every list of witnesses holds at most one per triangle (per edge for lengths): memory stays
-// proportional to the mesh however bad it is, and a triangle's search stops at its first witness.
+// Every list of witnesses holds at most one per triangle (per edge for lengths), and describes
+// only its first options.described_witnesses: memory stays proportional to the mesh however bad it
+// is (12 bytes a witness beyond those), and a triangle's search stops at its first witness. The
+// verdict counts; it needs no witness described.
 struct CertifyReport {
   std::optional<TriangulationCheck> valid;
-  std::vector<std::string> segment_failures;
+  std::vector<std::string> segment_failures;            // the first options.described_witnesses
+  std::size_t segment_failure_count = 0;                // all of them
   bool uniform_checked = false;
-  std::vector<MeshWitness> uniform_violations, uniform_ties;
+  WitnessList uniform_violations, uniform_ties;
   std::size_t incircle_tests = 0;
   std::size_t unmeasured = 0;                           // flat or clockwise triangles: no circumellipse
   double worst_rho = 0, worst_gamma = 0;                // approximations
   int worst_rho_triangle = -1, worst_rho_vertex = -1, worst_gamma_triangle = -1;
-  std::vector<MeshWitness> rho_violations, gamma_violations;
+  WitnessList rho_violations, gamma_violations;
   std::optional<LengthReport> lengths;
   std::optional<QualityReport> quality;
   std::optional<AngleReport> angles;
 
-  bool valid_holds() const { return valid && valid->is_triangulation && segment_failures.empty(); }
+  bool valid_holds() const { return valid && valid->is_triangulation && segment_failure_count == 0; }
   bool holds(const CertifyOptions& o) const {
     return (!o.valid || valid_holds()) && (!o.uniform || uniform_violations.empty()) && rho_violations.empty() &&
            gamma_violations.empty() && (!lengths || lengths->range_violations.empty()) &&

@@ -67,8 +67,9 @@ class Corner {
 
 }  // namespace
 
-AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& min_angle) {
+AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& min_angle, std::size_t described) {
   AngleReport r;
+  r.violations = WitnessList(described);
   const auto& tris = m.mesh.triangles;
   std::pair<Rational, Rational> bounds;
   if (min_angle) bounds = sin_squared_bounds(*min_angle, 128);
@@ -88,9 +89,10 @@ AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& m
       if (!min_angle || reported || corner.obtuse_or_right() || corner.below(bounds.second) != Sign::positive) continue;
       if (corner.below(bounds.first) == Sign::positive) {
         reported = true;
-        r.violations.push_back({tri[i], t, -1, "triangle " + std::to_string(t) + " has an angle of about " +
-                                                   std::to_string(deg) + "° at vertex " + std::to_string(tri[i]) +
-                                                   " in that vertex's metric, below the bound"});
+        r.violations.add(tri[i], t, -1, [&] {
+          return "triangle " + std::to_string(t) + " has an angle of about " + std::to_string(deg) + "° at vertex " +
+                 std::to_string(tri[i]) + " in that vertex's metric, below the bound";
+        });
       } else {
         open.emplace_back(t, i);
       }
@@ -99,7 +101,7 @@ AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& m
   // sin² θ irrational and a corner within the enclosure: refine it (the rational sin² of the corner
   // differs from sin² θ, so some precision decides it).
   std::vector<bool> reported(tris.size(), false);
-  for (const MeshWitness& w : r.violations) reported[w.triangle] = true;
+  for (const WitnessPlace& w : r.violations.places()) reported[w.triangle] = true;
   for (long prec = 256; !open.empty() && prec <= 8192; prec *= 2) {
     bounds = sin_squared_bounds(*min_angle, prec);
     std::vector<std::pair<int, int>> still;
@@ -108,8 +110,10 @@ AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& m
       const Corner corner(m, tri[(i + 2) % 3], tri[i], tri[(i + 1) % 3]);
       if (reported[t] || corner.below(bounds.second) != Sign::positive) continue;
       if (corner.below(bounds.first) == Sign::positive)
-        reported[t] = true, r.violations.push_back({tri[i], t, -1, "triangle " + std::to_string(t) + " has an angle below the bound at vertex " +
-                                                   std::to_string(tri[i]) + " in that vertex's metric"});
+        reported[t] = true, r.violations.add(tri[i], t, -1, [&] {
+          return "triangle " + std::to_string(t) + " has an angle below the bound at vertex " + std::to_string(tri[i]) +
+                 " in that vertex's metric";
+        });
       else
         still.emplace_back(t, i);
     }

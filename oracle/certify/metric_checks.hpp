@@ -15,6 +15,7 @@
 // Triangles that are flat or clockwise are not measured (validity reports them); they are counted
 // as undecided.
 #include "oracle/certify/enclosed_mesh.hpp"
+#include "oracle/certify/witness_list.hpp"
 
 #include <optional>
 #include <string>
@@ -22,19 +23,12 @@
 
 namespace anisocert::oracle {
 
-// One offending (or tied) configuration: the vertex whose metric decides, the triangle, the site
-// (or the other end of an edge).
-struct MeshWitness {
-  int vertex = -1, triangle = -1, site = -1;
-  std::string text;
-};
-
 struct LengthReport {
   std::size_t edges = 0, unit_edges = 0;   // unit: both lengths in [1/√2, √2], decided exactly
   double shortest = 0, longest = 0;        // approximate extreme lengths over both metrics
   int shortest_edge = -1, longest_edge = -1;
   std::vector<double> lengths;             // approximate, two per edge (for the histogram)
-  std::vector<MeshWitness> range_violations;   // one per edge outside the range (when given)
+  WitnessList range_violations;            // one per edge outside the range (when given): vertex, -1, other end
 };
 
 struct QualityReport {
@@ -43,21 +37,25 @@ struct QualityReport {
   int worst_triangle = -1;
   std::vector<std::pair<double, FilterInterval>> quantiles;  // (p, enclosure of the p-quantile)
   std::vector<double> qualities;            // approximate, one per measured triangle
-  std::vector<MeshWitness> violations;      // one per triangle below q₀ (when given)
+  WitnessList violations;                   // one per triangle below q₀ (when given)
 };
 
 struct AngleReport {
   std::size_t measured = 0, undecided = 0;
   double smallest = 180;                    // approximate, degrees
   int smallest_triangle = -1;
-  std::vector<MeshWitness> violations;      // one per triangle with a corner below θ (when given)
+  WitnessList violations;                   // one per triangle with a corner below θ (when given)
   std::vector<int> undecided_triangles;     // θ's bounds never decided (not seen in practice)
 };
 
+// `described`: how many witnesses of each list are described in full (witness_list.hpp); all are
+// counted.
 LengthReport check_lengths(const EnclosedMesh& m, const std::vector<std::pair<int, int>>& edges,
-                           const std::optional<std::pair<Rational, Rational>>& range);
-QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>& min_quality);
-AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& min_angle_degrees);
+                           const std::optional<std::pair<Rational, Rational>>& range, std::size_t described = all_witnesses);
+QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>& min_quality,
+                            std::size_t described = all_witnesses);
+AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& min_angle_degrees,
+                         std::size_t described = all_witnesses);
 
 // Rational bounds lo <= sin²(θ°) <= hi for 0 < θ <= 90: equal and exact where sin² θ is rational
 // (θ = 30°, 45°, 60°, 90°: by Niven's theorem the only rational-degree angles in (0°, 90°] with

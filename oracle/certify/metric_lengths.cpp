@@ -46,8 +46,9 @@ class Length2 {
 }  // namespace
 
 LengthReport check_lengths(const EnclosedMesh& m, const std::vector<std::pair<int, int>>& edges,
-                           const std::optional<std::pair<Rational, Rational>>& range) {
+                           const std::optional<std::pair<Rational, Rational>>& range, std::size_t described) {
   LengthReport r;
+  r.range_violations = WitnessList(described);
   const Rational half(1, 2), two(2);
   const FilterInterval half_i(0.5), two_i(2.0);
   std::optional<std::pair<Rational, Rational>> range2;
@@ -73,10 +74,10 @@ LengthReport check_lengths(const EnclosedMesh& m, const std::vector<std::pair<in
           (l2.compare(range2->first, range2_i.first) == Sign::negative ||
            l2.compare(range2->second, range2_i.second) == Sign::positive)) {
         reported = true;
-        r.range_violations.push_back({v, -1, v == a ? b : a,
-                                      "edge (" + std::to_string(a) + ", " + std::to_string(b) + ") has length " +
-                                          std::to_string(l) + " in the metric of vertex " + std::to_string(v) +
-                                          ", outside the range"});
+        r.range_violations.add(v, -1, v == a ? b : a, [&] {
+          return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ") has length " + std::to_string(l) +
+                 " in the metric of vertex " + std::to_string(v) + ", outside the range";
+        });
       }
     }
     r.unit_edges += unit;

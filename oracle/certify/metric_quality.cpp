@@ -45,8 +45,9 @@ struct QualityKernel {
 
 }  // namespace
 
-QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>& min_quality) {
+QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>& min_quality, std::size_t described) {
   QualityReport r;
+  r.violations = WitnessList(described);
   const auto& tris = m.mesh.triangles;
   std::optional<Rational> q2;
   FilterInterval q2i;
@@ -78,9 +79,10 @@ QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>
             });
         if (s == Sign::negative) {
           reported = true;
-          r.violations.push_back({v, t, -1, "triangle " + std::to_string(t) + " has mean-ratio quality about " +
-                                                std::to_string((qv.lo + qv.hi) / 2) + " in the metric of vertex " +
-                                                std::to_string(v) + ", below the bound"});
+          r.violations.add(v, t, -1, [&] {
+            return "triangle " + std::to_string(t) + " has mean-ratio quality about " + std::to_string((qv.lo + qv.hi) / 2) +
+                   " in the metric of vertex " + std::to_string(v) + ", below the bound";
+          });
         }
       }
     }

@@ -11,7 +11,7 @@
 namespace anisocert::oracle {
 
 void TriangulationCheck::fail(std::string text) {
-  if (failures.size() < max_failure_texts) failures.push_back(std::move(text));
+  if (failures.size() < described) failures.push_back(std::move(text));
   ++failure_count;
 }
 
@@ -325,8 +325,9 @@ std::vector<std::pair<int, int>> unique_edges(const CellList& cells, std::size_t
   return e;
 }
 
-TriangulationCheck check_triangulation(const EnclosedMesh& m, const CellList& cells) {
+TriangulationCheck check_triangulation(const EnclosedMesh& m, const CellList& cells, std::size_t described) {
   TriangulationCheck t;
+  t.described = described;
   const bool polygon = !m.mesh.domain.empty();
   t.checks_run = {"no two sites coincide",
                   "every cell has three or more distinct sites",

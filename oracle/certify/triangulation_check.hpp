@@ -15,7 +15,7 @@
 // Besides: no two sites coincide, every site is a vertex of some cell.
 // Cost: linear in the cells (edge pairing by counting sort, orientations on interval
 // enclosures first), plus a grid for the boundary's crossings; failures are counted in full and
-// described up to max_failure_texts.
+// the first `described` (by default max_failure_texts) are described.
 #include "geometry/mesh.hpp"
 #include "oracle/certify/enclosed_mesh.hpp"
 
@@ -30,8 +30,9 @@ inline constexpr std::size_t max_failure_texts = 1000;
 struct TriangulationCheck {
   bool is_triangulation = false;
   std::vector<std::string> checks_run;
-  std::vector<std::string> failures;          // the first max_failure_texts, each naming the cell, edge or site
+  std::vector<std::string> failures;          // the first `described`, each naming the cell, edge or site
   std::size_t failure_count = 0;              // all of them
+  std::size_t described = max_failure_texts;
   std::vector<int> bad_cells;                 // every cell named by a failure (sorted, once each)
   std::vector<std::pair<int, int>> bad_edges; // every edge named by a failure
   void fail(std::string text);
@@ -56,6 +57,7 @@ std::vector<std::pair<int, int>> unique_edges(const CellList& cells, std::size_t
 
 // The domain: mesh.domain when it is not empty, else the union of the cells bounded by
 // mesh.edges (when there are any). mesh.triangles is not read: the cells are given.
-TriangulationCheck check_triangulation(const EnclosedMesh& mesh, const CellList& cells);
+TriangulationCheck check_triangulation(const EnclosedMesh& mesh, const CellList& cells,
+                                       std::size_t described = max_failure_texts);
 
 }  // namespace anisocert::oracle

@@ -556,7 +556,7 @@ TEST(CertifierVsCgal, DelaunayMeshesAreValidAndLocallyUniformAndAFlipIsCaught) {
     if (m.domain.size() < 3) continue;  // collinear sites
     const oracle::CertifyReport r = oracle::certify_mesh(m, {});
     EXPECT_TRUE(r.valid_holds()) << (r.valid->failures.empty() ? "" : r.valid->failures[0]);
-    EXPECT_TRUE(r.uniform_violations.empty()) << r.uniform_violations[0].text;
+    EXPECT_TRUE(r.uniform_violations.empty()) << r.uniform_violations.described()[0].text;
     // Flip the first interior edge whose quadrilateral is strictly convex and not M-cocircular.
     std::map<std::pair<int, int>, std::pair<int, int>> opposite;  // directed edge → (triangle, apex)
     for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
@@ -576,7 +576,7 @@ TEST(CertifierVsCgal, DelaunayMeshesAreValidAndLocallyUniformAndAFlipIsCaught) {
       const oracle::CertifyReport f = oracle::certify_mesh(g, {});
       EXPECT_TRUE(f.valid_holds()) << (f.valid->failures.empty() ? "" : f.valid->failures[0]);
       ASSERT_FALSE(f.uniform_violations.empty());
-      const auto& w = f.uniform_violations[0];
+      const auto& w = f.uniform_violations.described()[0];
       EXPECT_TRUE(w.triangle == tp.first || w.triangle == back->second.first);
       ++flipped;
       break;

@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
   check(q.holds && q.report.lengths && q.report.angles, "with rho0 = 6/5, gamma0 = 1, angles >= 25 degrees too");
   bounds.rho0 = anisocert::Rational(1);
   const anisocert::Certificate r = anisocert::certify(mesh, metrics, bounds);
-  check(!r.holds && r.report.rho_violations.size() == 2, "not with rho0 = 1: two triangles exceed it");
+  check(!r.holds && r.report.rho_violations.count() == 2, "not with rho0 = 1: two triangles exceed it");
 
   // One triangle clockwise: not a triangulation.
   anisocert::DoubleMesh broken = mesh;
