@@ -126,13 +126,16 @@ Rational rational_from_double(double x) {
 std::string to_exact_string(const Rational& q) {
   Integer num = boost::multiprecision::numerator(q);
   Integer den = boost::multiprecision::denominator(q);
-  // den = 2^a 5^b  <=>  q has a terminating decimal expansion with max(a, b) digits.
+  // den = 2^a 5^b  <=>  q has a terminating decimal expansion with max(a, b) digits. The factors
+  // are removed by GMP at once (mpz_scan1, mpz_remove): one division at a time was quadratic,
+  // 5 s for 10^-100000.
   Integer rest = den;
-  unsigned twos = 0, fives = 0;
-  while (rest % 2 == 0) { rest /= 2; ++twos; }
-  while (rest % 5 == 0) { rest /= 5; ++fives; }
+  const unsigned long twos = mpz_scan1(rest.backend().data(), 0);
+  mpz_tdiv_q_2exp(rest.backend().data(), rest.backend().data(), twos);
+  Integer five = 5;
+  const unsigned long fives = mpz_remove(rest.backend().data(), rest.backend().data(), five.backend().data());
   if (rest != 1) return num.str() + "/" + den.str();
-  unsigned digits = std::max(twos, fives);
+  const unsigned long digits = std::max(twos, fives);
   Integer scaled = abs(num) * power_of_ten(digits) / den;  // exact: den divides 10^digits
   std::string s = scaled.str();
   if (digits > 0) {

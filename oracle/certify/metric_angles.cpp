@@ -105,7 +105,8 @@ AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& m
   for (long prec = 256; !open.empty() && prec <= 8192; prec *= 2) {
     bounds = sin_squared_bounds(*min_angle, prec);
     std::vector<std::pair<int, int>> still;
-    for (const auto& [t, i] : open) {
+    for (const auto& corner_at : open) {
+      const int t = corner_at.first, i = corner_at.second;  // named, not bound: clang 14 cannot capture bindings
       const auto& tri = tris[t];
       const Corner corner(m, tri[(i + 2) % 3], tri[i], tri[(i + 1) % 3]);
       if (reported[t] || corner.below(bounds.second) != Sign::positive) continue;

@@ -61,7 +61,7 @@ LengthReport check_lengths(const EnclosedMesh& m, const std::vector<std::pair<in
   r.lengths.reserve(2 * edges.size());
   r.shortest = INFINITY;
   for (std::size_t k = 0; k < edges.size(); ++k) {
-    const auto [a, b] = edges[k];
+    const int a = edges[k].first, b = edges[k].second;  // named, not bound: clang 14 cannot capture bindings
     bool unit = true, reported = false;
     for (const int v : {a, b}) {
       const Length2 l2(m, a, b, v);
