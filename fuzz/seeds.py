@@ -75,3 +75,11 @@ put("certify_simple", "clockwise-triangle", bytes([1, 0, 2] + [4] * 8 + [0] * 9 
 put("certify_simple", "missing-triangle", bytes([1, 0, 3] + [4] * 8 + [0] * 9 + [1]))
 put("certify_simple", "coincident-vertices", bytes([1, 0, 4] + [4] * 8 + [0] * 9 + [0, 1]))
 put("certify_simple", "folded", bytes([2, 0, 0] + [8, 8, 0, 0, 8, 0, 0, 8] + [1, 0] * 8))
+
+# json_input: the input example of docs/oracle.md § Input, and small site sets in every number form.
+put("json_input", "docs-oracle-input-example",
+    '{"sites":  [{"x": "0", "y": "1/3", "metric": ["4", "0", "1"]}],\n'
+    ' "domain": [["0","0"], ["10","0"], ["10","10"], ["0","10"]],\n "segments": [[0, 1]]}\n')
+put("json_input", "three-sites-number-forms",
+    '{"sites": [{"x": 0.1, "y": "1/3", "metric": [1, 0, 1]}, {"x": "1e-3", "y": 2, "metric": ["2", "-1/2", "3"]},'
+    ' {"x": "-0.5", "y": "0.25", "metric": ["1e2", "0", "1e-2"]}]}\n')
