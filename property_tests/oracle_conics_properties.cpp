@@ -4,6 +4,7 @@
 // inside our isolating interval), the same multiplicities, order and signs of polynomials.
 
 #include "oracle/algebraic/conic_intersection.hpp"
+#include "property_tests/generators/conic_pairs.hpp"
 #include "property_tests/generators/rationals.hpp"
 #include "property_tests/second_engine/qqbar_conics.hpp"
 
@@ -16,6 +17,9 @@ using namespace anisocert::oracle;
 using anisocert::Sign;
 using anisocert::sign_of;
 namespace qq = anisocert::second_engine;
+using anisocert::gen::combine;
+using anisocert::gen::line;
+using anisocert::gen::product;
 
 namespace {
 
@@ -30,18 +34,6 @@ rc::Gen<Conic> conic() {
                         small(), small(), small(), small(), small(), small());
 }
 
-// The line through p and q: (y_q − y_p) x − (x_q − x_p) y + (x_q y_p − x_p y_q).
-std::array<Rational, 3> line(std::pair<Rational, Rational> p, std::pair<Rational, Rational> q) {
-  return {q.second - p.second, p.first - q.first, q.first * p.second - p.first * q.second};
-}
-Conic product(const std::array<Rational, 3>& l, const std::array<Rational, 3>& m) {
-  return {l[0] * m[0], l[0] * m[1] + l[1] * m[0], l[1] * m[1], l[0] * m[2] + l[2] * m[0], l[1] * m[2] + l[2] * m[1],
-          l[2] * m[2]};
-}
-Conic combine(const Conic& P, const Rational& s, const Conic& Q) {
-  return {P.a + s * Q.a, P.b + s * Q.b, P.c + s * Q.c, P.d + s * Q.d, P.e + s * Q.e, P.f + s * Q.f};
-}
-
 rc::Gen<std::pair<Rational, Rational>> rpoint() { return rc::gen::pair(small(), small()); }
 
 rc::Gen<ConicPair> conic_pair() {
@@ -50,34 +42,32 @@ rc::Gen<ConicPair> conic_pair() {
     switch (k) {
       case 0:
         return rc::gen::apply([](Conic A, Conic B) { return ConicPair{A, B, "random"}; }, conic(), conic());
-      case 1:  // the pencil through four chosen points: L₁L₂ + λ L₃L₄ and L₁L₂ + μ L₃L₄
+      case 1:  // the pencil through four chosen points
         return rc::gen::apply(
             [](P p1, P p2, P p3, P p4, Rational l, Rational m) {
-              const Conic Q1 = product(line(p1, p2), line(p3, p4)), Q2 = product(line(p1, p3), line(p2, p4));
-              return ConicPair{combine(Q1, l, Q2), combine(Q1, m, Q2), "through four points"};
+              const auto [A, B] = anisocert::gen::through_four_points(p1, p2, p3, p4, l, m);
+              return ConicPair{A, B, "through four points"};
             },
             rpoint(), rpoint(), rpoint(), rpoint(), small(), small());
-      case 2:  // tangent at a chosen point: A through p, B = A + λ T² with T the tangent line at p
+      case 2:  // tangent at a chosen point
         return rc::gen::apply(
             [](Conic A, P p, Rational l) {
-              const auto [x, y] = p;
-              A.f -= A(x, y);  // now A(p) = 0
-              const Rational gx = 2 * A.a * x + A.b * y + A.d, gy = A.b * x + 2 * A.c * y + A.e;
-              const std::array<Rational, 3> T{gx, gy, -(gx * x + gy * y)};
-              return ConicPair{A, combine(A, l == 0 ? Rational(1) : l, product(T, T)), "tangent"};
+              const auto [C, D] = anisocert::gen::tangent_at(A, p, l);
+              return ConicPair{C, D, "tangent"};
             },
             conic(), rpoint(), small());
       case 3:  // a shared line
         return rc::gen::apply(
             [](P p, P q, P r, P s, P t) {
-              const auto L = line(p, q);
-              return ConicPair{product(L, line(r, s)), product(L, line(s, t)), "shared line"};
+              const auto [A, B] = anisocert::gen::sharing_a_line(p, q, r, s, t);
+              return ConicPair{A, B, "shared line"};
             },
             rpoint(), rpoint(), rpoint(), rpoint(), rpoint());
       default:  // line pairs meeting at one point, singular for both
         return rc::gen::apply(
             [](P o, P p, P q, P r, P s) {
-              return ConicPair{product(line(o, p), line(o, q)), product(line(o, r), line(o, s)), "singular point"};
+              const auto [A, B] = anisocert::gen::singular_at(o, p, q, r, s);
+              return ConicPair{A, B, "singular point"};
             },
             rpoint(), rpoint(), rpoint(), rpoint(), rpoint());
     }

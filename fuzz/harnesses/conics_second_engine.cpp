@@ -1,7 +1,8 @@
 // The oracle's exact conic intersection against the second engine (docs/fuzzing.md § Differential):
 // FLINT's resultants and Calcium's qqbar (property_tests/second_engine/, no code shared with
 // oracle/). Small integer coefficients, decoded from bytes; the first byte picks a construction
-// that reaches the degenerate cases bytes alone rarely hit (as property_tests/oracle_conics does):
+// that reaches the degenerate cases bytes alone rarely hit (property_tests/generators/conic_pairs.hpp,
+// the constructions of the property Oracle.ConicIntersectionAgreesWithQqbar):
 //   0 two conics from their coefficients;
 //   1 two members of the pencil through four points (four common points, some possibly equal);
 //   2 a conic through a point and one tangent to it there (a double point);
@@ -12,14 +13,14 @@
 // the same order in x and y. Limit: 32 bytes.
 #include "fuzz/support/finding.hpp"
 #include "oracle/algebraic/conic_intersection.hpp"
+#include "property_tests/generators/conic_pairs.hpp"
 #include "property_tests/second_engine/qqbar_conics.hpp"
-
-#include <array>
 
 using anisocert::Rational;
 using anisocert::fuzz::require;
 using anisocert::oracle::Conic;
 namespace qq = anisocert::second_engine;
+namespace gen = anisocert::gen;
 
 namespace {
 
@@ -33,45 +34,31 @@ struct Bytes {
     for (Rational* k : {&c.a, &c.b, &c.c, &c.d, &c.e, &c.f}) *k = small();
     return c;
   }
-  std::array<Rational, 2> point() { return {small(), small()}; }
+  gen::RPoint point() {
+    Rational x = small();
+    return {x, small()};
+  }
 };
 
-using Line = std::array<Rational, 3>;
-
-Line line(const std::array<Rational, 2>& p, const std::array<Rational, 2>& q) {
-  return {q[1] - p[1], p[0] - q[0], q[0] * p[1] - p[0] * q[1]};
-}
-Conic product(const Line& l, const Line& m) {
-  return {l[0] * m[0], l[0] * m[1] + l[1] * m[0], l[1] * m[1], l[0] * m[2] + l[2] * m[0], l[1] * m[2] + l[2] * m[1], l[2] * m[2]};
-}
-Conic combine(const Conic& P, const Rational& s, const Conic& Q) {
-  return {P.a + s * Q.a, P.b + s * Q.b, P.c + s * Q.c, P.d + s * Q.d, P.e + s * Q.e, P.f + s * Q.f};
-}
-
-std::pair<Conic, Conic> decode(Bytes& b, int kind) {
+gen::ConicPair decode(Bytes& b, int kind) {
   switch (kind) {
     case 1: {
       const auto p1 = b.point(), p2 = b.point(), p3 = b.point(), p4 = b.point();
-      const Conic Q1 = product(line(p1, p2), line(p3, p4)), Q2 = product(line(p1, p3), line(p2, p4));
       const Rational l = b.small(), m = b.small();
-      return {combine(Q1, l, Q2), combine(Q1, m, Q2)};
+      return gen::through_four_points(p1, p2, p3, p4, l, m);
     }
     case 2: {
-      Conic A = b.conic();
+      const Conic A = b.conic();
       const auto p = b.point();
-      A.f -= A(p[0], p[1]);
-      const Rational gx = 2 * A.a * p[0] + A.b * p[1] + A.d, gy = A.b * p[0] + 2 * A.c * p[1] + A.e;
-      const Line T{gx, gy, -(gx * p[0] + gy * p[1])};
-      const Rational l = b.small();
-      return {A, combine(A, l == 0 ? Rational(1) : l, product(T, T))};
+      return gen::tangent_at(A, p, b.small());
     }
     case 3: {
       const auto p = b.point(), q = b.point(), r = b.point(), s = b.point(), t = b.point();
-      return {product(line(p, q), line(r, s)), product(line(p, q), line(s, t))};
+      return gen::sharing_a_line(p, q, r, s, t);
     }
     case 4: {
       const auto o = b.point(), p = b.point(), q = b.point(), r = b.point(), s = b.point();
-      return {product(line(o, p), line(o, q)), product(line(o, r), line(o, s))};
+      return gen::singular_at(o, p, q, r, s);
     }
     default: {
       const Conic A = b.conic();
