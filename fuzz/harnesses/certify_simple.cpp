@@ -15,6 +15,7 @@
 //            M_v-distance to it against the radius: strictly inside is a violation, equal a tie.
 // The certifier's `valid` verdict, its set of violating triangles, and (for triangles without a
 // violation) its set of tied triangles must be the simple check's. Limit: 64 bytes.
+#include "fuzz/support/byte_source.hpp"
 #include "fuzz/support/finding.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
 
@@ -30,22 +31,16 @@ using Triangle = std::array<int, 3>;
 
 namespace {
 
-struct Bytes {
-  const std::uint8_t* data;
-  std::size_t size, at = 0;
-  unsigned next() { return at < size ? data[at++] : 0u; }
-};
-
 Rational cross(const Point& o, const Point& a, const Point& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-Metric metric_of(Bytes& b) {
+Metric metric_of(anisocert::fuzz::ByteSource& b) {
   const Rational a(1 + b.next() % 3), s(static_cast<int>(b.next() % 5) - 2), c(1 + b.next() % 3);
   return {a * a, a * s, s * s + c * c};
 }
 
-Mesh decode(Bytes& b, int& k) {
+Mesh decode(anisocert::fuzz::ByteSource& b, int& k) {
   k = 2 + static_cast<int>(b.next() % 4);
   const unsigned metric_mode = b.next() % 3, corruption = b.next() % 8;
   Mesh m;
@@ -169,7 +164,7 @@ void simple_uniform(const Mesh& m, std::set<int>& violating, std::set<int>& tied
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 64) return -1;
-  Bytes b{data, size};
+  anisocert::fuzz::ByteSource b(data, size);
   int k = 0;
   const Mesh m = decode(b, k);
   anisocert::oracle::CertifyOptions o;

@@ -11,6 +11,7 @@
 // Both engines must give the same shared-component verdict, the same real points (each qqbar point
 // a root of our defining polynomial inside our isolating interval), the same multiplicities and
 // the same order in x and y. Limit: 32 bytes.
+#include "fuzz/support/byte_source.hpp"
 #include "fuzz/support/finding.hpp"
 #include "oracle/algebraic/conic_intersection.hpp"
 #include "property_tests/generators/conic_pairs.hpp"
@@ -24,11 +25,10 @@ namespace gen = anisocert::gen;
 
 namespace {
 
-struct Bytes {
-  const std::uint8_t* data;
-  std::size_t size, at = 0;
-  // A small integer in [−6, 6]; 0 past the end.
-  Rational small() { return at < size ? Rational(static_cast<int>(data[at++] % 13) - 6) : Rational(0); }
+// Small integers in [−6, 6] from the bytes; 0 past the end.
+struct SmallIntegers {
+  anisocert::fuzz::ByteSource bytes;
+  Rational small() { return bytes.exhausted() ? Rational(0) : Rational(static_cast<int>(bytes.next() % 13) - 6); }
   Conic conic() {
     Conic c;
     for (Rational* k : {&c.a, &c.b, &c.c, &c.d, &c.e, &c.f}) *k = small();
@@ -40,7 +40,7 @@ struct Bytes {
   }
 };
 
-gen::ConicPair decode(Bytes& b, int kind) {
+gen::ConicPair decode(SmallIntegers& b, int kind) {
   switch (kind) {
     case 1: {
       const auto p1 = b.point(), p2 = b.point(), p3 = b.point(), p4 = b.point();
@@ -71,7 +71,7 @@ gen::ConicPair decode(Bytes& b, int kind) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1 || size > 32) return -1;
-  Bytes b{data, size, 1};
+  SmallIntegers b{anisocert::fuzz::ByteSource(data, size, 1)};
   const auto [A, B] = decode(b, data[0] % 5);
   if (A.polynomial().is_zero() || B.polynomial().is_zero()) return 0;  // not conics
   const auto ours = anisocert::oracle::intersect(A, B);

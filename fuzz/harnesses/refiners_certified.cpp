@@ -11,6 +11,7 @@
 // Input: refiner, field, shape, seed, then one byte per field parameter and per refiner
 // parameter; limit 64 bytes.
 #include "fields/registry.hpp"
+#include "fuzz/support/byte_source.hpp"
 #include "fuzz/support/finding.hpp"
 #include "geometry/mesh.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
@@ -24,12 +25,6 @@ namespace fields = anisocert::fields;
 using Polygon = anisocert::geometry::Polygon<double>;
 
 namespace {
-
-struct Bytes {
-  const std::uint8_t* data;
-  std::size_t size, at = 0;
-  unsigned next() { return at < size ? data[at++] : 0u; }
-};
 
 // Domains of the unit's size with exact dyadic corners: the unit square, a stretched rectangle,
 // a triangle with an obtuse corner, the L-shape (a reflex corner) and a convex pentagon.
@@ -54,7 +49,7 @@ double scaled(double value, unsigned b) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 64) return -1;
-  Bytes b{data, size};
+  anisocert::fuzz::ByteSource b(data, size);
   const auto& entries = refiners::registered_refiners();
   const refiners::RefinerEntry& entry = entries[b.next() % entries.size()];
   const auto& builtin = fields::builtin_fields();
