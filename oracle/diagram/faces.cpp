@@ -263,10 +263,13 @@ Location locate(const Diagram& d, const Point2<Rational>& point) {
   const LocatedPoint p = LocatedPoint::rational(point.x + d.shear * point.y, point.y);
   for (int n = 0; n < static_cast<int>(d.nodes.size()); ++n)
     if (same_point(d.nodes[n].at, p)) return {Location::Kind::node, n, d.nodes[n].sites};
+  // An arc's pieces meet at its joints (vertical tangents, not nodes): a point there is the end of
+  // two pieces and strictly inside neither.
   for (int a = 0; a < static_cast<int>(d.arcs.size()); ++a)
     for (const Piece& piece : d.arcs[a].pieces)
-      if (compare_x(p, *piece.left_point) == Sign::positive && compare_x(p, *piece.right_point) == Sign::negative &&
-          piece.branch.compare_point(p) == Sign::zero)
+      if ((piece.left < 0 && same_point(p, *piece.left_point)) || (piece.right < 0 && same_point(p, *piece.right_point)) ||
+          (compare_x(p, *piece.left_point) == Sign::positive && compare_x(p, *piece.right_point) == Sign::negative &&
+           piece.branch.compare_point(p) == Sign::zero))
         return {Location::Kind::arc, a, {d.arcs[a].v, d.arcs[a].w}};
   for (int b = 0; b < static_cast<int>(d.boundary.size()); ++b) {
     HalfEdge h{-1, b};
