@@ -12,7 +12,11 @@ namespace anisocert::cli {
 DiagramJob diagram_job(const geometry::Mesh<Rational>& in, const std::string& name, const DiagramOutputs& o) {
   oracle::Diagram d;
   try {
-    d = oracle::compute_diagram(in, progress_printer(o.quiet));
+    oracle::DiagramOptions options;
+    options.exact_only = o.exact_only;
+    options.threads = o.threads;
+    options.progress = progress_printer(o.quiet);
+    d = oracle::compute_diagram(in, options);
   } catch (const std::domain_error& e) {  // a degenerate input the oracle declines, named
     throw UsageError(name + ": " + e.what());
   }

@@ -14,6 +14,8 @@ namespace anisocert::cli {
 struct DiagramOutputs {
   std::string json_path, svg_path;  // empty: not written
   bool quiet = false;
+  bool exact_only = false;  // build every point exactly, no filtered constructions
+  int threads = 0;          // 0: every core
 };
 
 struct DiagramJob {

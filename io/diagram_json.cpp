@@ -47,8 +47,8 @@ std::pair<Conic, Conic> node_curves(const Diagram& d, const oracle::Node& n) {
 
 OrderedJson point_certificate(const Diagram& d, const oracle::LocatedPoint& p, const Conic& A, const Conic& B) {
   const auto [ax, ay] = d.original_xy(p);
-  const auto& x = p.point.x();
-  const auto& y = p.point.y();
+  const auto& x = p.exact().x();
+  const auto& y = p.exact().y();
   if (x.is_exact() && y.is_exact())
     return {{"exact", true}, {"x", to_exact_string(x.lo() - d.shear * y.lo())}, {"y", to_exact_string(y.lo())}};
   // The same point among the common points of the curves in the input's coordinates: the shear
@@ -79,6 +79,17 @@ OrderedJson point_certificate(const Diagram& d, const oracle::LocatedPoint& p, c
           {"curves", OrderedJson::array({conic_json(A0), conic_json(B0)})},
           {"box", OrderedJson::array({OrderedJson::array({to_exact_string(match->x().lo()), to_exact_string(match->x().hi())}),
                                       OrderedJson::array({to_exact_string(match->y().lo()), to_exact_string(match->y().hi())})})}};
+}
+
+OrderedJson filter_counts_json(const oracle::FilterCounts& f) {
+  const auto kind = [](std::uint64_t filtered, std::uint64_t exact) {
+    return OrderedJson{{"filtered", filtered}, {"exact", exact}};
+  };
+  return {{"roots", kind(f.roots_filtered, f.roots_exact)},
+          {"samples", kind(f.samples_filtered, f.samples_exact)},
+          {"signs", kind(f.signs_filtered, f.signs_exact)},
+          {"comparisons", kind(f.comparisons_filtered, f.comparisons_exact)},
+          {"exact_points_built", f.exact_points}};
 }
 
 DiagramCounts diagram_counts(const Diagram& d) {
@@ -174,6 +185,9 @@ OrderedJson diagram_json(const Diagram& d) {
           {"stats", {{"boxes", d.stats.boxes}, {"leaves", d.stats.leaves}, {"max_depth", d.stats.max_depth},
                      {"candidate_triples", d.stats.triples}, {"candidate_pairs", d.stats.pairs},
                      {"candidate_points", d.stats.candidate_points},
+                     {"threads", d.stats.threads},
+                     {"exact_only", d.stats.exact_only},
+                     {"filters", filter_counts_json(d.stats.filters)},
                      {"seconds", {{"candidates", d.stats.seconds_candidates}, {"vertices", d.stats.seconds_vertices},
                                   {"arcs", d.stats.seconds_arcs}, {"faces", d.stats.seconds_faces},
                                   {"dual", d.stats.seconds_dual}}}}}};

@@ -19,6 +19,9 @@ OrderedJson diagram_json(const oracle::Diagram& d);
 OrderedJson point_certificate(const oracle::Diagram& d, const oracle::LocatedPoint& p, const oracle::Conic& A,
                               const oracle::Conic& B);
 
+// How many decisions the filters took and how many were exact, per kind (issue 14).
+OrderedJson filter_counts_json(const oracle::FilterCounts& f);
+
 struct DiagramCounts {
   std::size_t voronoi_vertices = 0, nodes = 0, arcs = 0, faces = 0, orphans = 0, wedge_violations = 0;
 };

@@ -28,6 +28,10 @@ void add_diagram(CLI::App& app, int& exit_code) {
   c->add_option("--json", o->outputs.json_path, "write the whole diagram as JSON to this file (fields: docs/oracle.md)");
   c->add_option("--svg", o->outputs.svg_path, "write a picture of the diagram to this file");
   c->add_flag("--quiet", o->outputs.quiet, "no progress lines on standard error");
+  c->add_flag("--exact-only", o->outputs.exact_only,
+              "build every point with exact arithmetic (no interval filters first); same answers, slower");
+  c->add_option("--threads", o->outputs.threads, "threads for candidate triples and pairs (default: every core)")
+      ->check(CLI::Range(1, 1024));
   c->callback([o, &exit_code] {
     geometry::Mesh<Rational> in;
     try {

@@ -30,7 +30,14 @@ std::string diagram_summary(const oracle::Diagram& d, const std::string& name) {
   if (d.theorem7.preconditions_hold)
     o << "  Theorem 7 conclusion: " << (d.dual_check.is_triangulation ? "confirmed" : "CONTRADICTED") << "\n";
   o << "  time: candidates " << d.stats.seconds_candidates << " s, vertices " << d.stats.seconds_vertices << " s, arcs "
-    << d.stats.seconds_arcs << " s, faces " << d.stats.seconds_faces << " s, dual " << d.stats.seconds_dual << " s\n";
+    << d.stats.seconds_arcs << " s, faces " << d.stats.seconds_faces << " s, dual " << d.stats.seconds_dual << " s ("
+    << d.stats.threads << (d.stats.threads == 1 ? " thread" : " threads") << (d.stats.exact_only ? ", exact only" : "")
+    << ")\n";
+  const oracle::FilterCounts& f = d.stats.filters;
+  o << "  filters (decided by intervals / exact): roots " << f.roots_filtered << " / " << f.roots_exact << ", samples "
+    << f.samples_filtered << " / " << f.samples_exact << ", signs " << f.signs_filtered << " / " << f.signs_exact
+    << ", comparisons " << f.comparisons_filtered << " / " << f.comparisons_exact << "; exact points built "
+    << f.exact_points << "\n";
   return o.str();
 }
 

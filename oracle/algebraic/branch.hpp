@@ -16,7 +16,10 @@ struct Branch {
 
   // sign(p.y − y_branch(p.x)), exact; p.x must be in the branch's x-domain (disc(p.x) ≥ 0).
   Sign compare_point(const LocatedPoint& p) const;
-  // The point of the branch above the rational x0 (in its x-domain, disc(x0) > 0 for conics).
+  // The point of the branch above the rational x0 (in its x-domain, disc(x0) > 0 for conics):
+  // filtered, from the quadratic formula in intervals when both roots come out apart (the
+  // exact point is then built only if a decision needs it), else exact, its box refined below
+  // `width`.
   LocatedPoint at(const Rational& x0, const Rational& width) const;
   // Whether a point of the curve lies on this branch.
   bool holds(const LocatedPoint& p) const;
@@ -30,8 +33,5 @@ Polynomial discriminant_in_x(const Conic& G);
 Conic derivative_in_y(const Conic& G);
 // The curve's kind, from its degree and the discriminant in x.
 bool is_line(const Conic& G);
-
-// A rational strictly between two distinct algebraic x-coordinates a < b.
-Rational rational_between(const RealAlgebraic& a, const RealAlgebraic& b);
 
 }  // namespace anisocert::oracle

@@ -1,25 +1,53 @@
 #pragma once
-// An exact algebraic point together with a double box around it, for filtered signs: the sign of
-// a conic at the point is read from its interval value on the box when that excludes zero, and
-// decided exactly otherwise (DESIGN.md: a filter may only speed up, never change, an answer).
+// An algebraic point known by a double box around it, for filtered decisions: the sign of a conic
+// at the point is read from its interval value on the box when that excludes zero, two points
+// whose boxes are apart are ordered by their boxes, and only otherwise is the exact point used
+// (DESIGN.md: a filter may only speed up, never change, an answer). The exact point is either
+// given at construction (exact constructions) or built from a recipe the first time a decision
+// needs it (filtered constructions, issue 14): most points never need it.
+//
+// A LocatedPoint is a value: copies are independent, and one object is used by one thread at a
+// time (building the exact point, or refining it, changes the object).
 #include "oracle/algebraic/algebraic_point.hpp"
+#include "oracle/algebraic/filter_context.hpp"
 #include "numbers/filter_interval.hpp"
+
+#include <functional>
+#include <memory>
 
 namespace anisocert::oracle {
 
+// A box [x] × [y] of doubles.
+struct IntervalBox {
+  anisocert::FilterInterval x, y;
+};
+
 struct LocatedPoint {
-  AlgebraicPoint point;
+  using Recipe = std::function<AlgebraicPoint()>;
+
   anisocert::FilterInterval x, y;  // boxes containing the exact coordinates
 
-  // Refines the coordinates' isolating intervals below `width` (a positive rational).
+  // An exact point, its coordinates' isolating intervals refined below `width` (a positive
+  // rational) for the box.
   LocatedPoint(AlgebraicPoint p, const Rational& width);
+  // A point known by a box that contains it; `recipe` builds it exactly, on first use.
+  LocatedPoint(const IntervalBox& box, std::shared_ptr<const Recipe> recipe);
   static LocatedPoint rational(const Rational& x, const Rational& y);
+
+  // The exact point.
+  const AlgebraicPoint& exact() const;
 
   Sign sign_of(const Conic& G) const;
   // Interval value of G on the box (for callers that compare several values first).
   anisocert::FilterInterval value(const Conic& G) const;
   // Whether the boxes of two points are disjoint (then the points differ).
   bool apart_from(const LocatedPoint& q) const;
+  // Whether q is a copy of this point, i.e. has the same construction (then they are equal).
+  bool copy_of(const LocatedPoint& q) const { return recipe_ && recipe_ == q.recipe_; }
+
+ private:
+  std::shared_ptr<const Recipe> recipe_;
+  mutable std::optional<AlgebraicPoint> exact_;
 };
 
 // Exact equality of points, with the box test first.
@@ -29,5 +57,13 @@ Sign compare_x(const LocatedPoint& p, const LocatedPoint& q);
 Sign compare_y(const LocatedPoint& p, const LocatedPoint& q);
 // sign(p.x − x0), exact.
 Sign compare_x(const LocatedPoint& p, const Rational& x0);
+
+// The simplest rational strictly between the x-coordinates a.x < b.x: the dyadic k/2^m of least
+// m (0 when a.x < 0 < b.x). It depends only on the two exact values, not on how they were
+// computed, so the filtered and the exact constructions choose the same sample points.
+Rational rational_between(const LocatedPoint& a, const LocatedPoint& b);
+// The same between a.x and a rational x0 > a.x, or x0 < a.x.
+Rational rational_between(const LocatedPoint& a, const Rational& x0);
+Rational rational_between(const Rational& x0, const LocatedPoint& b);
 
 }  // namespace anisocert::oracle

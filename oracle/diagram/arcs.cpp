@@ -5,8 +5,9 @@
 // bisector, and the vertical tangents where the upper and lower branches meet. Between two
 // consecutive cuts of a branch the status is constant, so one exact sample decides the piece.
 // Kept pieces are chained through vertical tangents into arcs.
-#include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/algebraic/common_points.hpp"
 #include "oracle/diagram/build.hpp"
+#include "oracle/diagram/parallel.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -17,7 +18,7 @@ namespace {
 
 struct Cut {
   LocatedPoint at;
-  int node = -1;        // a node of D|Ω, or −1
+  int node = -1;        // a node of D|Ω (an id, or pending_ref(k) for a new one), or −1
   bool joint = false;   // a vertical tangent (on both branches)
   bool on_upper = true, on_lower = true;
 };
@@ -29,14 +30,45 @@ bool boxes_meet(const BoxBounds& a, const BoxBounds& b) {
 }  // namespace
 
 void Builder::build_arcs() {
-  for (std::size_t i = 0; i < cand_.pairs.size(); ++i) {
-    if (progress_ && (i + 1) % 1000 == 0)
-      progress_("arcs: " + std::to_string(i + 1) + " of " + std::to_string(cand_.pairs.size()) + " candidate pairs");
-    build_arcs_of_pair(cand_.pairs[i].first, cand_.pairs[i].second, cand_.pair_region[i]);
+  const std::size_t n = cand_.pairs.size();
+  std::vector<PairArcs> found(n);
+  parallel_for(
+      n, threads_, [&](std::size_t i) { found[i] = arcs_of_pair(i); },
+      [&](std::size_t done) {
+        if (progress_) progress_("arcs: " + std::to_string(done) + " of " + std::to_string(n) + " candidate pairs");
+      });
+  for (PairArcs& f : found) add_arcs(f);
+}
+
+// Registers a pair's new nodes and adds its arcs, with their node references resolved.
+void Builder::add_arcs(PairArcs& found) {
+  std::vector<int> id;
+  for (const PendingNode& p : found.pending) id.push_back(register_node(p.kind, p.at, p.owners));
+  const auto resolve = [&](int& ref) {
+    if (ref <= -2) ref = id[static_cast<std::size_t>(-2 - ref)];
+  };
+  for (Arc& arc : found.arcs) {
+    resolve(arc.ends[0]), resolve(arc.ends[1]);
+    for (Piece& p : arc.pieces) resolve(p.left), resolve(p.right);
+    for (int e : {arc.ends[0], arc.ends[1]})  // LS Theorem 7: an arc cut by the restriction to Ω
+      if (e >= 0 && d_.nodes[e].sites.size() == 2)
+        for (int k : d_.nodes[e].boundary_edges)
+          if (std::find(arc.cut_by_edges.begin(), arc.cut_by_edges.end(), k) == arc.cut_by_edges.end())
+            arc.cut_by_edges.push_back(k);
+    std::sort(arc.cut_by_edges.begin(), arc.cut_by_edges.end());
+    d_.arcs.push_back(std::move(arc));
   }
 }
 
-void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
+PairArcs Builder::arcs_of_pair(std::size_t i) const {
+  const int v = cand_.pairs[i].first, w = cand_.pairs[i].second;
+  const BoxBounds& region = cand_.pair_region[i];
+  const IntervalBox search = sheared_box(region);
+  PairArcs out;
+  const auto pending = [&](Node::Kind kind, const LocatedPoint& p, const std::vector<int>& owners) {
+    out.pending.push_back({kind, p, owners});
+    return pending_ref(out.pending.size() - 1);
+  };
   const Conic F = bisector_conic(d_.sheared, v, w);
   const bool line = is_line(F);
   std::vector<Cut> cuts;
@@ -65,34 +97,36 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
     const auto& sa = d_.sheared.domain[k];
     const auto& sb = d_.sheared.domain[(k + 1) % m];
     const Conic edge_line = line_conic(sa, sb);
-    ConicIntersection x = intersect(F, edge_line);
+    // The crossings that can be arc ends lie in the pair's region and on the edge.
+    const IntervalBox edge = sheared_box(edge_box);
+    const IntervalBox on_edge{{std::max(search.x.lo, edge.x.lo), std::min(search.x.hi, edge.x.hi)},
+                              {std::max(search.y.lo, edge.y.lo), std::min(search.y.hi, edge.y.hi)}};
+    CommonPoints x = common_points(F, edge_line, on_edge, width_);
     if (x.shared_component) {
       // F contains the edge's line: its pieces on the edge lie on ∂Ω, not inside Ω, and are
       // dropped by their samples; the edge's ends and the other component's crossing are cuts.
       decline_if_tied_on_edge(v, w, static_cast<int>(k));
       for (const auto* corner : {&sa, &sb}) add_cut(LocatedPoint::rational(corner->x, corner->y), -1, false);
       const Conic rest = line_quotient(F, edge_line);
-      x = rest.d == 0 && rest.e == 0 ? ConicIntersection{} : intersect(rest, edge_line);
-      if (x.shared_component) x = ConicIntersection{};  // F is the edge line twice: impossible for a bisector
+      x = rest.d == 0 && rest.e == 0 ? CommonPoints{} : exact_common_points(rest, edge_line, width_);
+      if (x.shared_component) x = CommonPoints{};  // F is the edge line twice: impossible for a bisector
     }
-    for (const IntersectionPoint& ip : x.points) {
-      const LocatedPoint p(ip.point, width_);
+    for (const LocatedPoint& p : x.points) {
       if (compare_x(p, std::min(sa.x, sb.x)) == Sign::negative || compare_x(p, std::max(sa.x, sb.x)) == Sign::positive)
         continue;
       const Nearest n = nearest(p, v, {w});
-      add_cut(p, n.closer ? -1 : register_node(Node::Kind::domain_crossing, p, n.owners), false);
+      add_cut(p, n.closer ? -1 : pending(Node::Kind::domain_crossing, p, n.owners), false);
     }
   }
   // Vertical tangents and the singular point: the common points of F and ∂F/∂y.
   if (!line) {
-    const ConicIntersection x = intersect(F, derivative_in_y(F));
-    for (const IntersectionPoint& ip : x.points) {
-      const LocatedPoint p(ip.point, width_);
+    const CommonPoints x = common_points(F, derivative_in_y(F), search, width_);
+    for (const LocatedPoint& p : x.points) {
       const Conic Fx{0, 0, 0, 2 * F.a, F.b, F.d};
       if (p.sign_of(Fx) == Sign::zero) {  // singular: the two lines of a line-pair bisector cross
         const Nearest n = nearest(p, v, {w});
         const bool kept = !n.closer && !domain_position(d_.sheared, p).outside();
-        add_cut(p, kept ? register_node(Node::Kind::singular, p, n.owners) : -1, false);
+        add_cut(p, kept ? pending(Node::Kind::singular, p, n.owners) : -1, false);
         cuts.back().on_upper = cuts.back().on_lower = true;
       } else {
         add_cut(p, -1, true);
@@ -103,7 +137,9 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
   for (std::size_t i = 0; i < cuts.size(); ++i)
     for (std::size_t j = i + 1; j < cuts.size();) {
       if (same_point(cuts[i].at, cuts[j].at)) {
-        if (cuts[j].node >= 0) cuts[i].node = cuts[j].node;
+        // Two references to one point name one node: an existing one is preferred to a pending
+        // one, which would resolve to it.
+        if (cuts[j].node != -1 && (cuts[i].node == -1 || (cuts[i].node <= -2 && cuts[j].node >= 0))) cuts[i].node = cuts[j].node;
         cuts[i].joint = cuts[i].joint || cuts[j].joint;
         cuts[i].on_upper = cuts[i].on_upper || cuts[j].on_upper || cuts[j].joint;
         cuts[i].on_lower = cuts[i].on_lower || cuts[j].on_lower || cuts[j].joint;
@@ -113,7 +149,7 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
       }
     }
   for (Cut& c : cuts)
-    if (c.node >= 0) c.joint = false;
+    if (c.node != -1) c.joint = false;
 
   // Pieces, branch by branch: between consecutive cuts, where the branch exists.
   struct Kept {
@@ -131,7 +167,7 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
     for (std::size_t k = 0; k + 1 < on.size(); ++k) {
       const Cut& a = cuts[on[k]];
       const Cut& b = cuts[on[k + 1]];
-      const Rational xm = rational_between(a.at.point.x(), b.at.point.x());
+      const Rational xm = rational_between(a.at, b.at);
       if (side != 0 && disc.sign_at(xm) != Sign::positive) continue;  // no branch between a and b
       const LocatedPoint s = branch.at(xm, width_);
       const DomainPosition pos = domain_position(d_.sheared, s);
@@ -142,7 +178,7 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
       kept.push_back({Piece{branch, a.node, b.node, a.at, b.at, xm}, on[k], on[k + 1]});
     }
   }
-  if (kept.empty()) return;
+  if (kept.empty()) return out;
 
   // Chain pieces through joints into arcs.
   std::vector<std::vector<int>> at_cut(cuts.size());
@@ -151,7 +187,7 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
     at_cut[kept[i].right_cut].push_back(i);
   }
   for (std::size_t c = 0; c < cuts.size(); ++c)
-    if (cuts[c].node < 0 && !at_cut[c].empty() && at_cut[c].size() != 2)
+    if (cuts[c].node == -1 && !at_cut[c].empty() && at_cut[c].size() != 2)
       throw std::logic_error("oracle: an arc of sites " + std::to_string(v) + ", " + std::to_string(w) +
                              " ends at a point that is not a node");
   std::vector<bool> used(kept.size(), false);
@@ -165,7 +201,7 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
       arc.pieces.push_back(kept[piece].piece);
       arc.forward.push_back(forward);
       cut = forward ? kept[piece].right_cut : kept[piece].left_cut;
-      if (cuts[cut].node >= 0) {
+      if (cuts[cut].node != -1) {
         arc.ends[1] = cuts[cut].node;
         break;
       }
@@ -177,34 +213,29 @@ void Builder::build_arcs_of_pair(int v, int w, const BoxBounds& region) {
       }
       piece = other;
     }
-    for (int e : {arc.ends[0], arc.ends[1]})  // LS Theorem 7: an arc cut by the restriction to Ω
-      if (e >= 0 && d_.nodes[e].sites.size() == 2)
-        for (int k : d_.nodes[e].boundary_edges)
-          if (std::find(arc.cut_by_edges.begin(), arc.cut_by_edges.end(), k) == arc.cut_by_edges.end())
-            arc.cut_by_edges.push_back(k);
-    std::sort(arc.cut_by_edges.begin(), arc.cut_by_edges.end());
-    check_arc_wedges(arc);
-    d_.arcs.push_back(std::move(arc));
+    check_arc_wedges(arc, search);
+    out.arcs.push_back(std::move(arc));
   };
   for (int c = 0; c < static_cast<int>(cuts.size()); ++c)
-    if (cuts[c].node >= 0)
+    if (cuts[c].node != -1)
       for (int p : at_cut[c])
         if (!used[p]) trace(p, c);
   for (int p = 0; p < static_cast<int>(kept.size()); ++p)
     if (!used[p]) trace(p, kept[p].left_cut);
+  return out;
 }
 
 // LS Definition 3 for an arc: every point in the open wedge(v, w). The arc is connected, so it
 // leaves the wedge only by meeting one of the two wedge lines; a line meeting a piece inside its
-// x-range is a violation, and otherwise one sample decides the piece.
-void Builder::check_arc_wedges(Arc& arc) const {
+// x-range is a violation, and otherwise one sample decides the piece. The arc lies in its pair's
+// region, so the meeting points inside its pieces do too.
+void Builder::check_arc_wedges(Arc& arc, const IntervalBox& region) const {
   for (const auto& [from, to] : {std::pair{arc.v, arc.w}, std::pair{arc.w, arc.v}}) {
     const Conic line = wedge_form(d_.sheared, from, to);
-    const ConicIntersection x = intersect(arc.bisector, line);
+    const CommonPoints x = common_points(arc.bisector, line, region, width_);
     for (const Piece& p : arc.pieces) {
       if (!x.shared_component)
-        for (const IntersectionPoint& ip : x.points) {
-          const LocatedPoint q(ip.point, width_);
+        for (const LocatedPoint& q : x.points) {
           if (!p.branch.holds(q) || compare_x(q, *p.left_point) != Sign::positive ||
               compare_x(q, *p.right_point) != Sign::negative)
             continue;
@@ -238,9 +269,9 @@ int Builder::owner_of_edge_point(int edge, const LocatedPoint& a, const LocatedP
   const auto& sa = d_.sheared.domain[edge];
   const auto& sb = d_.sheared.domain[(edge + 1) % d_.sheared.domain.size()];
   const bool increasing = compare_x(a, b) == Sign::negative;
-  Rational lo = rational_between(increasing ? a.point.x() : b.point.x(), increasing ? b.point.x() : a.point.x());
-  for (int attempt = 0; attempt < 64; ++attempt) {
-    const Rational x = attempt == 0 ? lo : lo + (lo - (increasing ? a.point.x().hi() : b.point.x().hi())) / -(attempt + 1);
+  const LocatedPoint& left = increasing ? a : b;
+  Rational x = rational_between(left, increasing ? b : a);
+  for (int attempt = 0; attempt < 64; ++attempt, x = rational_between(left, x)) {  // towards the left end
     const Rational y = sa.y + (sb.y - sa.y) * (x - sa.x) / (sb.x - sa.x);
     const LocatedPoint p = LocatedPoint::rational(x, y);
     const Nearest n = nearest_rational(p);

@@ -5,6 +5,7 @@
 #include "numbers/filter_interval.hpp"
 
 #include <map>
+#include <optional>
 
 namespace anisocert::oracle::build {
 
@@ -25,15 +26,37 @@ struct Nearest {
   std::vector<int> owners;
 };
 
+// A node found while building a pair's arcs, registered afterwards (in pair order, so that node
+// ids do not depend on the number of threads). Cuts and arcs refer to it as pending_ref(k).
+struct PendingNode {
+  Node::Kind kind;
+  LocatedPoint at;
+  std::vector<int> owners;
+};
+constexpr int pending_ref(std::size_t k) { return -2 - static_cast<int>(k); }
+
+// The arcs of one candidate pair, with their new nodes still pending.
+struct PairArcs {
+  std::vector<PendingNode> pending;
+  std::vector<Arc> arcs;
+};
+
+// A point equidistant from the three sites of a candidate triple with none closer.
+struct VertexCandidate {
+  LocatedPoint at;
+  std::vector<int> owners;
+};
+
 class Builder {
  public:
-  Builder(Diagram& d, const std::function<void(const std::string&)>& progress);
+  Builder(Diagram& d, const DiagramOptions& options);
   void run();
 
  private:
   // nodes
   void add_corners();
   void find_vertices();
+  std::vector<VertexCandidate> vertices_of_triple(std::size_t t, std::size_t& candidate_points) const;
   int register_node(Node::Kind kind, const LocatedPoint& p, const std::vector<int>& owners);
   // `equal`: sites known (by construction of p) to be at v's distance, not compared again.
   Nearest nearest(const LocatedPoint& p, int v, const std::vector<int>& equal = {}) const;
@@ -44,8 +67,9 @@ class Builder {
   void decline_if_tied_on_line(int a, int b, int c, const Conic& G) const;
   // arcs
   void build_arcs();
-  void build_arcs_of_pair(int v, int w, const BoxBounds& region);
-  void check_arc_wedges(Arc& arc) const;
+  PairArcs arcs_of_pair(std::size_t i) const;
+  void add_arcs(PairArcs& found);
+  void check_arc_wedges(Arc& arc, const IntervalBox& region) const;
   void check_node_wedges();
   void build_boundary();
   int owner_of_edge_point(int edge, const LocatedPoint& a, const LocatedPoint& b) const;
@@ -60,7 +84,17 @@ class Builder {
 
   Diagram& d_;
   std::function<void(const std::string&)> progress_;
+  int threads_;
+  // The subdivision is of the input's coordinates; the oracle works in sheared ones.
   CandidateSets cand_;
+  FilterInterval shear_;
+  IntervalBox sheared_box(const BoxBounds& b) const;                // x' = x + s·y
+  std::vector<int> sites_near(const LocatedPoint& p) const;        // cand_.sites_near at x = x' − s·y
+  // Nodes by the lower end of their x-box, to find a point among them (register_node); boxes
+  // are at most node_width_ wide, except wide_nodes_ (unbounded boxes).
+  std::multimap<double, int> node_index_;
+  double node_width_ = 0;
+  std::vector<int> wide_nodes_;
   Rational width_;                                   // box width for located points
   std::vector<std::array<anisocert::FilterInterval, 6>> distance_;  // Q_u as interval conics
   std::map<std::pair<int, int>, std::vector<int>> nodes_of_pair_;
@@ -79,6 +113,7 @@ class Builder {
 // F = L·Q for a non-vertical line L dividing the conic F; the line shared by two conics.
 Conic line_quotient(const Conic& F, const Conic& L);
 std::optional<Conic> common_line(const Conic& A, const Conic& B);
+
 
 // Ray casting: whether p (not on the cycle) is inside the closed walk of cycle c.
 bool cycle_contains(const Diagram& d, int c, const LocatedPoint& p);

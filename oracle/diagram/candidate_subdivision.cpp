@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
 
 namespace anisocert::oracle {
 
@@ -40,28 +39,22 @@ struct Subdivider {
   std::vector<SiteBox> sites;
   int max_depth;
   CandidateSets out;
-  std::map<std::pair<int, int>, BoxBounds> pair_region;
-  std::vector<std::array<int, 3>> triples;
+  std::vector<std::pair<std::pair<int, int>, BoxBounds>> pairs;
+  std::vector<std::pair<std::array<int, 3>, BoxBounds>> triples;
 
-  void record(const std::vector<int>& cand, const BoxBounds& box) {
+  void record(std::vector<int> cand, const BoxBounds& box, int cell) {
     ++out.leaves;
+    std::sort(cand.begin(), cand.end());
     for (std::size_t i = 0; i < cand.size(); ++i)
       for (std::size_t j = i + 1; j < cand.size(); ++j) {
-        const auto key = std::minmax(cand[i], cand[j]);
-        auto [it, fresh] = pair_region.try_emplace({key.first, key.second}, box);
-        if (!fresh) {
-          BoxBounds& b = it->second;
-          b = {std::min(b.x_lo, box.x_lo), std::max(b.x_hi, box.x_hi), std::min(b.y_lo, box.y_lo), std::max(b.y_hi, box.y_hi)};
-        }
-        for (std::size_t k = j + 1; k < cand.size(); ++k) {
-          std::array<int, 3> t{cand[i], cand[j], cand[k]};
-          std::sort(t.begin(), t.end());
-          triples.push_back(t);
-        }
+        pairs.push_back({{cand[i], cand[j]}, box});
+        for (std::size_t k = j + 1; k < cand.size(); ++k) triples.push_back({{cand[i], cand[j], cand[k]}, box});
       }
+    out.cells[cell].leaf = static_cast<int>(out.leaf_sites.size());
+    out.leaf_sites.push_back(std::move(cand));
   }
 
-  void refine(const std::vector<int>& parent, const BoxBounds& box, int depth) {
+  void refine(const std::vector<int>& parent, const BoxBounds& box, int depth, int cell) {
     ++out.boxes;
     out.max_depth_reached = std::max(out.max_depth_reached, depth);
     std::vector<std::pair<double, double>> bounds(parent.size());
@@ -74,17 +67,36 @@ struct Subdivider {
     for (std::size_t i = 0; i < parent.size(); ++i)
       if (!(bounds[i].first > best_upper)) cand.push_back(parent[i]);
     if (cand.size() <= 3 || depth >= max_depth) {
-      record(cand, box);
+      record(std::move(cand), box, cell);
       return;
     }
     // Children share their split lines exactly, so they cover the box whatever the rounding.
     const double mx = box.x_lo + (box.x_hi - box.x_lo) / 2, my = box.y_lo + (box.y_hi - box.y_lo) / 2;
-    refine(cand, {box.x_lo, mx, box.y_lo, my}, depth + 1);
-    refine(cand, {mx, box.x_hi, box.y_lo, my}, depth + 1);
-    refine(cand, {box.x_lo, mx, my, box.y_hi}, depth + 1);
-    refine(cand, {mx, box.x_hi, my, box.y_hi}, depth + 1);
+    const BoxBounds children[4] = {
+        {box.x_lo, mx, box.y_lo, my}, {mx, box.x_hi, box.y_lo, my}, {box.x_lo, mx, my, box.y_hi}, {mx, box.x_hi, my, box.y_hi}};
+    const int first = static_cast<int>(out.cells.size());
+    out.cells[cell].first_child = first;
+    for (const BoxBounds& c : children) out.cells.push_back({c});
+    for (int k = 0; k < 4; ++k) refine(cand, children[k], depth + 1, first + k);
   }
 };
+
+// Sorts the (key, box) records and merges each key's boxes into their bounding box.
+template <class Key>
+void merge_regions(std::vector<std::pair<Key, BoxBounds>>& records, std::vector<Key>& keys, std::vector<BoxBounds>& regions) {
+  std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [key, box] : records) {
+    if (!keys.empty() && keys.back() == key) {
+      BoxBounds& b = regions.back();
+      b = {std::min(b.x_lo, box.x_lo), std::max(b.x_hi, box.x_hi), std::min(b.y_lo, box.y_lo), std::max(b.y_hi, box.y_hi)};
+    } else {
+      keys.push_back(key);
+      regions.push_back(box);
+    }
+  }
+  records.clear();
+  records.shrink_to_fit();
+}
 
 }  // namespace
 
@@ -106,15 +118,37 @@ CandidateSets candidate_sets(const Mesh<Rational>& in, int max_depth) {
   }
   std::vector<int> all(in.sites.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  s.refine(all, root, 0);
-  std::sort(s.triples.begin(), s.triples.end());
-  s.triples.erase(std::unique(s.triples.begin(), s.triples.end()), s.triples.end());
-  s.out.triples = std::move(s.triples);
-  for (const auto& [pair, box] : s.pair_region) {
-    s.out.pairs.push_back(pair);
-    s.out.pair_region.push_back(box);
-  }
+  s.out.sites = static_cast<int>(all.size());
+  s.out.cells.push_back({root});
+  s.refine(all, root, 0, 0);
+  merge_regions(s.triples, s.out.triples, s.out.triple_region);
+  merge_regions(s.pairs, s.out.pairs, s.out.pair_region);
   return s.out;
+}
+
+std::vector<int> CandidateSets::sites_near(const FilterInterval& x, const FilterInterval& y) const {
+  std::vector<int> out;
+  const BoxBounds& root = cells[0].box;
+  if (!(x.lo >= root.x_lo && x.hi <= root.x_hi && y.lo >= root.y_lo && y.hi <= root.y_hi)) {
+    out.resize(static_cast<std::size_t>(sites));
+    for (int i = 0; i < sites; ++i) out[static_cast<std::size_t>(i)] = i;
+    return out;
+  }
+  std::vector<int> stack{0};
+  while (!stack.empty()) {
+    const Cell& c = cells[static_cast<std::size_t>(stack.back())];
+    stack.pop_back();
+    if (x.hi < c.box.x_lo || c.box.x_hi < x.lo || y.hi < c.box.y_lo || c.box.y_hi < y.lo) continue;
+    if (c.leaf >= 0) {
+      const auto& l = leaf_sites[static_cast<std::size_t>(c.leaf)];
+      out.insert(out.end(), l.begin(), l.end());
+    } else {
+      for (int k = 0; k < 4; ++k) stack.push_back(c.first_child + k);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 }  // namespace anisocert::oracle

@@ -11,9 +11,12 @@
 //  - every Voronoi vertex lies in a leaf whose candidates include all of its owners, so each of
 //    its owner triples is among `triples`;
 //  - every point of an arc lies in a leaf whose candidates include both owners, so each pair of
-//    sites whose cells share a point is among `pairs`.
+//    sites whose cells share a point is among `pairs`;
+//  - every nearest site of a point is a candidate of each leaf containing it, so the nearest sites
+//    are found among the candidates of the leaves meeting a box around the point (`sites_near`).
 // The box arithmetic only decides what is kept, never an answer: a loose bound keeps more.
 #include "oracle/diagram/input.hpp"
+#include "numbers/filter_interval.hpp"
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -26,10 +29,25 @@ struct BoxBounds {
 
 struct CandidateSets {
   std::vector<std::array<int, 3>> triples;  // sorted, each once
+  std::vector<BoxBounds> triple_region;     // the bounding box of the leaves of each triple
   std::vector<std::pair<int, int>> pairs;   // sorted, each once
-  std::vector<BoxBounds> pair_region;       // the union's bounding box of the leaves of each pair
+  std::vector<BoxBounds> pair_region;       // the bounding box of the leaves of each pair
   std::size_t boxes = 0, leaves = 0;
   int max_depth_reached = 0;
+
+  // The candidates of the leaves meeting [x] × [y], sorted; every site when the box is not
+  // inside the root box.
+  std::vector<int> sites_near(const FilterInterval& x, const FilterInterval& y) const;
+
+  // The subdivision: cells[0] is the root; a split cell's four children are consecutive.
+  struct Cell {
+    BoxBounds box;
+    int first_child = -1;
+    int leaf = -1;  // index into leaf_sites for a leaf
+  };
+  std::vector<Cell> cells;
+  std::vector<std::vector<int>> leaf_sites;
+  int sites = 0;
 };
 
 CandidateSets candidate_sets(const Mesh<Rational>& in, int max_depth = 40);

@@ -1,10 +1,24 @@
 #include "oracle/diagram/build.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <thread>
 
 namespace anisocert::oracle {
 
 namespace build {
+
+IntervalBox Builder::sheared_box(const BoxBounds& b) const {
+  const FilterInterval y{b.y_lo, b.y_hi};
+  return {FilterInterval{b.x_lo, b.x_hi} + shear_ * y, y};
+}
+
+std::vector<int> Builder::sites_near(const LocatedPoint& p) const { return cand_.sites_near(p.x - shear_ * p.y, p.y); }
+
+Builder::Builder(Diagram& d, const DiagramOptions& options)
+    : d_(d),
+      progress_(options.progress),
+      threads_(options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))) {}
 
 void Builder::run() {
   using clock = std::chrono::steady_clock;
@@ -14,6 +28,7 @@ void Builder::run() {
     phase();
     seconds = std::chrono::duration<double>(clock::now() - t).count();
   };
+  d_.stats.threads = threads_;
   timed(d_.stats.seconds_candidates, [&] { cand_ = candidate_sets(d_.input); });
   d_.stats.boxes = cand_.boxes, d_.stats.leaves = cand_.leaves, d_.stats.max_depth = cand_.max_depth_reached;
   d_.stats.triples = cand_.triples.size(), d_.stats.pairs = cand_.pairs.size();
@@ -23,9 +38,13 @@ void Builder::run() {
 
   d_.shear = choose_shear(d_.input, cand_.pairs);
   d_.sheared = shear_input(d_.input, d_.shear);
+  shear_ = FilterInterval::around(d_.shear);
   Rational extent = 1;
   for (const auto& p : d_.sheared.domain) extent = std::max({extent, abs(p.x), abs(p.y)});
   width_ = extent / Rational(Integer(1) << 52);
+  Rational size = 0;
+  for (const auto& p : d_.sheared.domain) size = std::max({size, abs(p.x), abs(p.y)});
+  d_.grid = std::ldexp(1.0, std::ilogb(size.convert_to<double>()) - 40);
   for (std::size_t i = 0; i < d_.sheared.sites.size(); ++i) {
     const Conic q = distance_conic(d_.sheared.sites[i], d_.sheared.metrics[i]);
     auto c = [](const Rational& r) { return anisocert::FilterInterval::around(r); };
@@ -40,17 +59,46 @@ void Builder::run() {
 
 }  // namespace build
 
+namespace {
+
+// The k with k·g ≤ v < (k + 1)·g for the exact coordinate v in the box [b], compared with
+// `compare(r)` = sign(v − r) when the box meets a grid line.
+template <class Compare>
+double grid_cell(const FilterInterval& b, double g, Compare compare) {
+  double k = std::floor(b.lo / g);
+  while ((k + 1) * g <= b.hi && compare(Rational((k + 1) * g)) != Sign::negative) k += 1;
+  return k;
+}
+
+}  // namespace
+
 std::pair<double, double> Diagram::original_xy(const LocatedPoint& p) const {
-  const double y = (p.y.lo + p.y.hi) / 2;
-  const double x = (p.x.lo + p.x.hi) / 2 - shear.convert_to<double>() * y;
-  return {x, y};
+  if (!(std::isfinite(p.x.lo) && std::isfinite(p.x.hi) && std::isfinite(p.y.lo) && std::isfinite(p.y.hi)))
+    return {(p.exact().x().lo() - shear * p.exact().y().lo()).convert_to<double>(), p.exact().y().lo().convert_to<double>()};
+  const double kx = grid_cell(p.x, grid, [&](const Rational& r) { return compare_x(p, r); });
+  const double ky = grid_cell(p.y, grid, [&](const Rational& r) { return compare(p.exact().y(), RealAlgebraic::rational(r)); });
+  const double y = (ky + 0.5) * grid;
+  return {(kx + 0.5) * grid - shear.convert_to<double>() * y, y};
+}
+
+Diagram compute_diagram(const Mesh<Rational>& input, const DiagramOptions& options) {
+  Diagram d;
+  d.input = input;
+  FilterContext context;
+  context.exact_only = options.exact_only;
+  {
+    const FilterScope scope(context);
+    build::Builder(d, options).run();
+  }
+  d.stats.filters = context.counts;
+  d.stats.exact_only = options.exact_only;
+  return d;
 }
 
 Diagram compute_diagram(const Mesh<Rational>& input, const std::function<void(const std::string&)>& progress) {
-  Diagram d;
-  d.input = input;
-  build::Builder(d, progress).run();
-  return d;
+  DiagramOptions options;
+  options.progress = progress;
+  return compute_diagram(input, options);
 }
 
 std::vector<int> nearest_sites(const Mesh<Rational>& in, const Point2<Rational>& p) {

@@ -92,6 +92,9 @@ struct Theorem7 {
 struct DiagramStats {
   std::size_t boxes = 0, leaves = 0, triples = 0, pairs = 0, candidate_points = 0;
   int max_depth = 0;
+  int threads = 1;
+  bool exact_only = false;
+  FilterCounts filters;  // how many decisions the filters took, and how many were exact
   double seconds_candidates = 0, seconds_vertices = 0, seconds_arcs = 0, seconds_faces = 0, seconds_dual = 0;
 };
 
@@ -117,11 +120,21 @@ struct Diagram {
   Theorem7 theorem7;
   DiagramStats stats;
 
-  // Original coordinates of a point (decimal-accurate doubles).
+  // Original coordinates of a point, approximately: the centre of the cell of the grid of step
+  // `grid` (a power of two near 2^-40 of the domain's extent) that holds the exact sheared
+  // point, mapped back. It depends only on the exact point, so the filtered and the exact
+  // constructions print the same numbers.
   std::pair<double, double> original_xy(const LocatedPoint& p) const;
+  double grid = 0;
 };
 
-// Progress lines for long work go to `progress` (may be empty).
+struct DiagramOptions {
+  bool exact_only = false;  // build every point exactly (no filtered constructions)
+  int threads = 0;          // 0: every core
+  std::function<void(const std::string&)> progress;  // progress lines for long work (may be empty)
+};
+
+Diagram compute_diagram(const Mesh<Rational>& input, const DiagramOptions& options);
 Diagram compute_diagram(const Mesh<Rational>& input, const std::function<void(const std::string&)>& progress = {});
 
 // Where a rational point of Ω lies in the diagram: its exact nearest-site set must equal the

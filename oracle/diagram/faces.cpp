@@ -96,8 +96,7 @@ void Builder::sort_germs(int node) {
     const LocatedPoint* nearest_far = &gs[0].far;
     for (const Germ& g : gs)
       if (compare_x(g.far, *nearest_far) == (to_right ? Sign::negative : Sign::positive)) nearest_far = &g.far;
-    const Rational x = to_right ? rational_between(at.point.x(), nearest_far->point.x())
-                                : rational_between(nearest_far->point.x(), at.point.x());
+    const Rational x = to_right ? rational_between(at, *nearest_far) : rational_between(*nearest_far, at);
     std::vector<std::pair<LocatedPoint, Germ>> keyed;
     for (Germ& g : gs) keyed.emplace_back(g.branch.at(x, width_), std::move(g));
     std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
@@ -210,7 +209,7 @@ void Builder::build_faces() {
       return p.branch.at(p.sample_x, width_);
     }
     const Span s = spans_of(d_, h)[0];
-    return s.branch.at(rational_between(s.left->point.x(), s.right->point.x()), width_);
+    return s.branch.at(rational_between(*s.left, *s.right), width_);
   };
   // The innermost of the outer cycles of `site` containing p.
   auto innermost = [&](int site, const LocatedPoint& p, int skip) {

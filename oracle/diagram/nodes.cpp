@@ -2,10 +2,12 @@
 // equidistant from three or more sites with no site closer), found exactly as common points of
 // two bisector conics (LS Proposition 2) for every candidate triple of the certified
 // subdivision (candidate_subdivision.hpp: the triples include every vertex's owners).
-#include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/algebraic/common_points.hpp"
 #include "oracle/diagram/build.hpp"
+#include "oracle/diagram/parallel.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace anisocert::oracle::build {
@@ -37,17 +39,18 @@ DomainPosition domain_position(const Mesh<Rational>& sh, const LocatedPoint& p) 
   return pos;
 }
 
-Builder::Builder(Diagram& d, const std::function<void(const std::string&)>& progress) : d_(d), progress_(progress) {}
-
 Nearest Builder::nearest(const LocatedPoint& p, int v, const std::vector<int>& equal) const {
   auto value = [&](int u) {
     const auto& c = distance_[u];
     return c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.y * p.y + c[3] * p.x + c[4] * p.y + c[5];
   };
+  // Every nearest site of p is a candidate of the leaf holding p (candidate_subdivision.hpp).
+  const std::vector<int> near = sites_near(p);
+  if (!std::binary_search(near.begin(), near.end(), v)) return {true, {}};  // a site is strictly closer than v
   const FilterInterval qv = value(v);
   Nearest out;
   out.owners.push_back(v);
-  for (int u = 0; u < static_cast<int>(distance_.size()); ++u) {
+  for (int u : near) {
     if (u == v) continue;
     if (std::find(equal.begin(), equal.end(), u) != equal.end()) {
       out.owners.push_back(u);
@@ -68,16 +71,28 @@ Nearest Builder::nearest(const LocatedPoint& p, int v, const std::vector<int>& e
 }
 
 int Builder::register_node(Node::Kind kind, const LocatedPoint& p, const std::vector<int>& owners) {
-  for (std::size_t i = 0; i < d_.nodes.size(); ++i) {
-    Node& n = d_.nodes[i];
+  // The nodes whose x-boxes meet p's: their lower ends lie in [p.x.lo − node_width_, p.x.hi].
+  std::vector<int> near = wide_nodes_;
+  for (auto it = node_index_.lower_bound(FilterInterval::next_down(p.x.lo - node_width_)); it != node_index_.end() && it->first <= p.x.hi; ++it)
+    near.push_back(it->second);
+  std::sort(near.begin(), near.end());
+  for (int i : near) {
+    Node& n = d_.nodes[static_cast<std::size_t>(i)];
     if (!same_point(n.at, p)) continue;
     if (static_cast<int>(kind) < static_cast<int>(n.kind)) n.kind = kind;  // voronoi < … < corner
-    return static_cast<int>(i);
+    return i;
   }
   const DomainPosition pos = domain_position(d_.sheared, p);
   Node n{kind, p, owners, pos.edges, pos.corner};
   d_.nodes.push_back(std::move(n));
   const int id = static_cast<int>(d_.nodes.size()) - 1;
+  const double w = p.x.hi - p.x.lo;
+  if (std::isfinite(w)) {
+    node_index_.emplace(p.x.lo, id);
+    node_width_ = std::max(node_width_, w);
+  } else {
+    wide_nodes_.push_back(id);
+  }
   for (std::size_t i = 0; i < owners.size(); ++i)
     for (std::size_t j = i + 1; j < owners.size(); ++j) nodes_of_pair_[{owners[i], owners[j]}].push_back(id);
   return id;
@@ -90,35 +105,51 @@ void Builder::add_corners() {
   }
 }
 
+// The points of the triple's leaves equidistant from its three sites with none closer. The
+// filtered search is confined to the triple's region (every Voronoi vertex of the triple lies in
+// one of its leaves); the exact path takes every common point and drops those where a site is
+// closer, which the region's points outside every leaf of the triple all have.
+std::vector<VertexCandidate> Builder::vertices_of_triple(std::size_t i, std::size_t& candidate_points) const {
+  const auto& t = cand_.triples[i];
+  std::vector<VertexCandidate> out;
+  const Conic A = bisector_conic(d_.sheared, t[0], t[1]), B = bisector_conic(d_.sheared, t[0], t[2]);
+  CommonPoints x = common_points(A, B, sheared_box(cand_.triple_region[i]), width_);
+  if (x.shared_component) {
+    // A = G·H1, B = G·H2: the three sites tie along the line G (declined only if that tie is
+    // part of D|Ω); the isolated common points are those of H1 and H2.
+    const std::optional<Conic> G = common_line(A, B);
+    if (!G)
+      throw std::domain_error("sites " + std::to_string(t[0]) + ", " + std::to_string(t[1]) + " and " +
+                              std::to_string(t[2]) + " are equidistant along a whole conic; such inputs are not supported yet");
+    decline_if_tied_on_line(t[0], t[1], t[2], *G);
+    const Conic H1 = line_quotient(A, *G), H2 = line_quotient(B, *G);
+    if (H1.d == 0 && H1.e == 0) return out;  // A is the line G itself: its points are all on G
+    if (H2.d == 0 && H2.e == 0) return out;
+    x = exact_common_points(H1, H2, width_);
+    if (x.shared_component) return out;  // H1 = H2: only the two lines, ties checked on G; H1 separately
+  }
+  for (LocatedPoint& p : x.points) {
+    ++candidate_points;
+    Nearest n = nearest(p, t[0], {t[1], t[2]});
+    if (n.closer) continue;
+    if (domain_position(d_.sheared, p).outside()) continue;
+    out.push_back({std::move(p), std::move(n.owners)});
+  }
+  return out;
+}
+
 void Builder::find_vertices() {
-  std::size_t done = 0;
-  for (const auto& t : cand_.triples) {
-    if (progress_ && ++done % 500 == 0)
-      progress_("vertices: " + std::to_string(done) + " of " + std::to_string(cand_.triples.size()) + " candidate triples");
-    const Conic A = bisector_conic(d_.sheared, t[0], t[1]), B = bisector_conic(d_.sheared, t[0], t[2]);
-    ConicIntersection x = intersect(A, B);
-    if (x.shared_component) {
-      // A = G·H1, B = G·H2: the three sites tie along the line G (declined only if that tie is
-      // part of D|Ω); the isolated common points are those of H1 and H2.
-      const std::optional<Conic> G = common_line(A, B);
-      if (!G)
-        throw std::domain_error("sites " + std::to_string(t[0]) + ", " + std::to_string(t[1]) + " and " +
-                                std::to_string(t[2]) + " are equidistant along a whole conic; such inputs are not supported yet");
-      decline_if_tied_on_line(t[0], t[1], t[2], *G);
-      const Conic H1 = line_quotient(A, *G), H2 = line_quotient(B, *G);
-      if (H1.d == 0 && H1.e == 0) continue;  // A is the line G itself: its points are all on G
-      if (H2.d == 0 && H2.e == 0) continue;
-      x = intersect(H1, H2);
-      if (x.shared_component) continue;  // H1 = H2: only the two lines, ties checked on G; H1 separately
-    }
-    for (const IntersectionPoint& ip : x.points) {
-      ++d_.stats.candidate_points;
-      const LocatedPoint p(ip.point, width_);
-      const Nearest n = nearest(p, t[0], {t[1], t[2]});
-      if (n.closer) continue;
-      if (domain_position(d_.sheared, p).outside()) continue;
-      register_node(Node::Kind::voronoi, p, n.owners);
-    }
+  const std::size_t n = cand_.triples.size();
+  std::vector<std::vector<VertexCandidate>> found(n);
+  std::vector<std::size_t> points(n, 0);
+  parallel_for(
+      n, threads_, [&](std::size_t i) { found[i] = vertices_of_triple(i, points[i]); },
+      [&](std::size_t done) {
+        if (progress_) progress_("vertices: " + std::to_string(done) + " of " + std::to_string(n) + " candidate triples");
+      });
+  for (std::size_t i = 0; i < n; ++i) {
+    d_.stats.candidate_points += points[i];
+    for (const VertexCandidate& v : found[i]) register_node(Node::Kind::voronoi, v.at, v.owners);
   }
 }
 

@@ -3,10 +3,11 @@
 // of the time harmless: the tie lies outside Ω, or another site is closer there. The oracle
 // handles them exactly and declines by name only when the tie is part of D|Ω (a cell boundary
 // running along ∂Ω, or three cells meeting along a curve), which the face structure does not model.
-#include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/algebraic/common_points.hpp"
 #include "oracle/diagram/build.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace anisocert::oracle::build {
@@ -36,9 +37,19 @@ std::optional<Conic> common_line(const Conic& A, const Conic& B) {
 }
 
 Nearest Builder::nearest_rational(const LocatedPoint& p) const {
-  int v = 0;
-  for (int u = 1; u < static_cast<int>(distance_.size()); ++u)
-    if (p.sign_of(bisector_conic(d_.sheared, u, v)) == Sign::negative) v = u;
+  const std::vector<int> near = sites_near(p);  // they hold every nearest site
+  // The site of least interval upper bound is the nearest unless another's interval overlaps it;
+  // nearest() decides exactly, and when some site is closer after all, exact comparisons find it.
+  int v = near[0];
+  double best = std::numeric_limits<double>::infinity();
+  for (int u : near) {
+    const auto& c = distance_[static_cast<std::size_t>(u)];
+    const double q = (c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.y * p.y + c[3] * p.x + c[4] * p.y + c[5]).hi;
+    if (q < best) best = q, v = u;
+  }
+  if (Nearest n = nearest(p, v); !n.closer) return n;
+  for (int u : near)
+    if (u != v && p.sign_of(bisector_conic(d_.sheared, u, v)) == Sign::negative) v = u;
   return nearest(p, v);
 }
 
@@ -49,15 +60,17 @@ void Builder::decline_if_tied_on_edge(int v, int w, int edge) const {
   const auto& a = dom[edge];
   const auto& b = dom[(edge + 1) % dom.size()];
   std::vector<Rational> xs{a.x, b.x};
-  for (const Node& n : d_.nodes)
-    if (std::find(n.boundary_edges.begin(), n.boundary_edges.end(), edge) != n.boundary_edges.end() && n.at.point.x().is_exact())
-      xs.push_back(n.at.point.x().lo());
-  for (const Node& n : d_.nodes)  // algebraic x: a rational just left and right of it splits the pieces too
-    if (std::find(n.boundary_edges.begin(), n.boundary_edges.end(), edge) != n.boundary_edges.end() &&
-        !n.at.point.x().is_exact()) {
-      n.at.point.x().refine_below((std::max(a.x, b.x) - std::min(a.x, b.x)) / Rational(Integer(1) << 40));
-      xs.push_back(n.at.point.x().lo()), xs.push_back(n.at.point.x().hi());
+  for (const Node& n : d_.nodes) {
+    if (std::find(n.boundary_edges.begin(), n.boundary_edges.end(), edge) == n.boundary_edges.end()) continue;
+    const LocatedPoint at = n.at;  // a copy: the nodes are shared by the threads building arcs
+    const RealAlgebraic& x = at.exact().x();
+    if (x.is_exact()) {
+      xs.push_back(x.lo());
+    } else {  // algebraic x: a rational just left and right of it splits the pieces too
+      x.refine_below((std::max(a.x, b.x) - std::min(a.x, b.x)) / Rational(Integer(1) << 40));
+      xs.push_back(x.lo()), xs.push_back(x.hi());
     }
+  }
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
   for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
@@ -78,9 +91,9 @@ void Builder::decline_if_tied_on_line(int a, int b, int c, const Conic& G) const
   // meets ∂Ω or another site's bisector with a. Between consecutive such cuts one sample decides.
   std::vector<LocatedPoint> cuts;
   auto add = [&](const Conic& H) {
-    const ConicIntersection x = intersect(G, H);
+    CommonPoints x = exact_common_points(G, H, width_);
     if (!x.shared_component)
-      for (const IntersectionPoint& ip : x.points) cuts.emplace_back(ip.point, width_);
+      for (LocatedPoint& p : x.points) cuts.push_back(std::move(p));
   };
   const auto& dom = d_.sheared.domain;
   for (std::size_t k = 0; k < dom.size(); ++k) add(line_conic(dom[k], dom[(k + 1) % dom.size()]));
@@ -90,7 +103,7 @@ void Builder::decline_if_tied_on_line(int a, int b, int c, const Conic& G) const
   const Branch line{G, 0};
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (compare_x(cuts[i], cuts[i + 1]) != Sign::negative) continue;
-    const LocatedPoint p = line.at(rational_between(cuts[i].point.x(), cuts[i + 1].point.x()), width_);
+    const LocatedPoint p = line.at(rational_between(cuts[i], cuts[i + 1]), width_);
     if (!domain_position(d_.sheared, p).inside) continue;
     const Nearest n = nearest(p, a, {b, c});
     if (!n.closer)

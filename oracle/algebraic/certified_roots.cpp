@@ -1,0 +1,192 @@
+#include "oracle/algebraic/certified_roots.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace anisocert::oracle {
+namespace {
+
+using I = FilterInterval;
+
+I square(const I& a) {
+  if (a.lo >= 0) return a * a;
+  if (a.hi <= 0) return (-a) * (-a);
+  const double m = std::max(-a.lo, a.hi);
+  return {0, (I(m) * I(m)).hi};
+}
+
+bool contains_zero(const I& a) { return !(a.lo > 0 || a.hi < 0); }
+I hull(const I& a, const I& b) { return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+double mid(const I& a) { return a.lo + (a.hi - a.lo) / 2; }
+double width(const I& a) { return a.hi - a.lo; }
+
+// A conic in intervals (coefficients enclosed) and in doubles (for Newton's iterates only).
+struct Curve {
+  I a, b, c, d, e, f;
+  double ad, bd, cd, dd, ed, fd;
+  explicit Curve(const Conic& G)
+      : a(I::around(G.a)), b(I::around(G.b)), c(I::around(G.c)), d(I::around(G.d)), e(I::around(G.e)),
+        f(I::around(G.f)), ad(G.a.convert_to<double>()), bd(G.b.convert_to<double>()), cd(G.c.convert_to<double>()),
+        dd(G.d.convert_to<double>()), ed(G.e.convert_to<double>()), fd(G.f.convert_to<double>()) {}
+  I gx(const I& x, const I& y) const { return I(2) * a * x + b * y + d; }
+  I gy(const I& x, const I& y) const { return b * x + I(2) * c * y + e; }
+  // The natural extension intersected with the mean value form at the centre m.
+  I value(const I& x, const I& y) const {
+    const I natural = a * square(x) + b * x * y + c * square(y) + d * x + e * y + f;
+    const double mx = mid(x), my = mid(y);
+    const I centred = at(mx, my) + gx(x, y) * (x - I(mx)) + gy(x, y) * (y - I(my));
+    return {std::max(natural.lo, centred.lo), std::min(natural.hi, centred.hi)};
+  }
+  I at(double x, double y) const {
+    const I X(x), Y(y);
+    return a * X * X + b * X * Y + c * Y * Y + d * X + e * Y + f;
+  }
+  double approx(double x, double y) const { return ad * x * x + bd * x * y + cd * y * y + dd * x + ed * y + fd; }
+  double approx_gx(double x, double y) const { return 2 * ad * x + bd * y + dd; }
+  double approx_gy(double x, double y) const { return bd * x + 2 * cd * y + ed; }
+};
+
+class Solver {
+ public:
+  Solver(const Conic& A, const Conic& B) : A_(A), B_(B) {}
+
+  bool run(const IntervalBox& search) {
+    explore(search, 0);
+    return !failed_;
+  }
+  std::vector<IntervalBox> roots;
+
+ private:
+  static constexpr int max_depth = 48;
+  static constexpr int max_boxes = 4000;
+
+  // 0 ∉ det J(H): F is one-to-one on H.
+  bool injective_on(const IntervalBox& H) const {
+    const I j00 = A_.gx(H.x, H.y), j01 = A_.gy(H.x, H.y), j10 = B_.gx(H.x, H.y), j11 = B_.gy(H.x, H.y);
+    return !contains_zero(j00 * j11 - j01 * j10);
+  }
+
+  enum class Krawczyk { none, unique, undecided };
+  // K(X) at the centre with C the inverse of the Jacobian of the doubles there; `out` receives
+  // K(X) ∩ X.
+  Krawczyk krawczyk(const IntervalBox& X, IntervalBox& out) const {
+    const double mx = mid(X.x), my = mid(X.y);
+    const double a00 = A_.approx_gx(mx, my), a01 = A_.approx_gy(mx, my), a10 = B_.approx_gx(mx, my),
+                 a11 = B_.approx_gy(mx, my);
+    const double det = a00 * a11 - a01 * a10;
+    if (!(std::abs(det) > 0) || !std::isfinite(det)) return Krawczyk::undecided;
+    const I c00(a11 / det), c01(-a01 / det), c10(-a10 / det), c11(a00 / det);
+    const I fa = A_.at(mx, my), fb = B_.at(mx, my);
+    const I j00 = A_.gx(X.x, X.y), j01 = A_.gy(X.x, X.y), j10 = B_.gx(X.x, X.y), j11 = B_.gy(X.x, X.y);
+    const I m00 = I(1) - (c00 * j00 + c01 * j10), m01 = I(0) - (c00 * j01 + c01 * j11);
+    const I m10 = I(0) - (c10 * j00 + c11 * j10), m11 = I(1) - (c10 * j01 + c11 * j11);
+    const I dx = X.x - I(mx), dy = X.y - I(my);
+    const I kx = I(mx) - (c00 * fa + c01 * fb) + m00 * dx + m01 * dy;
+    const I ky = I(my) - (c10 * fa + c11 * fb) + m10 * dx + m11 * dy;
+    if (!std::isfinite(kx.lo) || !std::isfinite(kx.hi) || !std::isfinite(ky.lo) || !std::isfinite(ky.hi))
+      return Krawczyk::undecided;
+    if (kx.hi < X.x.lo || X.x.hi < kx.lo || ky.hi < X.y.lo || X.y.hi < ky.lo) return Krawczyk::none;
+    out = {{std::max(kx.lo, X.x.lo), std::min(kx.hi, X.x.hi)}, {std::max(ky.lo, X.y.lo), std::min(ky.hi, X.y.hi)}};
+    if (kx.lo > X.x.lo && kx.hi < X.x.hi && ky.lo > X.y.lo && ky.hi < X.y.hi) return Krawczyk::unique;
+    return Krawczyk::undecided;
+  }
+
+  // Narrows a box holding a unique root by iterating K (each K(X) ∩ X holds the root).
+  IntervalBox tighten(IntervalBox X) const {
+    for (int k = 0; k < 6; ++k) {
+      IntervalBox next;
+      if (krawczyk(X, next) == Krawczyk::none) break;  // cannot happen for a box holding a root
+      if (width(next.x) >= width(X.x) && width(next.y) >= width(X.y)) break;
+      X = next;
+    }
+    return X;
+  }
+
+  // A root in a small box around Newton's iterate from X's centre, if Krawczyk proves one.
+  std::optional<IntervalBox> newton_root(const IntervalBox& X) const {
+    double x = mid(X.x), y = mid(X.y);
+    for (int k = 0; k < 24; ++k) {
+      const double fa = A_.approx(x, y), fb = B_.approx(x, y);
+      const double a00 = A_.approx_gx(x, y), a01 = A_.approx_gy(x, y), a10 = B_.approx_gx(x, y), a11 = B_.approx_gy(x, y);
+      const double det = a00 * a11 - a01 * a10;
+      if (!(std::abs(det) > 0) || !std::isfinite(det)) return std::nullopt;
+      const double sx = (a11 * fa - a01 * fb) / det, sy = (a00 * fb - a10 * fa) / det;
+      x -= sx, y -= sy;
+      if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
+      if (std::abs(sx) <= 1e-15 * (std::abs(x) + width(X.x)) && std::abs(sy) <= 1e-15 * (std::abs(y) + width(X.y))) break;
+    }
+    // Outside X's neighbourhood the root says nothing about X.
+    if (x < X.x.lo - width(X.x) || x > X.x.hi + width(X.x) || y < X.y.lo - width(X.y) || y > X.y.hi + width(X.y))
+      return std::nullopt;
+    const double rx = 1e-10 * (std::abs(x) + width(X.x)), ry = 1e-10 * (std::abs(y) + width(X.y));
+    const IntervalBox Y{{x - rx, x + rx}, {y - ry, y + ry}};
+    IntervalBox K;
+    if (krawczyk(Y, K) != Krawczyk::unique) return std::nullopt;
+    return K;
+  }
+
+  void record(const IntervalBox& R) {
+    for (IntervalBox& E : roots) {
+      const bool apart = E.x.hi < R.x.lo || R.x.hi < E.x.lo || E.y.hi < R.y.lo || R.y.hi < E.y.lo;
+      if (apart) continue;
+      if (!injective_on({hull(E.x, R.x), hull(E.y, R.y)})) {
+        failed_ = true;
+        return;
+      }
+      E = {{std::max(E.x.lo, R.x.lo), std::min(E.x.hi, R.x.hi)}, {std::max(E.y.lo, R.y.lo), std::min(E.y.hi, R.y.hi)}};
+      return;
+    }
+    roots.push_back(R);
+  }
+
+  void explore(const IntervalBox& X, int depth) {
+    if (failed_) return;
+    if (++boxes_ > max_boxes) {
+      failed_ = true;
+      return;
+    }
+    if (!contains_zero(A_.value(X.x, X.y)) || !contains_zero(B_.value(X.x, X.y))) return;
+    IntervalBox K;
+    const Krawczyk k = krawczyk(X, K);
+    if (k == Krawczyk::none) return;
+    if (k == Krawczyk::unique) {
+      record(tighten(K));
+      return;
+    }
+    if (injective_on(X))
+      if (const auto Y = newton_root(X); Y && injective_on({hull(X.x, Y->x), hull(X.y, Y->y)})) {
+        record(tighten(*Y));  // the only root in X ∪ Y (X may hold none)
+        return;
+      }
+    if (depth >= max_depth || !(width(X.x) > 0 && width(X.y) > 0)) {
+      failed_ = true;
+      return;
+    }
+    // Halves share their split line, so they cover X.
+    if (width(X.x) >= width(X.y)) {
+      const double m = mid(X.x);
+      explore({{X.x.lo, m}, X.y}, depth + 1);
+      explore({{m, X.x.hi}, X.y}, depth + 1);
+    } else {
+      const double m = mid(X.y);
+      explore({X.x, {X.y.lo, m}}, depth + 1);
+      explore({X.x, {m, X.y.hi}}, depth + 1);
+    }
+  }
+
+  Curve A_, B_;
+  int boxes_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace
+
+std::optional<std::vector<IntervalBox>> certified_common_roots(const Conic& A, const Conic& B, const IntervalBox& search) {
+  if (!(std::isfinite(search.x.lo) && std::isfinite(search.x.hi) && std::isfinite(search.y.lo) && std::isfinite(search.y.hi)))
+    return std::nullopt;
+  Solver s(A, B);
+  if (!s.run(search)) return std::nullopt;
+  return std::move(s.roots);
+}
+
+}  // namespace anisocert::oracle

@@ -1,0 +1,26 @@
+#pragma once
+// The common points of two curves (conics or lines) in a box, isolated in double-precision
+// interval arithmetic (issue 14): Krawczyk's operator (Krawczyk 1969; Moore 1977) on the 2×2
+// system A = B = 0, with bisection and exclusion. For a box X, a point m ∈ X and any matrix C,
+//   K(X) = m − C·F(m) + (I − C·J(X))·(X − m)
+// contains every root of F in X; K(X) ∩ X = ∅ proves X root-free, and K(X) ⊂ int X proves
+// exactly one root in X. A box where 0 ∉ A(X) or 0 ∉ B(X) is root-free. If every matrix of the
+// interval Jacobian J(H) on a convex H is non-singular (0 ∉ det J(H)), F is one-to-one on H (mean
+// value theorem, row by row), so H holds at most one root: this merges two certified boxes of the
+// same root, and lets a root certified in a small box Y around a Newton iterate account for a
+// whole box X when H = hull(X ∪ Y).
+//
+// The answer is either complete — pairwise disjoint boxes, each holding exactly one common point,
+// and together every common point in the search box (some boxes may reach outside it) — or
+// nothing, when the intervals cannot decide: tangential or nearly tangential meetings, shared
+// components, overflow. The caller then uses the exact intersection (conic_intersection.hpp).
+#include "oracle/algebraic/located_point.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace anisocert::oracle {
+
+std::optional<std::vector<IntervalBox>> certified_common_roots(const Conic& A, const Conic& B, const IntervalBox& search);
+
+}  // namespace anisocert::oracle

@@ -1,0 +1,51 @@
+#include "oracle/algebraic/common_points.hpp"
+
+#include "oracle/algebraic/conic_intersection.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace anisocert::oracle {
+namespace {
+
+bool inside(const AlgebraicPoint& p, const IntervalBox& box) {
+  const auto within = [](const RealAlgebraic& v, const FilterInterval& range) {
+    return compare(v, RealAlgebraic::rational(Rational(range.lo))) != Sign::negative &&
+           compare(v, RealAlgebraic::rational(Rational(range.hi))) != Sign::positive;
+  };
+  return within(p.x(), box.x) && within(p.y(), box.y);
+}
+
+}  // namespace
+
+CommonPoints exact_common_points(const Conic& A, const Conic& B, const Rational& width) {
+  ++filter_context().counts.roots_exact;
+  const ConicIntersection x = intersect(A, B);
+  CommonPoints out;
+  out.shared_component = x.shared_component;
+  for (const IntersectionPoint& ip : x.points) out.points.emplace_back(ip.point, width);
+  return out;
+}
+
+CommonPoints common_points(const Conic& A, const Conic& B, const IntervalBox& search, const Rational& width) {
+  FilterContext& context = filter_context();
+  if (context.exact_only) return exact_common_points(A, B, width);
+  const auto boxes = certified_common_roots(A, B, search);
+  if (!boxes) return exact_common_points(A, B, width);
+  ++context.counts.roots_filtered;
+  CommonPoints out;
+  for (const IntervalBox& box : *boxes)
+    // The box holds exactly one common point, and the other common points lie outside it.
+    out.points.emplace_back(box, std::make_shared<const LocatedPoint::Recipe>([A, B, box] {
+      for (const IntersectionPoint& ip : intersect(A, B).points)
+        if (inside(ip.point, box)) return ip.point;
+      throw std::logic_error("common_points: no exact common point in a certified box");
+    }));
+  std::sort(out.points.begin(), out.points.end(), [](const LocatedPoint& p, const LocatedPoint& q) {
+    const Sign sx = compare_x(p, q);
+    return sx != Sign::zero ? sx == Sign::negative : compare_y(p, q) == Sign::negative;
+  });
+  return out;
+}
+
+}  // namespace anisocert::oracle

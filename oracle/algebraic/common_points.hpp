@@ -1,0 +1,22 @@
+#pragma once
+// The common points of two curves as located points, the one construction behind Voronoi
+// vertices, ∂Ω crossings, vertical tangents and wedge-line meetings: filtered first (certified
+// interval isolation, certified_roots.hpp, each point built exactly only if a decision needs it),
+// exact (conic_intersection.hpp) when the intervals cannot decide or the filters are off.
+#include "oracle/algebraic/certified_roots.hpp"
+
+namespace anisocert::oracle {
+
+struct CommonPoints {
+  bool shared_component = false;   // then `points` is empty
+  std::vector<LocatedPoint> points;  // sorted by x, then y
+};
+
+// Every common point of A and B in `search`, perhaps with some beyond it (the exact path gives
+// them all). Exact points' boxes are refined below `width`.
+CommonPoints common_points(const Conic& A, const Conic& B, const IntervalBox& search, const Rational& width);
+
+// The same, exactly (today's path; for the rare callers that need every point).
+CommonPoints exact_common_points(const Conic& A, const Conic& B, const Rational& width);
+
+}  // namespace anisocert::oracle

@@ -1,0 +1,65 @@
+#pragma once
+// Independent pieces of work on every core (issue 14): candidate triples and candidate pairs do
+// not depend on each other. body(i) runs for every i in [0, n), on `threads` threads taking
+// indices in small chunks; each thread decides with its own filter context (the caller's
+// `exact_only`), and the counts are added to the caller's at the end. Results go to slots indexed
+// by i, so the caller combines them in index order and the output does not depend on the number
+// of threads. An exception stops the work, and the one of the least index is rethrown, as a loop
+// would have thrown it.
+#include "oracle/algebraic/filter_context.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace anisocert::oracle::build {
+
+// `progress(done)` is called now and then, never by two threads at once.
+template <class Body>
+void parallel_for(std::size_t n, int threads, Body body, const std::function<void(std::size_t)>& progress = {}) {
+  FilterContext& caller = filter_context();
+  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<bool> stop{false};
+  std::mutex lock;  // guards the fields below and progress()
+  std::size_t failed_at = n;
+  std::exception_ptr failure;
+  constexpr std::size_t chunk = 16;
+  auto work = [&](FilterContext& context) {
+    FilterScope scope(context);
+    while (!stop) {
+      const std::size_t begin = next.fetch_add(chunk);
+      if (begin >= n) return;
+      const std::size_t end = std::min(n, begin + chunk);
+      for (std::size_t i = begin; i < end; ++i) {
+        try {
+          body(i);
+        } catch (...) {
+          const std::lock_guard<std::mutex> g(lock);
+          if (i < failed_at) failed_at = i, failure = std::current_exception();
+          stop = true;
+          return;
+        }
+      }
+      const std::size_t now = done.fetch_add(end - begin) + (end - begin);
+      if (progress && now / 500 != (now - (end - begin)) / 500) {
+        const std::lock_guard<std::mutex> g(lock);
+        progress(now);
+      }
+    }
+  };
+  const int t = std::max(1, std::min<int>(threads, static_cast<int>((n + chunk - 1) / chunk)));
+  std::vector<FilterContext> contexts(static_cast<std::size_t>(t));
+  for (FilterContext& c : contexts) c.exact_only = caller.exact_only;
+  std::vector<std::thread> pool;
+  for (int k = 1; k < t; ++k) pool.emplace_back(work, std::ref(contexts[static_cast<std::size_t>(k)]));
+  work(contexts[0]);
+  for (std::thread& th : pool) th.join();
+  for (const FilterContext& c : contexts) caller.counts += c.counts;
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace anisocert::oracle::build
