@@ -34,10 +34,12 @@ CommonPoints common_points(const Conic& A, const Conic& B, const IntervalBox& se
   if (!boxes) return exact_common_points(A, B, width);
   ++context.counts.roots_filtered;
   CommonPoints out;
+  if (boxes->empty()) return out;
+  const auto curves = std::make_shared<const std::pair<Conic, Conic>>(A, B);  // shared by the points' recipes
   for (const IntervalBox& box : *boxes)
     // The box holds exactly one common point, and the other common points lie outside it.
-    out.points.emplace_back(box, std::make_shared<const LocatedPoint::Recipe>([A, B, box] {
-      for (const IntersectionPoint& ip : intersect(A, B).points)
+    out.points.emplace_back(box, std::make_shared<const LocatedPoint::Recipe>([curves, box] {
+      for (const IntersectionPoint& ip : intersect(curves->first, curves->second).points)
         if (inside(ip.point, box)) return ip.point;
       throw std::logic_error("common_points: no exact common point in a certified box");
     }));

@@ -15,7 +15,7 @@ FilterCounts& counts() { return filter_context().counts; }
 
 }  // namespace
 
-LocatedPoint::LocatedPoint(AlgebraicPoint p, const Rational& width) : exact_(std::move(p)) {
+LocatedPoint::LocatedPoint(AlgebraicPoint p, const Rational& width) : exact_(std::make_unique<AlgebraicPoint>(std::move(p))) {
   x = enclosure(exact_->x(), width);
   y = enclosure(exact_->y(), width);
 }
@@ -28,10 +28,23 @@ LocatedPoint LocatedPoint::rational(const Rational& x, const Rational& y) {
                       std::make_shared<const Recipe>([x, y] { return AlgebraicPoint::rational(x, y); }));
 }
 
+LocatedPoint::LocatedPoint(const LocatedPoint& o)
+    : x(o.x), y(o.y), recipe_(o.recipe_), exact_(o.exact_ ? std::make_unique<AlgebraicPoint>(*o.exact_) : nullptr) {}
+
+LocatedPoint& LocatedPoint::operator=(const LocatedPoint& o) {
+  if (this != &o) {
+    x = o.x, y = o.y, recipe_ = o.recipe_;
+    exact_ = o.exact_ ? std::make_unique<AlgebraicPoint>(*o.exact_) : nullptr;
+  }
+  return *this;
+}
+
+LocatedPoint::~LocatedPoint() = default;
+
 const AlgebraicPoint& LocatedPoint::exact() const {
   if (!exact_) {
     ++counts().exact_points;
-    exact_ = (*recipe_)();
+    exact_ = std::make_unique<AlgebraicPoint>((*recipe_)());
   }
   return *exact_;
 }

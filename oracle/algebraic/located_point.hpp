@@ -34,6 +34,14 @@ struct LocatedPoint {
   LocatedPoint(const IntervalBox& box, std::shared_ptr<const Recipe> recipe);
   static LocatedPoint rational(const Rational& x, const Rational& y);
 
+  // Copies are deep (the exact point, when built, is copied), so that two threads never share
+  // one; a point not yet built exactly costs a pointer and its box.
+  LocatedPoint(const LocatedPoint& o);
+  LocatedPoint& operator=(const LocatedPoint& o);
+  LocatedPoint(LocatedPoint&&) noexcept = default;
+  LocatedPoint& operator=(LocatedPoint&&) noexcept = default;
+  ~LocatedPoint();
+
   // The exact point.
   const AlgebraicPoint& exact() const;
 
@@ -47,7 +55,7 @@ struct LocatedPoint {
 
  private:
   std::shared_ptr<const Recipe> recipe_;
-  mutable std::optional<AlgebraicPoint> exact_;
+  mutable std::unique_ptr<AlgebraicPoint> exact_;
 };
 
 // Exact equality of points, with the box test first.

@@ -196,9 +196,11 @@ void Builder::build_cycles() {
 
 void Builder::build_faces() {
   std::vector<int> face_of_cycle(d_.cycles.size(), -1);
+  std::vector<std::vector<int>> faces_of_site(d_.sheared.sites.size());
   for (int c = 0; c < static_cast<int>(d_.cycles.size()); ++c)
     if (d_.cycles[c].outer) {
       face_of_cycle[c] = static_cast<int>(d_.faces.size());
+      faces_of_site[static_cast<std::size_t>(d_.cycles[c].site)].push_back(face_of_cycle[c]);
       d_.faces.push_back({d_.cycles[c].site, c, {}, false});
     }
   // A point on a cycle, off every other cycle of the same site.
@@ -214,8 +216,10 @@ void Builder::build_faces() {
   // The innermost of the outer cycles of `site` containing p.
   auto innermost = [&](int site, const LocatedPoint& p, int skip) {
     std::vector<int> around;
-    for (const Face& f : d_.faces)
-      if (f.site == site && f.outer_cycle != skip && cycle_contains(d_, f.outer_cycle, p)) around.push_back(f.outer_cycle);
+    for (int f : faces_of_site[static_cast<std::size_t>(site)]) {
+      const int c = d_.faces[static_cast<std::size_t>(f)].outer_cycle;
+      if (c != skip && cycle_contains(d_, c, p)) around.push_back(c);
+    }
     for (int c : around) {
       const LocatedPoint q = point_on(c);
       bool inside_all = true;
@@ -234,11 +238,14 @@ void Builder::build_faces() {
   // The face holding site s: it is the only nearest site at s, so when s is on ∂Ω it lies on (an
   // end of, or inside) a boundary piece of its own cell, on that piece's cycle; otherwise it is
   // strictly inside the innermost outer cycle of its site around it.
+  std::vector<std::vector<int>> boundary_half_edges_of_site(d_.sheared.sites.size());
+  for (int h = 0; h < static_cast<int>(d_.half_edges.size()); ++h)
+    if (const HalfEdge& e = d_.half_edges[h]; e.boundary >= 0)
+      boundary_half_edges_of_site[static_cast<std::size_t>(d_.boundary[e.boundary].site)].push_back(h);
   auto home_of = [&](int s, const LocatedPoint& site) {
     if (domain_position(d_.sheared, site).edges.empty()) return innermost(s, site, -1);
-    for (int h = 0; h < static_cast<int>(d_.half_edges.size()); ++h) {
+    for (int h : boundary_half_edges_of_site[static_cast<std::size_t>(s)]) {
       const HalfEdge& e = d_.half_edges[h];
-      if (e.boundary < 0 || d_.boundary[e.boundary].site != s) continue;
       const Span span = spans_of(d_, e)[0];
       if (compare_x(site, *span.left) != Sign::negative && compare_x(site, *span.right) != Sign::positive &&
           span.branch.compare_point(site) == Sign::zero)
@@ -249,8 +256,8 @@ void Builder::build_faces() {
   for (int s = 0; s < static_cast<int>(d_.sheared.sites.size()); ++s) {
     const LocatedPoint site = LocatedPoint::rational(d_.sheared.sites[s].x, d_.sheared.sites[s].y);
     const int home = home_of(s, site);
-    for (Face& f : d_.faces)
-      if (f.site == s) f.orphan = f.outer_cycle != home;
+    for (int f : faces_of_site[static_cast<std::size_t>(s)])
+      d_.faces[static_cast<std::size_t>(f)].orphan = d_.faces[static_cast<std::size_t>(f)].outer_cycle != home;
   }
 }
 
