@@ -59,6 +59,11 @@ put("diagram_brute_force", "two-isotropic", bytes([1, 0, 2, 4, 0, 3, 0, 6, 4, 0,
 put("diagram_brute_force", "four-cocircular", bytes([3, 0, 2, 2, 0, 3, 0, 6, 2, 0, 3, 0, 6, 6, 0, 3, 0, 2, 6, 0, 3, 0]))
 put("diagram_brute_force", "anisotropic-l-shape", bytes([4, 2, 1, 1, 3, 5, 2, 3, 1, 0, 3, 1, 1, 3, 1, 0, 1, 2, 4, 3, 0]))
 put("diagram_brute_force", "corner-site", bytes([2, 1, 0, 0, 0, 3, 0, 4, 4, 1, 4, 2]))
+# diagram_filtered_vs_exact: the same inputs (fuzz/support/small_diagram.hpp).
+put("diagram_filtered_vs_exact", "two-isotropic", bytes([1, 0, 2, 4, 0, 3, 0, 6, 4, 0, 3, 0]))
+put("diagram_filtered_vs_exact", "four-cocircular", bytes([3, 0, 2, 2, 0, 3, 0, 6, 2, 0, 3, 0, 6, 6, 0, 3, 0, 2, 6, 0, 3, 0]))
+put("diagram_filtered_vs_exact", "anisotropic-l-shape", bytes([4, 2, 1, 1, 3, 5, 2, 3, 1, 0, 3, 1, 1, 3, 1, 0, 1, 2, 4, 3, 0]))
+put("diagram_filtered_vs_exact", "corner-site", bytes([2, 1, 0, 0, 0, 3, 0, 4, 4, 1, 4, 2]))
 
 # refiners_certified: refiner, field, shape, stretch, seed, then field and refiner parameter scales (2 = x1).
 put("refiners_certified", "constant-square", bytes([0, 0, 0, 2, 1] + [2] * 12))

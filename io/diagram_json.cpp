@@ -49,8 +49,8 @@ OrderedJson point_certificate(const Diagram& d, const oracle::LocatedPoint& p, c
   const auto [ax, ay] = d.original_xy(p);
   const auto& x = p.exact().x();
   const auto& y = p.exact().y();
-  if (x.is_exact() && y.is_exact())
-    return {{"exact", true}, {"x", to_exact_string(x.lo() - d.shear * y.lo())}, {"y", to_exact_string(y.lo())}};
+  const auto rx = x.as_rational(), ry = y.as_rational();
+  if (rx && ry) return {{"exact", true}, {"x", to_exact_string(*rx - d.shear * *ry)}, {"y", to_exact_string(*ry)}};
   // The same point among the common points of the curves in the input's coordinates: the shear
   // keeps y and, at equal y, the order of x.
   const Conic A0 = oracle::shear_conic(A, d.shear), B0 = oracle::shear_conic(B, d.shear);

@@ -1,7 +1,6 @@
-// The exact diagram against brute force (docs/fuzzing.md § Differential; LS Definition 1). Up to
-// 6 sites on the grid of eighths, metrics M = FᵀF with F = [[a, b], [0, c]] of small integers (up to
-// 4:1 anisotropy), in a square, a triangle or an L-shaped domain (non-convex), all decoded from
-// bytes: the grid makes ties, cocircular sites and sites on ∂Ω and its corners common.
+// The exact diagram against brute force (docs/fuzzing.md § Differential; LS Definition 1), on the
+// small inputs of fuzz/support/small_diagram.hpp (up to 6 sites on the grid of eighths, metrics up
+// to 4:1, a square, a triangle or an L-shaped domain):
 //   - the oracle either builds D|Ω or declines a degenerate input it documents (std::domain_error);
 //     any other exception is a finding;
 //   - at every point of the grid of twelfths inside Ω, the owners of what contains it (locate) are
@@ -10,6 +9,7 @@
 //   - every site lies in exactly one face of its own cell that is not an orphan.
 // Limit: 2 + 5·6 bytes.
 #include "fuzz/support/finding.hpp"
+#include "fuzz/support/small_diagram.hpp"
 #include "oracle/diagram/diagram.hpp"
 
 #include <algorithm>
@@ -21,26 +21,6 @@ namespace oracle = anisocert::oracle;
 using Point = anisocert::predicates::Point2<Rational>;
 
 namespace {
-
-enum class Shape { square, triangle, l_shape };
-
-anisocert::geometry::Polygon<Rational> domain(Shape s) {
-  const Rational h(1, 2);
-  switch (s) {
-    case Shape::triangle: return {{0, 0}, {1, 0}, {0, 1}};
-    case Shape::l_shape: return {{0, 0}, {1, 0}, {1, h}, {h, h}, {h, 1}, {0, 1}};
-    default: return {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  }
-}
-
-// p ∈ Ω (closed), for the three shapes of the unit square.
-bool inside(const Point& p, Shape s) {
-  const Rational h(1, 2);
-  if (p.x < 0 || p.y < 0 || p.x > 1 || p.y > 1) return false;
-  if (s == Shape::triangle) return p.x + p.y <= 1;
-  if (s == Shape::l_shape) return p.x <= h || p.y <= h;
-  return true;
-}
 
 std::vector<int> nearest_by_definition(const anisocert::geometry::Mesh<Rational>& in, const Point& p) {
   std::vector<int> best;
@@ -62,19 +42,10 @@ std::vector<int> nearest_by_definition(const anisocert::geometry::Mesh<Rational>
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size < 2 || size > 32) return -1;
-  const Shape shape = static_cast<Shape>(data[1] % 3);
-  anisocert::geometry::Mesh<Rational> in;
-  in.domain = domain(shape);
-  const std::size_t wanted = 1 + data[0] % 6;
-  for (std::size_t at = 2; at + 5 <= size && in.sites.size() < wanted; at += 5) {
-    const Point p{Rational(data[at] % 9, 8), Rational(data[at + 1] % 9, 8)};
-    if (!inside(p, shape)) continue;
-    if (std::any_of(in.sites.begin(), in.sites.end(), [&](const Point& q) { return q.x == p.x && q.y == p.y; })) continue;
-    const Rational a(1 + data[at + 2] % 4), b(static_cast<int>(data[at + 3] % 7) - 3), c(1 + data[at + 4] % 4);
-    in.sites.push_back(p);
-    in.metrics.push_back({a * a, a * b, b * b + c * c});
-  }
+  if (size > anisocert::fuzz::small_diagram_max_len) return -1;
+  const anisocert::fuzz::SmallDiagram small = anisocert::fuzz::small_diagram(data, size);
+  const anisocert::geometry::Mesh<Rational>& in = small.input;
+  const anisocert::fuzz::Shape shape = small.shape;
   if (in.sites.empty()) return 0;
   oracle::Diagram d;
   try {
@@ -85,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int i = 0; i <= 12; ++i)
     for (int j = 0; j <= 12; ++j) {
       const Point p{Rational(i, 12), Rational(j, 12)};
-      if (!inside(p, shape)) continue;
+      if (!anisocert::fuzz::inside(p, shape)) continue;
       const oracle::Location loc = oracle::locate(d, p);
       require(loc.owners == nearest_by_definition(in, p),
               "at (" + std::to_string(i) + "/12, " + std::to_string(j) + "/12) the diagram's owners are not the nearest sites");

@@ -118,8 +118,10 @@ class Solver {
     // Outside X's neighbourhood the root says nothing about X.
     if (x < X.x.lo - width(X.x) || x > X.x.hi + width(X.x) || y < X.y.lo - width(X.y) || y > X.y.hi + width(X.y))
       return std::nullopt;
-    const double rx = 1e-10 * (std::abs(x) + width(X.x)), ry = 1e-10 * (std::abs(y) + width(X.y));
-    const IntervalBox Y{{x - rx, x + rx}, {y - ry, y + ry}};
+    // A small box on the scale of the search (a thin search box, e.g. along a horizontal edge,
+    // must not make it thin too).
+    const double r = 1e-10 * (std::abs(x) + std::abs(y) + width(X.x) + width(X.y));
+    const IntervalBox Y{{x - r, x + r}, {y - r, y + r}};
     IntervalBox K;
     if (krawczyk(Y, K) != Krawczyk::unique) return std::nullopt;
     return K;

@@ -185,6 +185,35 @@ void RealAlgebraic::refine() const {
   }
 }
 
+namespace {
+
+// The fraction of least denominator in [lo, hi] (the Stern–Brocot walk, by continued fractions).
+Rational simplest_fraction(const Rational& lo, const Rational& hi) {
+  if (lo <= 0 && hi >= 0) return 0;
+  if (hi < 0) return -simplest_fraction(-hi, -lo);
+  const Integer fl = floor_of(lo);
+  if (Rational(fl) == lo) return lo;
+  if (Rational(fl + 1) <= hi) return Rational(fl + 1);
+  return Rational(fl) + 1 / simplest_fraction(1 / (hi - Rational(fl)), 1 / (lo - Rational(fl)));
+}
+
+}  // namespace
+
+std::optional<Rational> RealAlgebraic::as_rational() const {
+  if (is_exact()) return lo_;
+  Integer common = 1;  // the lcm of the coefficients' denominators: P = common · p is integral
+  for (const Rational& c : p_.coefficients()) common = boost::multiprecision::lcm(common, boost::multiprecision::denominator(c));
+  const Rational lead = p_.leading() * Rational(common);
+  const Integer lc = abs(boost::multiprecision::numerator(lead));
+  // Two fractions of denominators ≤ |lc| differ by at least 1/lc², so below that width the
+  // interval holds at most one of them, and it is the simplest one there.
+  refine_below(Rational(1) / Rational(2 * lc * lc));
+  if (is_exact()) return lo_;
+  const Rational r = simplest_fraction(lo_, hi_);
+  if (boost::multiprecision::denominator(r) <= lc && p_.sign_at(r) == Sign::zero) return r;
+  return std::nullopt;
+}
+
 void RealAlgebraic::refine_below(const Rational& width) const {
   while (hi_ - lo_ > width) refine();
 }

@@ -6,6 +6,7 @@
 
 #include "oracle/algebraic/polynomial.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ class RealAlgebraic {
   const Rational& lo() const { return lo_; }
   const Rational& hi() const { return hi_; }
   bool is_exact() const { return lo_ == hi_; }
+
+  // The value when it is rational, else nothing: decided exactly, whatever the interval (a
+  // rational root a/b in lowest terms of p = P/L, P integral, has b | lc(P)).
+  std::optional<Rational> as_rational() const;
 
   // Halves the isolating interval (or finds the root exactly at the midpoint).
   void refine() const;

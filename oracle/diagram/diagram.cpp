@@ -61,24 +61,29 @@ void Builder::run() {
 
 namespace {
 
-// The k with k·g ≤ v < (k + 1)·g for the exact coordinate v in the box [b], compared with
-// `compare(r)` = sign(v − r) when the box meets a grid line.
+// The k nearest to v/g (the larger at a tie), for the exact value v in the box [b], by bisection
+// between the indices of the box's ends, with `compare(r)` = sign(v − r) for r = (k − 1/2)·g.
 template <class Compare>
-double grid_cell(const FilterInterval& b, double g, Compare compare) {
-  double k = std::floor(b.lo / g);
-  while ((k + 1) * g <= b.hi && compare(Rational((k + 1) * g)) != Sign::negative) k += 1;
-  return k;
+double nearest_grid_index(const FilterInterval& b, double g, Compare compare) {
+  double lo = std::floor(b.lo / g + 0.5) - 1, hi = std::floor(b.hi / g + 0.5) + 1;  // lo ≤ k ≤ hi
+  while (lo < hi) {
+    const double mid = std::floor(lo + (hi - lo + 1) / 2);
+    if (compare(Rational((mid - 0.5) * g)) != Sign::negative) lo = mid;
+    else hi = mid - 1;
+  }
+  return lo;
 }
 
 }  // namespace
 
 std::pair<double, double> Diagram::original_xy(const LocatedPoint& p) const {
-  if (!(std::isfinite(p.x.lo) && std::isfinite(p.x.hi) && std::isfinite(p.y.lo) && std::isfinite(p.y.hi)))
+  // x = x' − s·y in the input's coordinates: the sign of x − r is that of the line x' − s·y − r.
+  const FilterInterval s = FilterInterval::around(shear), X = p.x - s * p.y;
+  if (!(std::isfinite(X.lo) && std::isfinite(X.hi) && std::isfinite(p.y.lo) && std::isfinite(p.y.hi)))
     return {(p.exact().x().lo() - shear * p.exact().y().lo()).convert_to<double>(), p.exact().y().lo().convert_to<double>()};
-  const double kx = grid_cell(p.x, grid, [&](const Rational& r) { return compare_x(p, r); });
-  const double ky = grid_cell(p.y, grid, [&](const Rational& r) { return compare(p.exact().y(), RealAlgebraic::rational(r)); });
-  const double y = (ky + 0.5) * grid;
-  return {(kx + 0.5) * grid - shear.convert_to<double>() * y, y};
+  const double kx = nearest_grid_index(X, grid, [&](const Rational& r) { return p.sign_of(Conic{0, 0, 0, 1, -shear, -r}); });
+  const double ky = nearest_grid_index(p.y, grid, [&](const Rational& r) { return p.sign_of(Conic{0, 0, 0, 0, 1, -r}); });
+  return {kx * grid, ky * grid};
 }
 
 Diagram compute_diagram(const Mesh<Rational>& input, const DiagramOptions& options) {

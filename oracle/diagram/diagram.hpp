@@ -120,10 +120,10 @@ struct Diagram {
   Theorem7 theorem7;
   DiagramStats stats;
 
-  // Original coordinates of a point, approximately: the centre of the cell of the grid of step
-  // `grid` (a power of two near 2^-40 of the domain's extent) that holds the exact sheared
-  // point, mapped back. It depends only on the exact point, so the filtered and the exact
-  // constructions print the same numbers.
+  // A point's coordinates in the input's coordinates, approximately: each rounded to the nearest
+  // multiple of `grid`, a power of two near 2^-40 of the domain's extent (so within 2^-41 of the
+  // extent; multiples of `grid`, such as the corners of the unit square, are exact). It depends
+  // only on the exact point, so the filtered and the exact constructions print the same numbers.
   std::pair<double, double> original_xy(const LocatedPoint& p) const;
   double grid = 0;
 };

@@ -34,6 +34,7 @@
 #include "oracle/diagram/diagram.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
 #include "predicates/incircle.hpp"
+#include "tests/checked_diagram.hpp"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -275,7 +276,7 @@ void check_case(const Case& c) {
   }
 
   oracle::Diagram d;
-  ASSERT_NO_THROW(d = oracle::compute_diagram(input_of(c)));
+  ASSERT_NO_THROW(d = anisocert::test_support::checked_diagram(input_of(c)));
 
   // Vertices: a bijection between the CGAL centers in Ω and the oracle's Voronoi vertices.
   std::vector<int> voronoi;
@@ -467,7 +468,7 @@ TEST(OracleVsCgal, FourCocircularSitesInADiagonalMetric) {
   c.sites = around(c, {r(1, 2), r(1, 2)}, cocircular_offsets);
   check_case(c);
   // One vertex, at the center, with the four owners (independently of CGAL).
-  const oracle::Diagram d = oracle::compute_diagram(input_of(c));
+  const oracle::Diagram d = anisocert::test_support::checked_diagram(input_of(c));
   int vertices = 0;
   for (const oracle::Node& node : d.nodes)
     if (node.kind == oracle::Node::Kind::voronoi) {
