@@ -114,3 +114,54 @@ TEST(MeshCertifier, BrokenTriangulationsAreRejectedByName) {
 }
 
 }  // namespace
+
+namespace {
+
+// A k×k lattice with rational jitter, quads split along alternating diagonals: about half of them
+// the non-Delaunay one, and unjittered squares on the boundary give exact ties.
+Mesh<Rational> alternating_lattice(int k) {
+  Mesh<Rational> m;
+  for (int j = 0; j <= k; ++j)
+    for (int i = 0; i <= k; ++i) {
+      const bool boundary = i == 0 || j == 0 || i == k || j == k;
+      m.sites.push_back({Rational(i) + (boundary ? Rational(0) : Rational((i * 7 + j * 3) % 5 - 2, 20)),
+                         Rational(j) + (boundary ? Rational(0) : Rational((i * 2 + j * 5) % 7 - 3, 30))});
+    }
+  m.metrics.assign(m.sites.size(), {4, 1, 1});
+  auto at = [&](int i, int j) { return j * (k + 1) + i; };
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i < k; ++i) {
+      const int a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if ((i + j) % 2 == 0) m.triangles.push_back({a, b, c}), m.triangles.push_back({a, c, d});
+      else m.triangles.push_back({a, b, d}), m.triangles.push_back({b, c, d});
+    }
+  m.domain = {{0, 0}, {k, 0}, {k, k}, {0, k}};
+  return m;
+}
+
+}  // namespace
+
+// Issue 14: the locally uniform check runs per triangle on every core; its findings are added in
+// triangle order, so the report is the one thread's, witness for witness.
+TEST(MeshCertifier, UniformCheckOnTwoThreadsGivesTheOneThreadReport) {
+  const Mesh<Rational> m = alternating_lattice(12);
+  CertifyOptions o;
+  o.valid = false;
+  o.threads = 1;
+  const CertifyReport one = certify_mesh(m, o);
+  o.threads = 2;
+  const CertifyReport two = certify_mesh(m, o);
+  ASSERT_GT(one.uniform_violations.count(), 10u) << "the lattice must have violations for this test to mean anything";
+  EXPECT_EQ(one.incircle_tests, two.incircle_tests);
+  for (const auto& [a, b] : {std::pair<const WitnessList&, const WitnessList&>{one.uniform_violations, two.uniform_violations},
+                              std::pair<const WitnessList&, const WitnessList&>{one.uniform_ties, two.uniform_ties}}) {
+    ASSERT_EQ(a.count(), b.count());
+    for (std::size_t i = 0; i < a.count(); ++i) {
+      EXPECT_EQ(a.places()[i].triangle, b.places()[i].triangle);
+      EXPECT_EQ(a.places()[i].vertex, b.places()[i].vertex);
+      EXPECT_EQ(a.places()[i].site, b.places()[i].site);
+    }
+    ASSERT_EQ(a.described().size(), b.described().size());
+    for (std::size_t i = 0; i < a.described().size(); ++i) EXPECT_EQ(a.described()[i].text, b.described()[i].text);
+  }
+}

@@ -26,12 +26,14 @@ struct CertifyCommandOptions {
   bool planar_3d = false;
   bool checks_given = false;   // --checks was on the command line
   bool all_witnesses = false;
+  int threads = 0;
 };
 
 oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
   oracle::CertifyOptions o;
   o.valid = o.uniform = o.metric = false;
   o.described_witnesses = c.all_witnesses ? oracle::all_witnesses : oracle::default_described_witnesses;
+  o.threads = c.threads;
   for (const std::string& k : c.checks) {
     if (k == "valid") o.valid = true;
     else if (k == "uniform") o.uniform = true;
@@ -176,6 +178,8 @@ void add_certify(CLI::App& app, int& exit_code) {
               "list every witness in --json (one per failing triangle or edge: a bad mesh of a million triangles gives\n"
               "a million), not only " + first + " of each list");
   c->add_option("--svg", o->svg_path, "write a picture: the mesh, failures coloured, histograms of lengths and qualities");
+  c->add_option("--threads", o->threads, "threads for the locally uniform check (default: every core; same report)")
+      ->check(CLI::Range(1, 1024));
   c->callback([o, checks, &exit_code] {
     o->checks_given = checks->count() > 0;
     exit_code = run_certify(*o);

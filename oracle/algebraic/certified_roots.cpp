@@ -24,10 +24,9 @@ double width(const I& a) { return a.hi - a.lo; }
 struct Curve {
   I a, b, c, d, e, f;
   double ad, bd, cd, dd, ed, fd;
-  explicit Curve(const Conic& G)
-      : a(I::around(G.a)), b(I::around(G.b)), c(I::around(G.c)), d(I::around(G.d)), e(I::around(G.e)),
-        f(I::around(G.f)), ad(G.a.convert_to<double>()), bd(G.b.convert_to<double>()), cd(G.c.convert_to<double>()),
-        dd(G.d.convert_to<double>()), ed(G.e.convert_to<double>()), fd(G.f.convert_to<double>()) {}
+  explicit Curve(const IntervalConic& G)
+      : a(G.a), b(G.b), c(G.c), d(G.d), e(G.e), f(G.f), ad(mid(G.a)), bd(mid(G.b)), cd(mid(G.c)), dd(mid(G.d)),
+        ed(mid(G.e)), fd(mid(G.f)) {}
   I gx(const I& x, const I& y) const { return I(2) * a * x + b * y + d; }
   I gy(const I& x, const I& y) const { return b * x + I(2) * c * y + e; }
   // The natural extension intersected with the mean value form at the centre m.
@@ -48,7 +47,7 @@ struct Curve {
 
 class Solver {
  public:
-  Solver(const Conic& A, const Conic& B) : A_(A), B_(B) {}
+  Solver(const IntervalConic& A, const IntervalConic& B) : A_(A), B_(B) {}
 
   bool run(const IntervalBox& search) {
     explore(search, 0);
@@ -183,7 +182,12 @@ class Solver {
 
 }  // namespace
 
-std::optional<std::vector<IntervalBox>> certified_common_roots(const Conic& A, const Conic& B, const IntervalBox& search) {
+IntervalConic IntervalConic::around(const Conic& G) {
+  return {I::around(G.a), I::around(G.b), I::around(G.c), I::around(G.d), I::around(G.e), I::around(G.f)};
+}
+
+std::optional<std::vector<IntervalBox>> certified_common_roots(const IntervalConic& A, const IntervalConic& B,
+                                                               const IntervalBox& search) {
   if (!(std::isfinite(search.x.lo) && std::isfinite(search.x.hi) && std::isfinite(search.y.lo) && std::isfinite(search.y.hi)))
     return std::nullopt;
   Solver s(A, B);

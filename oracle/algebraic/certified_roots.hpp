@@ -21,6 +21,14 @@
 
 namespace anisocert::oracle {
 
-std::optional<std::vector<IntervalBox>> certified_common_roots(const Conic& A, const Conic& B, const IntervalBox& search);
+// A conic known by enclosures of its coefficients a x² + b xy + c y² + d x + e y + f.
+struct IntervalConic {
+  FilterInterval a, b, c, d, e, f;
+  static IntervalConic around(const Conic& G);
+};
+
+// The common points of every pair of conics in the enclosures: the exact curves' are among them.
+std::optional<std::vector<IntervalBox>> certified_common_roots(const IntervalConic& A, const IntervalConic& B,
+                                                               const IntervalBox& search);
 
 }  // namespace anisocert::oracle

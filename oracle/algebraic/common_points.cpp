@@ -27,19 +27,24 @@ CommonPoints exact_common_points(const Conic& A, const Conic& B, const Rational&
   return out;
 }
 
-CommonPoints common_points(const Conic& A, const Conic& B, const IntervalBox& search, const Rational& width) {
+CommonPoints common_points(const CurvePair& curves, const IntervalBox& search, const Rational& width) {
   FilterContext& context = filter_context();
-  if (context.exact_only) return exact_common_points(A, B, width);
-  const auto boxes = certified_common_roots(A, B, search);
-  if (!boxes) return exact_common_points(A, B, width);
+  const auto exact = [&] {
+    const auto [A, B] = curves.exact();
+    return exact_common_points(A, B, width);
+  };
+  if (context.exact_only) return exact();
+  const auto boxes = certified_common_roots(curves.A, curves.B, search);
+  if (!boxes) return exact();
   ++context.counts.roots_filtered;
   CommonPoints out;
   if (boxes->empty()) return out;
-  const auto curves = std::make_shared<const std::pair<Conic, Conic>>(A, B);  // shared by the points' recipes
+  const auto build = std::make_shared<const std::function<std::pair<Conic, Conic>()>>(curves.exact);  // shared by the recipes
   for (const IntervalBox& box : *boxes)
     // The box holds exactly one common point, and the other common points lie outside it.
-    out.points.emplace_back(box, std::make_shared<const LocatedPoint::Recipe>([curves, box] {
-      for (const IntersectionPoint& ip : intersect(curves->first, curves->second).points)
+    out.points.emplace_back(box, std::make_shared<const LocatedPoint::Recipe>([build, box] {
+      const auto [A, B] = (*build)();
+      for (const IntersectionPoint& ip : intersect(A, B).points)
         if (inside(ip.point, box)) return ip.point;
       throw std::logic_error("common_points: no exact common point in a certified box");
     }));
@@ -48,6 +53,11 @@ CommonPoints common_points(const Conic& A, const Conic& B, const IntervalBox& se
     return sx != Sign::zero ? sx == Sign::negative : compare_y(p, q) == Sign::negative;
   });
   return out;
+}
+
+CommonPoints common_points(const Conic& A, const Conic& B, const IntervalBox& search, const Rational& width) {
+  return common_points(CurvePair{IntervalConic::around(A), IntervalConic::around(B), [A, B] { return std::pair{A, B}; }},
+                       search, width);
 }
 
 }  // namespace anisocert::oracle

@@ -12,8 +12,16 @@ struct CommonPoints {
   std::vector<LocatedPoint> points;  // sorted by x, then y
 };
 
-// Every common point of A and B in `search`, perhaps with some beyond it (the exact path gives
+// Two curves known by enclosures of their coefficients, and how to build them exactly (only done
+// when a decision needs it).
+struct CurvePair {
+  IntervalConic A, B;
+  std::function<std::pair<Conic, Conic>()> exact;
+};
+
+// Every common point of the curves in `search`, perhaps with some beyond it (the exact path gives
 // them all). Exact points' boxes are refined below `width`.
+CommonPoints common_points(const CurvePair& curves, const IntervalBox& search, const Rational& width);
 CommonPoints common_points(const Conic& A, const Conic& B, const IntervalBox& search, const Rational& width);
 
 // The same, exactly (today's path; for the rare callers that need every point).

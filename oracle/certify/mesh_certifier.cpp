@@ -4,6 +4,7 @@
 #include "geometry/distortion_estimate.hpp"
 #include "geometry/ellipse_box.hpp"
 #include "oracle/certify/site_tree.hpp"
+#include "oracle/parallel_for.hpp"
 #include "predicates/distortion.hpp"
 #include "predicates/incircle.hpp"
 
@@ -38,53 +39,78 @@ Sign incircle(const EnclosedMesh& m, const std::array<int, 3>& t, int s, int v) 
       });
 }
 
-// LU §3–§4: every triangle's circumellipse in each of its vertices' metrics is empty of sites.
-// One witness per triangle: its search stops at the first site strictly inside.
-void check_uniform(const EnclosedMesh& m, const SiteTree& tree, CertifyReport& r) {
-  const auto& tris = m.mesh.triangles;
-  for (int t = 0; t < static_cast<int>(tris.size()); ++t) {
-    const auto& tri = tris[t];
-    if (m.orientation(tri[0], tri[1], tri[2]) != Sign::positive) {  // `valid` reports it
-      ++r.unmeasured;
-      continue;
-    }
-    bool violated = false, tied = false;
-    for (int i = 0; i < 3; ++i) {
-      const int v = tri[i];
-      // A metric equal to an earlier vertex's (a constant field) asks the same question again.
-      auto same = [&](int u) {
-        const Sym2<Rational>& p = m.mesh.metrics[u];
-        const Sym2<Rational>& q = m.mesh.metrics[v];
-        return p.m11 == q.m11 && p.m12 == q.m12 && p.m22 == q.m22;
-      };
-      if ((i > 0 && same(tri[0])) || (i > 1 && same(tri[1]))) continue;
-      // The M_v-circumellipse, enclosed (geometry/circumellipse.hpp), and the box of the M_v-ball
-      // around it: the sites outside that box are outside the ellipse, the rest are decided by the
-      // exact in-circle predicate.
-      const Sym2<FilterInterval>& mi = m.metric[v];
-      const geometry::Circumellipse<FilterInterval> c =
-          geometry::circumellipse(m.site[tri[0]], m.site[tri[1]], m.site[tri[2]], mi);
-      const geometry::HalfWidths<FilterInterval> h = geometry::ellipse_half_widths(mi, c.r2);
-      const double hx = h.hx.hi, hy = h.hy.hi;
-      const bool bounded = std::isfinite(c.cx.lo) && std::isfinite(c.cx.hi) && std::isfinite(c.cy.lo) &&
-                           std::isfinite(c.cy.hi) && std::isfinite(hx) && std::isfinite(hy);
-      const double qx0 = bounded ? c.cx.lo - hx : -inf, qx1 = bounded ? c.cx.hi + hx : inf;
-      const double qy0 = bounded ? c.cy.lo - hy : -inf, qy1 = bounded ? c.cy.hi + hy : inf;
-      tree.visit(qx0, qx1, qy0, qy1, [&](int s) {
-        if (s == tri[0] || s == tri[1] || s == tri[2]) return true;
-        ++r.incircle_tests;
-        const Sign in = incircle(m, tri, s, v);
-        if (in == Sign::negative || (in == Sign::zero && tied)) return true;
-        const bool strict = in == Sign::positive;
-        (strict ? r.uniform_violations : r.uniform_ties).add(v, t, s, [&] {
-          return name("site", s) + (strict ? " is strictly inside" : " is exactly on") + " the circumellipse of " +
-                 name("triangle", t) + " in the metric of " + name("vertex", v);
-        });
-        (strict ? violated : tied) = true;
-        return !strict;
+// What the locally uniform check found at one triangle, in the order found.
+struct UniformFinding {
+  bool strict;
+  int vertex, site;
+};
+struct UniformResult {
+  bool unmeasured = false;
+  std::size_t incircle_tests = 0;
+  std::vector<UniformFinding> found;
+};
+
+// LU §3–§4: triangle t's circumellipse in each of its vertices' metrics is empty of sites. One
+// witness per triangle: its search stops at the first site strictly inside.
+UniformResult check_uniform_at(const EnclosedMesh& m, const SiteTree& tree, int t) {
+  UniformResult r;
+  const auto& tri = m.mesh.triangles[t];
+  if (m.orientation(tri[0], tri[1], tri[2]) != Sign::positive) {  // `valid` reports it
+    r.unmeasured = true;
+    return r;
+  }
+  bool violated = false, tied = false;
+  for (int i = 0; i < 3 && !violated; ++i) {
+    const int v = tri[i];
+    // A metric equal to an earlier vertex's (a constant field) asks the same question again.
+    auto same = [&](int u) {
+      const Sym2<Rational>& p = m.mesh.metrics[u];
+      const Sym2<Rational>& q = m.mesh.metrics[v];
+      return p.m11 == q.m11 && p.m12 == q.m12 && p.m22 == q.m22;
+    };
+    if ((i > 0 && same(tri[0])) || (i > 1 && same(tri[1]))) continue;
+    // The M_v-circumellipse, enclosed (geometry/circumellipse.hpp), and the box of the M_v-ball
+    // around it: the sites outside that box are outside the ellipse, the rest are decided by the
+    // exact in-circle predicate.
+    const Sym2<FilterInterval>& mi = m.metric[v];
+    const geometry::Circumellipse<FilterInterval> c =
+        geometry::circumellipse(m.site[tri[0]], m.site[tri[1]], m.site[tri[2]], mi);
+    const geometry::HalfWidths<FilterInterval> h = geometry::ellipse_half_widths(mi, c.r2);
+    const double hx = h.hx.hi, hy = h.hy.hi;
+    const bool bounded = std::isfinite(c.cx.lo) && std::isfinite(c.cx.hi) && std::isfinite(c.cy.lo) &&
+                         std::isfinite(c.cy.hi) && std::isfinite(hx) && std::isfinite(hy);
+    const double qx0 = bounded ? c.cx.lo - hx : -inf, qx1 = bounded ? c.cx.hi + hx : inf;
+    const double qy0 = bounded ? c.cy.lo - hy : -inf, qy1 = bounded ? c.cy.hi + hy : inf;
+    tree.visit(qx0, qx1, qy0, qy1, [&](int s) {
+      if (s == tri[0] || s == tri[1] || s == tri[2]) return true;
+      ++r.incircle_tests;
+      const Sign in = incircle(m, tri, s, v);
+      if (in == Sign::negative || (in == Sign::zero && tied)) return true;
+      const bool strict = in == Sign::positive;
+      r.found.push_back({strict, v, s});
+      (strict ? violated : tied) = true;
+      return !strict;
+    });
+  }
+  return r;
+}
+
+// The triangles on every core (independent), their findings added in triangle order: the report
+// does not depend on the number of threads.
+void check_uniform(const EnclosedMesh& m, const SiteTree& tree, int threads, CertifyReport& r) {
+  const int n = static_cast<int>(m.mesh.triangles.size());
+  std::vector<UniformResult> results(static_cast<std::size_t>(n));
+  parallel_for(static_cast<std::size_t>(n), thread_count(threads),
+               [&](std::size_t t) { results[t] = check_uniform_at(m, tree, static_cast<int>(t)); });
+  for (int t = 0; t < n; ++t) {
+    const UniformResult& u = results[static_cast<std::size_t>(t)];
+    r.unmeasured += u.unmeasured ? 1 : 0;
+    r.incircle_tests += u.incircle_tests;
+    for (const UniformFinding& f : u.found)
+      (f.strict ? r.uniform_violations : r.uniform_ties).add(f.vertex, t, f.site, [&] {
+        return name("site", f.site) + (f.strict ? " is strictly inside" : " is exactly on") + " the circumellipse of " +
+               name("triangle", t) + " in the metric of " + name("vertex", f.vertex);
       });
-      if (violated) break;
-    }
   }
 }
 
@@ -206,7 +232,7 @@ CertifyReport certify_mesh(const Mesh<Rational>& mesh, const CertifyOptions& o) 
   const bool metrics = mesh.metrics.size() == mesh.sites.size();
   if (o.uniform && metrics) {
     r.uniform_checked = true;
-    check_uniform(m, tree, r);
+    check_uniform(m, tree, o.threads, r);
   }
   if ((o.rho0 || o.gamma0) && metrics) check_quality_bounds(m, o, r);
   if (o.metric && metrics) {

@@ -37,6 +37,7 @@ struct CertifyOptions {
   // How many witnesses of each list (and failures of `valid`) are described in full; every one is
   // counted and located whatever this is (witness_list.hpp). all_witnesses: every one.
   std::size_t described_witnesses = default_described_witnesses;
+  int threads = 0;  // for the locally uniform check (per triangle); 0: one per core
 };
 
 // Every list of witnesses holds at most one per triangle (per edge for lengths), and describes

@@ -7,7 +7,7 @@
 // Kept pieces are chained through vertical tangents into arcs.
 #include "oracle/algebraic/common_points.hpp"
 #include "oracle/diagram/build.hpp"
-#include "oracle/diagram/parallel.hpp"
+#include "oracle/parallel_for.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -125,7 +125,7 @@ PairArcs Builder::arcs_of_pair(std::size_t i) const {
       const Conic Fx{0, 0, 0, 2 * F.a, F.b, F.d};
       if (p.sign_of(Fx) == Sign::zero) {  // singular: the two lines of a line-pair bisector cross
         const Nearest n = nearest(p, v, {w});
-        const bool kept = !n.closer && !domain_position(d_.sheared, p).outside();
+        const bool kept = !n.closer && !domain_position(p).outside();
         add_cut(p, kept ? pending(Node::Kind::singular, p, n.owners) : -1, false);
         cuts.back().on_upper = cuts.back().on_lower = true;
       } else {
@@ -170,7 +170,7 @@ PairArcs Builder::arcs_of_pair(std::size_t i) const {
       const Rational xm = rational_between(a.at, b.at);
       if (side != 0 && disc.sign_at(xm) != Sign::positive) continue;  // no branch between a and b
       const LocatedPoint s = branch.at(xm, width_);
-      const DomainPosition pos = domain_position(d_.sheared, s);
+      const DomainPosition pos = domain_position(s);
       if (!pos.inside) continue;
       const Nearest n = nearest(s, v, {w});
       if (n.closer) continue;

@@ -1,10 +1,12 @@
 #pragma once
 // Internal to the oracle: the pieces of work compute_diagram is made of, shared by its files.
+#include "oracle/algebraic/common_points.hpp"
 #include "oracle/diagram/candidate_subdivision.hpp"
 #include "oracle/diagram/diagram.hpp"
 #include "numbers/filter_interval.hpp"
 
 #include <map>
+#include <memory>
 #include <optional>
 
 namespace anisocert::oracle::build {
@@ -16,7 +18,22 @@ struct DomainPosition {
   int corner = -1;
   bool outside() const { return !inside && edges.empty(); }
 };
-DomainPosition domain_position(const Mesh<Rational>& sheared, const LocatedPoint& p);
+// Ω's edges, ready for many position tests: each edge's x-range and line, enclosed, and exactly.
+class DomainEdges {
+ public:
+  explicit DomainEdges(const Mesh<Rational>& sheared);
+  DomainPosition position(const LocatedPoint& p) const;
+
+ private:
+  struct Edge {
+    Rational xl, xr;             // its x-range
+    FilterInterval xl_box, xr_box;
+    Conic line;                  // positive on its left
+    IntervalConic line_box;
+    Point2<Rational> a;          // its first end, a corner
+  };
+  std::vector<Edge> edges_;
+};
 
 // The nearest sites of p, given that site v is among the closest candidates: `closer` is true when
 // some site is strictly closer than v (then `owners` is empty), otherwise `owners` are all sites
@@ -87,6 +104,8 @@ class Builder {
   int threads_;
   // The subdivision is of the input's coordinates; the oracle works in sheared ones.
   CandidateSets cand_;
+  std::optional<DomainEdges> domain_;
+  DomainPosition domain_position(const LocatedPoint& p) const { return domain_->position(p); }
   FilterInterval shear_;
   IntervalBox sheared_box(const BoxBounds& b) const;                // x' = x + s·y
   std::vector<int> sites_near(const LocatedPoint& p) const;        // cand_.sites_near at x = x' − s·y
@@ -97,6 +116,9 @@ class Builder {
   std::vector<int> wide_nodes_;
   Rational width_;                                   // box width for located points
   std::vector<std::array<anisocert::FilterInterval, 6>> distance_;  // Q_u as interval conics
+  std::shared_ptr<const Mesh<Rational>> sheared_;  // for the recipes of filtered points (outlives d_)
+  // F_ab and F_ac: enclosed from the distances' enclosures, built exactly on demand.
+  CurvePair bisectors(int a, int b, int c) const;
   std::map<std::pair<int, int>, std::vector<int>> nodes_of_pair_;
   // germs per node, in counter-clockwise order (diagram_faces.cpp)
   struct Germ {

@@ -1,8 +1,8 @@
 #include "oracle/diagram/build.hpp"
+#include "oracle/parallel_for.hpp"
 
 #include <chrono>
 #include <cmath>
-#include <thread>
 
 namespace anisocert::oracle {
 
@@ -13,12 +13,23 @@ IntervalBox Builder::sheared_box(const BoxBounds& b) const {
   return {FilterInterval{b.x_lo, b.x_hi} + shear_ * y, y};
 }
 
+CurvePair Builder::bisectors(int a, int b, int c) const {
+  const auto minus = [&](int u, int v) {
+    const auto& p = distance_[static_cast<std::size_t>(u)];
+    const auto& q = distance_[static_cast<std::size_t>(v)];
+    return IntervalConic{p[0] - q[0], p[1] - q[1], p[2] - q[2], p[3] - q[3], p[4] - q[4], p[5] - q[5]};
+  };
+  return {minus(a, b), minus(a, c), [in = sheared_, a, b, c] {
+            return std::pair{bisector_conic(*in, a, b), bisector_conic(*in, a, c)};
+          }};
+}
+
 std::vector<int> Builder::sites_near(const LocatedPoint& p) const { return cand_.sites_near(p.x - shear_ * p.y, p.y); }
 
 Builder::Builder(Diagram& d, const DiagramOptions& options)
     : d_(d),
       progress_(options.progress),
-      threads_(options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))) {}
+      threads_(thread_count(options.threads)) {}
 
 void Builder::run() {
   using clock = std::chrono::steady_clock;
@@ -38,6 +49,8 @@ void Builder::run() {
 
   d_.shear = choose_shear(d_.input, cand_.pairs);
   d_.sheared = shear_input(d_.input, d_.shear);
+  sheared_ = std::make_shared<const Mesh<Rational>>(d_.sheared);
+  domain_.emplace(d_.sheared);
   shear_ = FilterInterval::around(d_.shear);
   Rational extent = 1;
   for (const auto& p : d_.sheared.domain) extent = std::max({extent, abs(p.x), abs(p.y)});

@@ -243,7 +243,7 @@ void Builder::build_faces() {
     if (const HalfEdge& e = d_.half_edges[h]; e.boundary >= 0)
       boundary_half_edges_of_site[static_cast<std::size_t>(d_.boundary[e.boundary].site)].push_back(h);
   auto home_of = [&](int s, const LocatedPoint& site) {
-    if (domain_position(d_.sheared, site).edges.empty()) return innermost(s, site, -1);
+    if (domain_position(site).edges.empty()) return innermost(s, site, -1);
     for (int h : boundary_half_edges_of_site[static_cast<std::size_t>(s)]) {
       const HalfEdge& e = d_.half_edges[h];
       const Span span = spans_of(d_, e)[0];

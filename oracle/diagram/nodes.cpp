@@ -4,7 +4,7 @@
 // subdivision (candidate_subdivision.hpp: the triples include every vertex's owners).
 #include "oracle/algebraic/common_points.hpp"
 #include "oracle/diagram/build.hpp"
-#include "oracle/diagram/parallel.hpp"
+#include "oracle/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,18 +13,33 @@
 namespace anisocert::oracle::build {
 
 
-DomainPosition domain_position(const Mesh<Rational>& sh, const LocatedPoint& p) {
-  DomainPosition pos;
+DomainEdges::DomainEdges(const Mesh<Rational>& sh) {
   const std::size_t m = sh.domain.size();
-  int crossings = 0;
   for (std::size_t k = 0; k < m; ++k) {
     const Point2<Rational>& a = sh.domain[k];
     const Point2<Rational>& b = sh.domain[(k + 1) % m];
-    const Rational& xl = std::min(a.x, b.x);
-    const Rational& xr = std::max(a.x, b.x);
-    const Sign lo = compare_x(p, xl), hi = compare_x(p, xr);
-    if (lo == Sign::negative || hi == Sign::positive) continue;  // outside the edge's x-range
-    const Sign side = Branch{line_conic(a, b), 0}.compare_point(p);
+    const Conic line = line_conic(a, b);
+    const Rational xl = std::min(a.x, b.x), xr = std::max(a.x, b.x);
+    edges_.push_back({xl, xr, FilterInterval::around(xl), FilterInterval::around(xr), line, IntervalConic::around(line), a});
+  }
+}
+
+DomainPosition DomainEdges::position(const LocatedPoint& p) const {
+  DomainPosition pos;
+  int crossings = 0;
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const Edge& e = edges_[k];
+    if (p.x.hi < e.xl_box.lo || e.xr_box.hi < p.x.lo) continue;  // outside the edge's x-range
+    const Sign lo = compare_x(p, e.xl), hi = compare_x(p, e.xr);
+    if (lo == Sign::negative || hi == Sign::positive) continue;
+    // The side of the line (non-vertical: G = e·(y − y_line)): the box first, then exactly.
+    const IntervalConic& g = e.line_box;
+    const FilterInterval value = g.d * p.x + g.e * p.y + g.f;
+    Sign side;
+    if (const auto s = value.sign(); s && *s != Sign::zero && (g.e.lo > 0 || g.e.hi < 0))
+      side = (*s == Sign::positive) == (g.e.lo > 0) ? Sign::positive : Sign::negative;
+    else
+      side = Branch{e.line, 0}.compare_point(p);
     if (side == Sign::zero) {
       pos.edges.push_back(static_cast<int>(k));
       continue;
@@ -32,7 +47,7 @@ DomainPosition domain_position(const Mesh<Rational>& sh, const LocatedPoint& p) 
     if (lo != Sign::negative && hi == Sign::negative && side == Sign::negative) ++crossings;  // [xl, xr), above p
   }
   for (int k : pos.edges) {  // a corner lies on two edges
-    const Point2<Rational>& a = sh.domain[k];
+    const Point2<Rational>& a = edges_[static_cast<std::size_t>(k)].a;
     if (same_point(p, LocatedPoint::rational(a.x, a.y))) pos.corner = k;
   }
   pos.inside = pos.edges.empty() && crossings % 2 == 1;
@@ -82,7 +97,7 @@ int Builder::register_node(Node::Kind kind, const LocatedPoint& p, const std::ve
     if (static_cast<int>(kind) < static_cast<int>(n.kind)) n.kind = kind;  // voronoi < … < corner
     return i;
   }
-  const DomainPosition pos = domain_position(d_.sheared, p);
+  const DomainPosition pos = domain_position(p);
   Node n{kind, p, owners, pos.edges, pos.corner};
   d_.nodes.push_back(std::move(n));
   const int id = static_cast<int>(d_.nodes.size()) - 1;
@@ -112,9 +127,9 @@ void Builder::add_corners() {
 std::vector<VertexCandidate> Builder::vertices_of_triple(std::size_t i, std::size_t& candidate_points) const {
   const auto& t = cand_.triples[i];
   std::vector<VertexCandidate> out;
-  const Conic A = bisector_conic(d_.sheared, t[0], t[1]), B = bisector_conic(d_.sheared, t[0], t[2]);
-  CommonPoints x = common_points(A, B, sheared_box(cand_.triple_region[i]), width_);
+  CommonPoints x = common_points(bisectors(t[0], t[1], t[2]), sheared_box(cand_.triple_region[i]), width_);
   if (x.shared_component) {
+    const Conic A = bisector_conic(d_.sheared, t[0], t[1]), B = bisector_conic(d_.sheared, t[0], t[2]);
     // A = G·H1, B = G·H2: the three sites tie along the line G (declined only if that tie is
     // part of D|Ω); the isolated common points are those of H1 and H2.
     const std::optional<Conic> G = common_line(A, B);
@@ -132,7 +147,7 @@ std::vector<VertexCandidate> Builder::vertices_of_triple(std::size_t i, std::siz
     ++candidate_points;
     Nearest n = nearest(p, t[0], {t[1], t[2]});
     if (n.closer) continue;
-    if (domain_position(d_.sheared, p).outside()) continue;
+    if (domain_position(p).outside()) continue;
     out.push_back({std::move(p), std::move(n.owners)});
   }
   return out;

@@ -104,7 +104,7 @@ void Builder::decline_if_tied_on_line(int a, int b, int c, const Conic& G) const
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (compare_x(cuts[i], cuts[i + 1]) != Sign::negative) continue;
     const LocatedPoint p = line.at(rational_between(cuts[i], cuts[i + 1]), width_);
-    if (!domain_position(d_.sheared, p).inside) continue;
+    if (!domain_position(p).inside) continue;
     const Nearest n = nearest(p, a, {b, c});
     if (!n.closer)
       throw std::domain_error("sites " + std::to_string(a) + ", " + std::to_string(b) + " and " + std::to_string(c) +

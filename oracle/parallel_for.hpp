@@ -1,6 +1,6 @@
 #pragma once
-// Independent pieces of work on every core (issue 14): candidate triples and candidate pairs do
-// not depend on each other. body(i) runs for every i in [0, n), on `threads` threads taking
+// Independent pieces of work on every core (issue 14): the diagram's candidate triples and pairs,
+// the certifier's triangles. body(i) runs for every i in [0, n), on `threads` threads taking
 // indices in small chunks; each thread decides with its own filter context (the caller's
 // `exact_only`), and the counts are added to the caller's at the end. Results go to slots indexed
 // by i, so the caller combines them in index order and the output does not depend on the number
@@ -16,7 +16,12 @@
 #include <thread>
 #include <vector>
 
-namespace anisocert::oracle::build {
+namespace anisocert::oracle {
+
+// The number of threads for a request of `threads` (0: one per core).
+inline int thread_count(int threads) {
+  return threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
 
 // `progress(done)` is called now and then, never by two threads at once.
 template <class Body>
@@ -62,4 +67,4 @@ void parallel_for(std::size_t n, int threads, Body body, const std::function<voi
   if (failure) std::rethrow_exception(failure);
 }
 
-}  // namespace anisocert::oracle::build
+}  // namespace anisocert::oracle
