@@ -9,7 +9,11 @@
 //   vertices_float/N           the baseline: for every candidate triple, Newton's method in
 //                              doubles from the centre of the triple's region on the two bisectors,
 //                              and the nearest sites at the point in doubles (no certification)
+//   vertices_certified/N       the same with the filtered path's isolation: every common point in
+//                              the triple's region, certified in intervals (certified_roots.hpp),
+//                              and the nearest sites in intervals (no exact fallback, no nodes)
 // Run: build/bin/diagram_bench (figures in docs/bench.md); peak memory: /usr/bin/time -v.
+#include "oracle/algebraic/certified_roots.hpp"
 #include "oracle/diagram/candidate_subdivision.hpp"
 #include "oracle/diagram/diagram.hpp"
 
@@ -130,9 +134,58 @@ void vertices_float(benchmark::State& state) {
   state.counters["triples"] = static_cast<double>(cand.triples.size());
 }
 
+// Q_v in intervals, from the exact site and metric.
+IntervalConic distance_enclosure(const Mesh<Rational>& in, int v) {
+  using anisocert::FilterInterval;
+  const FilterInterval x = FilterInterval::around(in.sites[v].x), y = FilterInterval::around(in.sites[v].y);
+  const FilterInterval m11 = FilterInterval::around(in.metrics[v].m11), m12 = FilterInterval::around(in.metrics[v].m12),
+                       m22 = FilterInterval::around(in.metrics[v].m22), two(2);
+  return {m11, two * m12, m22, FilterInterval(-2) * (m11 * x + m12 * y), FilterInterval(-2) * (m12 * x + m22 * y),
+          m11 * x * x + two * m12 * x * y + m22 * y * y};
+}
+
+void vertices_certified(benchmark::State& state) {
+  using anisocert::FilterInterval;
+  const Mesh<Rational> in = random_input(static_cast<int>(state.range(0)), 2026);
+  const CandidateSets cand = candidate_sets(in);
+  std::vector<IntervalConic> q;
+  for (int v = 0; v < static_cast<int>(in.sites.size()); ++v) q.push_back(distance_enclosure(in, v));
+  const auto minus = [](const IntervalConic& p, const IntervalConic& s) {
+    return IntervalConic{p.a - s.a, p.b - s.b, p.c - s.c, p.d - s.d, p.e - s.e, p.f - s.f};
+  };
+  const auto value = [](const IntervalConic& g, const FilterInterval& x, const FilterInterval& y) {
+    return g.a * x * x + g.b * x * y + g.c * y * y + g.d * x + g.e * y + g.f;
+  };
+  std::size_t found = 0, undecided = 0;
+  for (auto _ : state) {
+    found = undecided = 0;
+    for (std::size_t i = 0; i < cand.triples.size(); ++i) {
+      const auto& t = cand.triples[i];
+      const auto& r = cand.triple_region[i];
+      const auto roots = certified_common_roots(minus(q[t[0]], q[t[1]]), minus(q[t[0]], q[t[2]]),
+                                                {{r.x_lo, r.x_hi}, {r.y_lo, r.y_hi}});
+      if (!roots) {
+        ++undecided;
+        continue;
+      }
+      for (const IntervalBox& b : *roots) {
+        const FilterInterval qa = value(q[t[0]], b.x, b.y);
+        bool closer = false;
+        for (int u : cand.sites_near(b.x, b.y)) closer = closer || value(q[u], b.x, b.y).hi < qa.lo;
+        found += closer ? 0 : 1;
+      }
+    }
+    benchmark::DoNotOptimize(found);
+  }
+  state.counters["points"] = static_cast<double>(found);
+  state.counters["undecided_triples"] = static_cast<double>(undecided);
+  state.counters["triples"] = static_cast<double>(cand.triples.size());
+}
+
 }  // namespace
 
 BENCHMARK(diagram)->ArgsProduct({{200, 1000, 4000, 16000}, {1, 2}})->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
 BENCHMARK(diagram_exact_only)->Arg(200)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(vertices_float)->Arg(200)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMillisecond);
+BENCHMARK(vertices_certified)->Arg(200)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();
