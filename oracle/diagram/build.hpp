@@ -37,7 +37,8 @@ class DomainEdges {
 
 // The nearest sites of p, given that site v is among the closest candidates: `closer` is true when
 // some site is strictly closer than v (then `owners` is empty), otherwise `owners` are all sites
-// at v's distance, sorted.
+// at v's distance, sorted. Exact for p in Ω's bounding box (the sites are looked for in the
+// subdivision's leaves around p); every caller drops points outside Ω whatever the answer.
 struct Nearest {
   bool closer = false;
   std::vector<int> owners;

@@ -129,7 +129,7 @@ CandidateSets candidate_sets(const Mesh<Rational>& in, int max_depth) {
 std::vector<int> CandidateSets::sites_near(const FilterInterval& x, const FilterInterval& y) const {
   std::vector<int> out;
   const BoxBounds& root = cells[0].box;
-  if (!(x.lo >= root.x_lo && x.hi <= root.x_hi && y.lo >= root.y_lo && y.hi <= root.y_hi)) {
+  if (x.hi < root.x_lo || root.x_hi < x.lo || y.hi < root.y_lo || root.y_hi < y.lo) {  // wholly outside Ω's box
     out.resize(static_cast<std::size_t>(sites));
     for (int i = 0; i < sites; ++i) out[static_cast<std::size_t>(i)] = i;
     return out;

@@ -35,8 +35,9 @@ struct CandidateSets {
   std::size_t boxes = 0, leaves = 0;
   int max_depth_reached = 0;
 
-  // The candidates of the leaves meeting [x] × [y], sorted; every site when the box is not
-  // inside the root box.
+  // The candidates of the leaves meeting [x] × [y], sorted: they hold every nearest site of each
+  // point of the box that lies in the root box (Ω's bounding box), but not necessarily of the
+  // points outside it, which are outside Ω. Every site when the box misses the root box.
   std::vector<int> sites_near(const FilterInterval& x, const FilterInterval& y) const;
 
   // The subdivision: cells[0] is the root; a split cell's four children are consecutive.
