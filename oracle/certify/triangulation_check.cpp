@@ -196,10 +196,13 @@ class EdgeGrid {
     return {std::nextafter(std::min(p.x, q.x), -inf), std::nextafter(std::max(p.x, q.x), inf),
             std::nextafter(std::min(p.y, q.y), -inf), std::nextafter(std::max(p.y, q.y), inf)};
   }
+  // Non-decreasing in v, as the bucketing needs. When hi − lo overflows (coordinates near the
+  // doubles' limit) f is 0 or NaN, and every v falls in cell 0: one bucket, slower but complete.
   std::size_t cell(double v, double lo, double hi) const {
     if (!(hi > lo)) return 0;
     const double f = (v - lo) / (hi - lo) * static_cast<double>(side_);
-    return f <= 0 ? 0 : std::min(side_ - 1, static_cast<std::size_t>(f));
+    if (!(f > 0)) return 0;
+    return f >= static_cast<double>(side_) ? side_ - 1 : static_cast<std::size_t>(f);
   }
   std::size_t cell_x(double v) const { return cell(v, x0_, x1_); }
   std::size_t cell_y(double v) const { return cell(v, y0_, y1_); }
