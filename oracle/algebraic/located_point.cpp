@@ -80,30 +80,29 @@ bool same_point(const LocatedPoint& p, const LocatedPoint& q) {
   return same_point(p.exact(), q.exact());
 }
 
-Sign compare_x(const LocatedPoint& p, const LocatedPoint& q) {
-  if (p.copy_of(q)) {
+namespace {
+
+// sign(p.c − q.c) for the coordinate c (box `box`, exact comparison `exact`): copies are equal,
+// apart boxes are ordered, and the rest is compared exactly.
+Sign compare_coordinate(const LocatedPoint& p, const LocatedPoint& q, FilterInterval LocatedPoint::*box,
+                        Sign (*exact)(const AlgebraicPoint&, const AlgebraicPoint&)) {
+  const FilterInterval &a = p.*box, &b = q.*box;
+  if (p.copy_of(q) || a.hi < b.lo || b.hi < a.lo) {
     ++counts().comparisons_filtered;
-    return Sign::zero;
-  }
-  if (p.x.hi < q.x.lo || q.x.hi < p.x.lo) {
-    ++counts().comparisons_filtered;
-    return p.x.hi < q.x.lo ? Sign::negative : Sign::positive;
+    return p.copy_of(q) ? Sign::zero : a.hi < b.lo ? Sign::negative : Sign::positive;
   }
   ++counts().comparisons_exact;
-  return compare_x(p.exact(), q.exact());
+  return exact(p.exact(), q.exact());
+}
+
+}  // namespace
+
+Sign compare_x(const LocatedPoint& p, const LocatedPoint& q) {
+  return compare_coordinate(p, q, &LocatedPoint::x, &compare_x);
 }
 
 Sign compare_y(const LocatedPoint& p, const LocatedPoint& q) {
-  if (p.copy_of(q)) {
-    ++counts().comparisons_filtered;
-    return Sign::zero;
-  }
-  if (p.y.hi < q.y.lo || q.y.hi < p.y.lo) {
-    ++counts().comparisons_filtered;
-    return p.y.hi < q.y.lo ? Sign::negative : Sign::positive;
-  }
-  ++counts().comparisons_exact;
-  return compare_y(p.exact(), q.exact());
+  return compare_coordinate(p, q, &LocatedPoint::y, &compare_y);
 }
 
 Sign compare_x(const LocatedPoint& p, const Rational& x0) {
