@@ -29,13 +29,8 @@ struct Curve {
         ed(mid(G.e)), fd(mid(G.f)) {}
   I gx(const I& x, const I& y) const { return I(2) * a * x + b * y + d; }
   I gy(const I& x, const I& y) const { return b * x + I(2) * c * y + e; }
-  // The natural extension intersected with the mean value form at the centre m.
-  I value(const I& x, const I& y) const {
-    const I natural = a * square(x) + b * x * y + c * square(y) + d * x + e * y + f;
-    const double mx = mid(x), my = mid(y);
-    const I centred = at(mx, my) + gx(x, y) * (x - I(mx)) + gy(x, y) * (y - I(my));
-    return {std::max(natural.lo, centred.lo), std::min(natural.hi, centred.hi)};
-  }
+  // The natural interval extension on [x] × [y].
+  I natural(const I& x, const I& y) const { return a * square(x) + b * x * y + c * square(y) + d * x + e * y + f; }
   I at(double x, double y) const {
     const I X(x), Y(y);
     return a * X * X + b * X * Y + c * Y * Y + d * X + e * Y + f;
@@ -59,29 +54,44 @@ class Solver {
   static constexpr int max_depth = 48;
   static constexpr int max_boxes = 4000;
 
+  // F at a point m of X, and the Jacobian J over X: what the tests on X share.
+  struct Linearisation {
+    double mx, my;
+    I fa, fb, j00, j01, j10, j11;
+  };
+  Linearisation linearise(const IntervalBox& X) const {
+    const double mx = mid(X.x), my = mid(X.y);
+    return {mx, my, A_.at(mx, my), B_.at(mx, my), A_.gx(X.x, X.y), A_.gy(X.x, X.y), B_.gx(X.x, X.y), B_.gy(X.x, X.y)};
+  }
+
   // 0 ∉ det J(H): F is one-to-one on H.
-  bool injective_on(const IntervalBox& H) const {
-    const I j00 = A_.gx(H.x, H.y), j01 = A_.gy(H.x, H.y), j10 = B_.gx(H.x, H.y), j11 = B_.gy(H.x, H.y);
-    return !contains_zero(j00 * j11 - j01 * j10);
+  static bool regular(const Linearisation& L) { return !contains_zero(L.j00 * L.j11 - L.j01 * L.j10); }
+  bool injective_on(const IntervalBox& H) const { return regular(linearise(H)); }
+
+  // 0 ∉ A(X) or 0 ∉ B(X), by the mean value form F(m) + J(X)(X − m) (each component's gradient
+  // at some point of the segment, which lies in X), then by the natural extension.
+  bool excluded(const IntervalBox& X, const Linearisation& L) const {
+    const I dx = X.x - I(L.mx), dy = X.y - I(L.my);
+    if (!contains_zero(L.fa + L.j00 * dx + L.j01 * dy) || !contains_zero(L.fb + L.j10 * dx + L.j11 * dy)) return true;
+    return !contains_zero(A_.natural(X.x, X.y)) || !contains_zero(B_.natural(X.x, X.y));
   }
 
   enum class Krawczyk { none, unique, undecided };
   // K(X) at the centre with C the inverse of the Jacobian of the doubles there; `out` receives
   // K(X) ∩ X.
-  Krawczyk krawczyk(const IntervalBox& X, IntervalBox& out) const {
-    const double mx = mid(X.x), my = mid(X.y);
+  Krawczyk krawczyk(const IntervalBox& X, IntervalBox& out) const { return krawczyk(X, linearise(X), out); }
+  Krawczyk krawczyk(const IntervalBox& X, const Linearisation& L, IntervalBox& out) const {
+    const double mx = L.mx, my = L.my;
     const double a00 = A_.approx_gx(mx, my), a01 = A_.approx_gy(mx, my), a10 = B_.approx_gx(mx, my),
                  a11 = B_.approx_gy(mx, my);
     const double det = a00 * a11 - a01 * a10;
     if (!(std::abs(det) > 0) || !std::isfinite(det)) return Krawczyk::undecided;
     const I c00(a11 / det), c01(-a01 / det), c10(-a10 / det), c11(a00 / det);
-    const I fa = A_.at(mx, my), fb = B_.at(mx, my);
-    const I j00 = A_.gx(X.x, X.y), j01 = A_.gy(X.x, X.y), j10 = B_.gx(X.x, X.y), j11 = B_.gy(X.x, X.y);
-    const I m00 = I(1) - (c00 * j00 + c01 * j10), m01 = I(0) - (c00 * j01 + c01 * j11);
-    const I m10 = I(0) - (c10 * j00 + c11 * j10), m11 = I(1) - (c10 * j01 + c11 * j11);
+    const I m00 = I(1) - (c00 * L.j00 + c01 * L.j10), m01 = I(0) - (c00 * L.j01 + c01 * L.j11);
+    const I m10 = I(0) - (c10 * L.j00 + c11 * L.j10), m11 = I(1) - (c10 * L.j01 + c11 * L.j11);
     const I dx = X.x - I(mx), dy = X.y - I(my);
-    const I kx = I(mx) - (c00 * fa + c01 * fb) + m00 * dx + m01 * dy;
-    const I ky = I(my) - (c10 * fa + c11 * fb) + m10 * dx + m11 * dy;
+    const I kx = I(mx) - (c00 * L.fa + c01 * L.fb) + m00 * dx + m01 * dy;
+    const I ky = I(my) - (c10 * L.fa + c11 * L.fb) + m10 * dx + m11 * dy;
     if (!std::isfinite(kx.lo) || !std::isfinite(kx.hi) || !std::isfinite(ky.lo) || !std::isfinite(ky.hi))
       return Krawczyk::undecided;
     if (kx.hi < X.x.lo || X.x.hi < kx.lo || ky.hi < X.y.lo || X.y.hi < ky.lo) return Krawczyk::none;
@@ -146,15 +156,16 @@ class Solver {
       failed_ = true;
       return;
     }
-    if (!contains_zero(A_.value(X.x, X.y)) || !contains_zero(B_.value(X.x, X.y))) return;
+    const Linearisation L = linearise(X);
+    if (excluded(X, L)) return;
     IntervalBox K;
-    const Krawczyk k = krawczyk(X, K);
+    const Krawczyk k = krawczyk(X, L, K);
     if (k == Krawczyk::none) return;
     if (k == Krawczyk::unique) {
       record(tighten(K));
       return;
     }
-    if (injective_on(X))
+    if (regular(L))
       if (const auto Y = newton_root(X); Y && injective_on({hull(X.x, Y->x), hull(X.y, Y->y)})) {
         record(tighten(*Y));  // the only root in X ∪ Y (X may hold none)
         return;
