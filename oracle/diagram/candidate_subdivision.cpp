@@ -38,6 +38,7 @@ std::pair<double, double> distance_bounds(const SiteBox& u, const BoxBounds& b) 
 struct Subdivider {
   std::vector<SiteBox> sites;
   int max_depth;
+  std::size_t max_boxes;  // a budget (about 120 boxes per site are usual)
   CandidateSets out;
   std::vector<std::pair<std::pair<int, int>, BoxBounds>> pairs;
   std::vector<std::pair<std::array<int, 3>, BoxBounds>> triples;
@@ -66,6 +67,10 @@ struct Subdivider {
     std::vector<int> cand;
     for (std::size_t i = 0; i < parent.size(); ++i)
       if (!(bounds[i].first > best_upper)) cand.push_back(parent[i]);
+    if (out.boxes > max_boxes)
+      throw std::domain_error("the candidate subdivision passed its budget of " + std::to_string(max_boxes) +
+                              " boxes: the sites' distances cannot be told apart in double precision (coordinates or "
+                              "metrics of very different magnitudes); such inputs are not supported yet");
     if (cand.size() <= 3 || depth >= max_depth) {
       record(std::move(cand), box, cell);
       return;
@@ -100,20 +105,53 @@ void merge_regions(std::vector<std::pair<Key, BoxBounds>>& records, std::vector<
 
 }  // namespace
 
+namespace {
+
+// v·2^k, rounded outward when the scaling is not exact (subnormal results).
+FilterInterval scaled(const FilterInterval& v, int k) {
+  return FilterInterval::widen(std::ldexp(v.lo, k), std::ldexp(v.hi, k));
+}
+
+// The k with 2^k·max|q| in [1, 2), for the largest |q| (0 when all are 0).
+int normalising_exponent(const std::vector<Rational>& values) {
+  Rational largest = 0;
+  for (const Rational& q : values) largest = std::max(largest, abs(q));
+  if (largest == 0) return 0;
+  const double d = largest.convert_to<double>();  // within the doubles' range: readers limit |q| to 2^±1100
+  return std::isfinite(d) && d > 0 ? -std::ilogb(d) : 0;
+}
+
+Rational times_power_of_two(const Rational& q, int k) {
+  const Rational p(Integer(1) << static_cast<unsigned>(k < 0 ? -k : k));
+  return k >= 0 ? q * p : q / p;
+}
+
+}  // namespace
+
 CandidateSets candidate_sets(const Mesh<Rational>& in, int max_depth) {
   Subdivider s;
   s.max_depth = max_depth;
+  s.max_boxes = 1000 * in.sites.size() + 100000;
+  // The subdivision works on coordinates scaled by 2^k and metrics scaled by 2^j, both chosen so
+  // that the largest is about 1: every squared distance is scaled by 2^(2k + j) alike, so who is
+  // closer is unchanged, and tiny or huge inputs (1e-300, 1e300) neither underflow nor overflow.
+  std::vector<Rational> coordinates, entries;
+  for (const auto& p : in.domain) coordinates.push_back(p.x), coordinates.push_back(p.y);
+  for (const auto& M : in.metrics) entries.push_back(M.m11), entries.push_back(M.m12), entries.push_back(M.m22);
+  const int k = normalising_exponent(coordinates), j = normalising_exponent(entries);
+  s.out.scale_exponent = k;
   for (std::size_t i = 0; i < in.sites.size(); ++i) {
     const auto& p = in.sites[i];
     const auto& M = in.metrics[i];
-    s.sites.push_back({FilterInterval::around(p.x), FilterInterval::around(p.y), FilterInterval::around(M.m11),
-                       FilterInterval::around(M.m12), FilterInterval::around(M.m22)});
+    s.sites.push_back({FilterInterval::around(times_power_of_two(p.x, k)), FilterInterval::around(times_power_of_two(p.y, k)),
+                       FilterInterval::around(times_power_of_two(M.m11, j)), FilterInterval::around(times_power_of_two(M.m12, j)),
+                       FilterInterval::around(times_power_of_two(M.m22, j))});
   }
   // The root box: the domain's bounding box, rounded outward.
   constexpr double inf = std::numeric_limits<double>::infinity();
   BoxBounds root{inf, -inf, inf, -inf};
   for (const auto& p : in.domain) {
-    const FilterInterval x = FilterInterval::around(p.x), y = FilterInterval::around(p.y);
+    const FilterInterval x = FilterInterval::around(times_power_of_two(p.x, k)), y = FilterInterval::around(times_power_of_two(p.y, k));
     root = {std::min(root.x_lo, x.lo), std::max(root.x_hi, x.hi), std::min(root.y_lo, y.lo), std::max(root.y_hi, y.hi)};
   }
   std::vector<int> all(in.sites.size());
@@ -123,10 +161,17 @@ CandidateSets candidate_sets(const Mesh<Rational>& in, int max_depth) {
   s.refine(all, root, 0, 0);
   merge_regions(s.triples, s.out.triples, s.out.triple_region);
   merge_regions(s.pairs, s.out.pairs, s.out.pair_region);
+  // The regions in the input's coordinates.
+  for (auto* regions : {&s.out.triple_region, &s.out.pair_region})
+    for (BoxBounds& b : *regions) {
+      const FilterInterval x = scaled({b.x_lo, b.x_hi}, -k), y = scaled({b.y_lo, b.y_hi}, -k);
+      b = {x.lo, x.hi, y.lo, y.hi};
+    }
   return s.out;
 }
 
-std::vector<int> CandidateSets::sites_near(const FilterInterval& x, const FilterInterval& y) const {
+std::vector<int> CandidateSets::sites_near(const FilterInterval& input_x, const FilterInterval& input_y) const {
+  const FilterInterval x = scaled(input_x, scale_exponent), y = scaled(input_y, scale_exponent);
   std::vector<int> out;
   const BoxBounds& root = cells[0].box;
   if (x.hi < root.x_lo || root.x_hi < x.lo || y.hi < root.y_lo || root.y_hi < y.lo) {  // wholly outside Ω's box

@@ -6,7 +6,8 @@
 // is certified by   min_B Q_u > max_B Q_t   on outward-rounded interval bounds of the centred
 // form Q(c + h) = Q(c) + 2(c − u)ᵀMh + hᵀMh. A dropped site therefore owns no point of B, so
 // every point of the diagram in B has all of its owners among B's candidates. The boxes are
-// refined while they have more than three candidates (up to a depth limit), and the leaves cover
+// refined while they have more than three candidates (up to a depth limit; past a budget of boxes,
+// the input is declined with std::domain_error, by name), and the leaves cover
 // the domain's bounding box. Hence (this is the completeness argument of docs/oracle.md):
 //  - every Voronoi vertex lies in a leaf whose candidates include all of its owners, so each of
 //    its owner triples is among `triples`;
@@ -40,7 +41,10 @@ struct CandidateSets {
   // points outside it, which are outside Ω. Every site when the box misses the root box.
   std::vector<int> sites_near(const FilterInterval& x, const FilterInterval& y) const;
 
-  // The subdivision: cells[0] is the root; a split cell's four children are consecutive.
+  // The subdivision, in the input's coordinates scaled by 2^scale_exponent (the regions above
+  // are in the input's coordinates): cells[0] is the root; a split cell's four children are
+  // consecutive.
+  int scale_exponent = 0;
   struct Cell {
     BoxBounds box;
     int first_child = -1;
