@@ -53,6 +53,12 @@ class Solver {
  private:
   static constexpr int max_depth = 48;
   static constexpr int max_boxes = 4000;
+  // Where to try a certification, not an answer: Newton stops when its step is below this share
+  // of the scale (about 5 ulps), and the trial box around its iterate has this relative radius
+  // (wide enough for the iterate's error, narrow enough for K(Y) ⊂ int Y). Other values change
+  // only how often the shortcut succeeds; what it returns is proved by Krawczyk's test.
+  static constexpr double newton_step_share = 1e-15;
+  static constexpr double trial_radius_share = 1e-10;
 
   // F at a point m of X, and the Jacobian J over X: what the tests on X share.
   struct Linearisation {
@@ -122,14 +128,16 @@ class Solver {
       const double sx = (a11 * fa - a01 * fb) / det, sy = (a00 * fb - a10 * fa) / det;
       x -= sx, y -= sy;
       if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
-      if (std::abs(sx) <= 1e-15 * (std::abs(x) + width(X.x)) && std::abs(sy) <= 1e-15 * (std::abs(y) + width(X.y))) break;
+      if (std::abs(sx) <= newton_step_share * (std::abs(x) + width(X.x)) &&
+          std::abs(sy) <= newton_step_share * (std::abs(y) + width(X.y)))
+        break;
     }
     // Outside X's neighbourhood the root says nothing about X.
     if (x < X.x.lo - width(X.x) || x > X.x.hi + width(X.x) || y < X.y.lo - width(X.y) || y > X.y.hi + width(X.y))
       return std::nullopt;
     // A small box on the scale of the search (a thin search box, e.g. along a horizontal edge,
     // must not make it thin too).
-    const double r = 1e-10 * (std::abs(x) + std::abs(y) + width(X.x) + width(X.y));
+    const double r = trial_radius_share * (std::abs(x) + std::abs(y) + width(X.x) + width(X.y));
     const IntervalBox Y{{x - r, x + r}, {y - r, y + r}};
     IntervalBox K;
     if (krawczyk(Y, K) != Krawczyk::unique) return std::nullopt;

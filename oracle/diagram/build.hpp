@@ -117,6 +117,7 @@ class Builder {
   std::vector<int> wide_nodes_;
   Rational width_;                                   // box width for located points
   std::vector<std::array<anisocert::FilterInterval, 6>> distance_;  // Q_u as interval conics
+  FilterInterval distance_at(int u, const LocatedPoint& p) const;  // Q_u on p's box
   std::shared_ptr<const Mesh<Rational>> sheared_;  // for the recipes of filtered points (outlives d_)
   // F_ab and F_ac: enclosed from the distances' enclosures, built exactly on demand.
   CurvePair bisectors(int a, int b, int c) const;

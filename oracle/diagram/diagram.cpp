@@ -13,6 +13,11 @@ IntervalBox Builder::sheared_box(const BoxBounds& b) const {
   return {FilterInterval{b.x_lo, b.x_hi} + shear_ * y, y};
 }
 
+FilterInterval Builder::distance_at(int u, const LocatedPoint& p) const {
+  const auto& c = distance_[static_cast<std::size_t>(u)];
+  return c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.y * p.y + c[3] * p.x + c[4] * p.y + c[5];
+}
+
 CurvePair Builder::bisectors(int a, int b, int c) const {
   const auto minus = [&](int u, int v) {
     const auto& p = distance_[static_cast<std::size_t>(u)];

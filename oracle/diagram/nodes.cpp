@@ -55,10 +55,7 @@ DomainPosition DomainEdges::position(const LocatedPoint& p) const {
 }
 
 Nearest Builder::nearest(const LocatedPoint& p, int v, const std::vector<int>& equal) const {
-  auto value = [&](int u) {
-    const auto& c = distance_[u];
-    return c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.y * p.y + c[3] * p.x + c[4] * p.y + c[5];
-  };
+  auto value = [&](int u) { return distance_at(u, p); };
   // Every nearest site of p is a candidate of the leaf holding p (candidate_subdivision.hpp).
   const std::vector<int> near = sites_near(p);
   if (!std::binary_search(near.begin(), near.end(), v)) return {true, {}};  // a site is strictly closer than v

@@ -43,8 +43,7 @@ Nearest Builder::nearest_rational(const LocatedPoint& p) const {
   int v = near[0];
   double best = std::numeric_limits<double>::infinity();
   for (int u : near) {
-    const auto& c = distance_[static_cast<std::size_t>(u)];
-    const double q = (c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.y * p.y + c[3] * p.x + c[4] * p.y + c[5]).hi;
+    const double q = distance_at(u, p).hi;
     if (q < best) best = q, v = u;
   }
   if (Nearest n = nearest(p, v); !n.closer) return n;
