@@ -23,18 +23,17 @@ double width(const I& a) { return a.hi - a.lo; }
 // A conic in intervals (coefficients enclosed) and in doubles (for Newton's iterates only).
 struct Curve {
   I a, b, c, d, e, f;
+  I a2, c2;  // 2a and 2c (doubling is exact)
   double ad, bd, cd, dd, ed, fd;
   explicit Curve(const IntervalConic& G)
-      : a(G.a), b(G.b), c(G.c), d(G.d), e(G.e), f(G.f), ad(mid(G.a)), bd(mid(G.b)), cd(mid(G.c)), dd(mid(G.d)),
-        ed(mid(G.e)), fd(mid(G.f)) {}
-  I gx(const I& x, const I& y) const { return I(2) * a * x + b * y + d; }
-  I gy(const I& x, const I& y) const { return b * x + I(2) * c * y + e; }
+      : a(G.a), b(G.b), c(G.c), d(G.d), e(G.e), f(G.f), a2(2 * G.a.lo, 2 * G.a.hi), c2(2 * G.c.lo, 2 * G.c.hi),
+        ad(mid(G.a)), bd(mid(G.b)), cd(mid(G.c)), dd(mid(G.d)), ed(mid(G.e)), fd(mid(G.f)) {}
+  I gx(const I& x, const I& y) const { return a2 * x + b * y + d; }
+  I gy(const I& x, const I& y) const { return b * x + c2 * y + e; }
   // The natural interval extension on [x] × [y].
   I natural(const I& x, const I& y) const { return a * square(x) + b * x * y + c * square(y) + d * x + e * y + f; }
-  I at(double x, double y) const {
-    const I X(x), Y(y);
-    return a * X * X + b * X * Y + c * Y * Y + d * X + e * Y + f;
-  }
+  // At a point, in Horner's form (a x + b y + d) x + (c y + e) y + f.
+  I at(double x, double y) const { return (a * x + b * y + d) * x + (c * y + e) * y + f; }
   double approx(double x, double y) const { return ad * x * x + bd * x * y + cd * y * y + dd * x + ed * y + fd; }
   double approx_gx(double x, double y) const { return 2 * ad * x + bd * y + dd; }
   double approx_gy(double x, double y) const { return bd * x + 2 * cd * y + ed; }
@@ -92,9 +91,9 @@ class Solver {
                  a11 = B_.approx_gy(mx, my);
     const double det = a00 * a11 - a01 * a10;
     if (!(std::abs(det) > 0) || !std::isfinite(det)) return Krawczyk::undecided;
-    const I c00(a11 / det), c01(-a01 / det), c10(-a10 / det), c11(a00 / det);
-    const I m00 = I(1) - (c00 * L.j00 + c01 * L.j10), m01 = I(0) - (c00 * L.j01 + c01 * L.j11);
-    const I m10 = I(0) - (c10 * L.j00 + c11 * L.j10), m11 = I(1) - (c10 * L.j01 + c11 * L.j11);
+    const double c00 = a11 / det, c01 = -a01 / det, c10 = -a10 / det, c11 = a00 / det;
+    const I m00 = I(1) - (c00 * L.j00 + c01 * L.j10), m01 = -(c00 * L.j01 + c01 * L.j11);
+    const I m10 = -(c10 * L.j00 + c11 * L.j10), m11 = I(1) - (c10 * L.j01 + c11 * L.j11);
     const I dx = X.x - I(mx), dy = X.y - I(my);
     const I kx = I(mx) - (c00 * L.fa + c01 * L.fb) + m00 * dx + m01 * dy;
     const I ky = I(my) - (c10 * L.fa + c11 * L.fb) + m10 * dx + m11 * dy;
