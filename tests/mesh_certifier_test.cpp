@@ -33,6 +33,22 @@ TEST(MeshCertifier, RadiusEdgeRatioAgainstTheClosedForm) {
   EXPECT_NEAR(r.worst_rho, 0.70710678118, 1e-9);
 }
 
+// At the bound exactly: ρ ≤ ρ₀ holds with equality, which is no violation. The right triangle
+// (0,0), (4,0), (0,3) under M = I has circumradius 5/2 (half its hypotenuse, Thales) and shortest
+// edge 3, so ratio 5/6 exactly; any ρ₀ below it is violated.
+TEST(MeshCertifier, RadiusEdgeRatioExactlyAtTheBoundIsNoViolation) {
+  Mesh<Rational> m;
+  m.sites = {{0, 0}, {4, 0}, {0, 3}};
+  m.metrics.assign(3, {1, 0, 1});
+  m.domain = m.sites;
+  m.triangles = {{0, 1, 2}};
+  CertifyOptions o;
+  o.rho0 = Rational(5, 6);
+  EXPECT_TRUE(certify_mesh(m, o).rho_violations.empty());
+  o.rho0 = Rational(5, 6) - Rational(1, 1000000000000);
+  EXPECT_EQ(certify_mesh(m, o).rho_violations.count(), 1u);  // one witness per triangle
+}
+
 // Closed form: τ(I, 4I) = 2 (LS: the largest stretch between the two unit balls).
 TEST(MeshCertifier, DistortionAgainstTheClosedForm) {
   Mesh<Rational> m = fan(Rational(1, 2), Rational(1, 3));

@@ -1,6 +1,7 @@
 // Metrics: exact positive-definiteness with errors naming the failing entry, LDLᵀ, the
-// normalized metric of LS §9; and exact number parsing of doubles.
+// normalized metric of LS §9, the distortion's exact form; and exact number parsing of doubles.
 
+#include "predicates/distortion.hpp"
 #include "predicates/metric.hpp"
 
 #include <gtest/gtest.h>
@@ -92,4 +93,21 @@ TEST(NumberTypes, DoublesAreTheRationalsTheyDenote) {
   EXPECT_THROW(anisocert::rational_from_double(std::numeric_limits<double>::infinity()), anisocert::NumberSyntaxError);
   EXPECT_THROW(Metric2::from_doubles(1, std::nan(""), 1), anisocert::NumberSyntaxError);
   EXPECT_THROW(Metric2::from_doubles(1, 0, -1e-300), NotPositiveDefinite);
+}
+
+// τ² = (B + √D)/m against the closed form τ(P, Q)² = the largest eigenvalue of P⁻¹Q and of Q⁻¹P
+// (LS §3: the most either unit ball stretches into the other), for diagonal metrics of different
+// determinants, in both orders: P = I, Q = diag(4, 9) gives max(9, 1) = 9; P = diag(2, 1),
+// Q = diag(1, 8) gives max(8, 2) = 8. D is a square in both, so the value is rational.
+TEST(Distortion, TauSquaredAgainstTheClosedForm) {
+  const struct {
+    Sym2<Rational> P, Q;
+    Rational root_of_D, tau2;
+  } cases[] = {{{1, 0, 1}, {4, 0, 9}, 5, 9}, {{2, 0, 1}, {1, 0, 8}, 15, 8}};
+  for (const auto& c : cases)
+    for (const auto& [P, Q] : {std::pair{c.P, c.Q}, std::pair{c.Q, c.P}}) {
+      const TauSquared t = tau_squared(P, Q);
+      EXPECT_EQ(t.D, c.root_of_D * c.root_of_D);
+      EXPECT_EQ((t.B + c.root_of_D) / t.m, c.tau2);
+    }
 }

@@ -7,6 +7,7 @@
 #include "oracle/diagram/diagram.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
 #include "predicates/orientation.hpp"
+#include "refiners/star/gift_wrap.hpp"
 #include "refiners/star/star_refiner.hpp"
 
 #include <gtest/gtest.h>
@@ -122,6 +123,33 @@ TEST(StarRefiner, ShareOfTrianglesThatAreTheLabelleShewchukDual) {
         EXPECT_TRUE(mesh.count(t)) << "dual triangle " << t[0] << " " << t[1] << " " << t[2] << " is not in the mesh";
       }
     }
+  }
+}
+
+// LU Lemma 4.1 needs every boundary angle > 90° in the metric; a right angle is not. Under
+// M = 100 I (the angles of M = I, at mesh size 1/10) the unit square's four corners are right
+// angles (e₁ᵀMe₂ = 0), all reported, and the octagon's eight corners (135°) none.
+TEST(StarRefiner, CornersWhereLemma41FailsAreReported) {
+  const auto isotropic = fields::make_field("constant", {{"m11", 100}, {"m12", 0}, {"m22", 100}});
+  RefineParameters p;
+  p.max_vertices = 2000, p.max_seconds = 5;
+  const RefineResult square = refiners::star::refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, isotropic, p);
+  EXPECT_EQ(square.acute_corners, (std::vector<int>{0, 1, 2, 3}));
+  const RefineResult octagon = refiners::star::refine_star(
+      {{1, -0.5}, {1, 0.5}, {0.5, 1}, {-0.5, 1}, {-1, 0.5}, {-1, -0.5}, {-0.5, -1}, {0.5, -1}}, isotropic, p);
+  EXPECT_TRUE(octagon.acute_corners.empty());
+}
+
+// The gift wrap's tie rule (gift_wrap.hpp): the corners of a square are cocircular under M = I,
+// so from p = (0,0) and u = (1,0) both (1,1) and (0,1) lie on the circle through p and u. The
+// next Delaunay neighbour counter-clockwise is the nearer in angle, (1,1), whichever candidate
+// comes first; clockwise from u = (0,1) it is (1,1) too.
+TEST(StarRefiner, CocircularTieGoesToTheNearerAngle) {
+  const std::vector<predicates::Point2<double>> pts = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const predicates::Sym2<double> I{1, 0, 1};
+  for (const std::vector<int>& cand : {std::vector<int>{1, 2, 3}, std::vector<int>{1, 3, 2}}) {
+    EXPECT_EQ(refiners::star::next_delaunay_neighbour(pts[0], I, 1, cand, true, pts), 2);
+    EXPECT_EQ(refiners::star::next_delaunay_neighbour(pts[0], I, 3, cand, false, pts), 2);
   }
 }
 
