@@ -90,6 +90,14 @@ def mask(line, in_block):
     return "".join(out), in_block
 
 
+def stops_operand(code, i):
+    """Whether the character at i ends an operand: a comma, a semicolon, ? or a lone : (not ::)."""
+    c = code[i]
+    if c == ":":
+        return code[i - 1:i] != ":" and code[i + 1:i + 2] != ":"
+    return c in ",;?"
+
+
 def operand_end(code, start):
     """Where the operand that starts at `start` ends: at depth 0, before && or ||, a comma, a
     semicolon, an unmatched closing bracket, ? or :."""
@@ -102,7 +110,7 @@ def operand_end(code, start):
             if depth == 0:
                 return i
             depth -= 1
-        elif depth == 0 and (code.startswith(" && ", i) or code.startswith(" || ", i) or c in ",;?:"):
+        elif depth == 0 and (code.startswith(" && ", i) or code.startswith(" || ", i) or stops_operand(code, i)):
             return i
         i += 1
     return i
@@ -119,7 +127,7 @@ def operand_start(code, end):
             if depth == 0:
                 return i + 1
             depth -= 1
-        elif depth == 0 and (code[max(0, i - 3):i + 1] in (" && ", " || ") or c in ",;?:" or code.startswith("return ", i)
+        elif depth == 0 and (code[max(0, i - 3):i + 1] in (" && ", " || ") or stops_operand(code, i) or code.startswith("return ", i)
                              or (c == "=" and code[i - 1:i] not in "=<>!" and code[i + 1:i + 2] != "=")):
             return i + (7 if code.startswith("return ", i) else 1)
         i -= 1
@@ -134,6 +142,8 @@ SWAPS = [(" < ", " <= ", "boundary"), (" <= ", " < ", "boundary"), (" > ", " >= 
 INTEGER = re.compile(r"(?<![\w.])(?<!e-)(?<!e\+)(\d+)(?![\w.])")
 FLOATING = re.compile(r"(?<![\w.])(\d+\.\d*(?:e[-+]?\d+)?|\d+e[-+]?\d+)(?![\w.])")
 CALL2 = re.compile(r"\b(\w+)\(([A-Za-z_][\w.]*), ([A-Za-z_][\w.]*)\)")
+# Functions whose two arguments commute: swapping them is an equivalent mutant by construction.
+SYMMETRIC = {"min", "max", "hull", "ordered", "gcd", "swap", "same_double"}
 GUARD = re.compile(r"^(\s*)if \((.*)\) (return\b|continue;|break;|throw\b)")
 SKIP = re.compile(r"^\s*(#|namespace\b|using\b|static_assert\b|template\b|//|\}?\s*$|case\b)")
 
@@ -153,7 +163,7 @@ def mutants_of_line(code, original):
     for m in FLOATING.finditer(code):
         found.append(("constant", original[:m.start()] + "(2 * " + m.group(1) + ")" + original[m.end():]))
     for m in CALL2.finditer(code):
-        if m.group(2) != m.group(3):
+        if m.group(2) != m.group(3) and m.group(1) not in SYMMETRIC:
             found.append(("swap", original[:m.start(2)] + m.group(3) + ", " + m.group(2) + original[m.end(3):]))
     for m in re.finditer(r" (&&|\|\|) ", code):
         left = operand_start(code, m.start())
