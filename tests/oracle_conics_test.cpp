@@ -2,7 +2,9 @@
 // hand in the comment), and exact signs at the intersection points, including the trap that
 // CGAL 5.5's Algebraic_kernel_d_2::Sign_at_2 falls into (DESIGN.md § Numbers).
 
+#include "oracle/algebraic/common_points.hpp"
 #include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/algebraic/shared_line.hpp"
 
 #include <gtest/gtest.h>
 
@@ -137,4 +139,35 @@ TEST(RealAlgebraic, HugeMagnitudesPrintQuickly) {
   const auto r = real_roots(Polynomial(std::vector<Rational>{-2 * big, 0, 1}));
   ASSERT_EQ(r.size(), 2u);
   EXPECT_EQ(r[1].decimal(10), "1.414213562e5000");
+}
+
+// Two bisectors of a property test's case (LS_T7, seed 16030698392319408430) that share the line
+// y = −4: A = x·(y/10 + 2/5) + 253/1400 y² + 317/700 y − 27/25 and
+// B = 39/400 y² + 61/200 y − 17/50 = (39/400)(y + 4)(y − 34/39). Their one isolated common point
+// is (307/273, 34/39) (A at y = 34/39 is linear in x). The certified search finds it in a box
+// away from the line; building it exactly must not ask the intersection, which reports the
+// shared component, for a point it does not list.
+TEST(SharedLine, IsolatedPointOfCurvesSharingALineIsBuiltFromItsCertifiedBox) {
+  const Conic A{0, Rational(1, 10), Rational(253, 1400), Rational(2, 5), Rational(317, 700), Rational(-27, 25)};
+  const Conic B{0, 0, Rational(39, 400), 0, Rational(61, 200), Rational(-17, 50)};
+  EXPECT_TRUE(intersect(A, B).shared_component);
+  const std::optional<Conic> G = common_line(A, B);
+  ASSERT_TRUE(G.has_value());
+  EXPECT_EQ((*G)(5, -4), 0);
+  EXPECT_EQ((*G)(-3, -4), 0);
+  const auto is = [](const RealAlgebraic& v, const Rational& q) { return compare(v, RealAlgebraic::rational(q)) == Sign::zero; };
+  const std::vector<AlgebraicPoint> isolated = isolated_common_points(A, B);
+  ASSERT_EQ(isolated.size(), 1u);
+  EXPECT_TRUE(is(isolated[0].x(), Rational(307, 273)) && is(isolated[0].y(), Rational(34, 39)));
+  const CommonPoints found = common_points(A, B, {{1, 1.25}, {0.75, 1}}, Rational(1, 1000000));
+  ASSERT_FALSE(found.shared_component);
+  ASSERT_EQ(found.points.size(), 1u);
+  const AlgebraicPoint& p = found.points[0].exact();
+  EXPECT_TRUE(is(p.x(), Rational(307, 273)) && is(p.y(), Rational(34, 39)));
+}
+
+// Proportional conics share everything: no isolated point, and no error.
+TEST(SharedLine, ProportionalConicsHaveNoIsolatedPoint) {
+  const Conic A{1, 0, 1, 0, 0, -1}, B{2, 0, 2, 0, 0, -2};
+  EXPECT_TRUE(isolated_common_points(A, B).empty());
 }

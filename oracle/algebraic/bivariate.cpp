@@ -29,4 +29,10 @@ Bivariate Conic::polynomial() const {
   return p;
 }
 
+Conic line_conic(const predicates::Point2<Rational>& a, const predicates::Point2<Rational>& b) {
+  // orient(a, b, p) = (bx − ax)(py − ay) − (by − ay)(px − ax)
+  const Rational dx = b.x - a.x, dy = b.y - a.y;
+  return {0, 0, 0, -dy, dx, dy * a.x - dx * a.y};
+}
+
 }  // namespace anisocert::oracle

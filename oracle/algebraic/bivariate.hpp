@@ -3,6 +3,7 @@
 // special case a x² + b xy + c y² + d x + e y + f (LS Proposition 2: bisectors are conics).
 
 #include "numbers/rational.hpp"
+#include "predicates/point.hpp"
 
 #include <map>
 #include <utility>
@@ -26,5 +27,8 @@ struct Conic {
     return a * x * x + b * x * y + c * y * y + d * x + e * y + f;
   }
 };
+
+// The line through a and b as a degree-1 conic: positive on the left of a → b.
+Conic line_conic(const predicates::Point2<Rational>& a, const predicates::Point2<Rational>& b);
 
 }  // namespace anisocert::oracle

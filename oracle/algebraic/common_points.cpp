@@ -1,6 +1,7 @@
 #include "oracle/algebraic/common_points.hpp"
 
 #include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/algebraic/shared_line.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -43,9 +44,11 @@ CommonPoints common_points(const CurvePair& curves, const IntervalBox& search, c
   for (const IntervalBox& box : *boxes)
     // The box holds exactly one common point, and the other common points lie outside it.
     out.points.emplace_back(box, std::make_shared<const LocatedPoint::Recipe>([build, box] {
+      // Isolated points only: the certified box's point is one, and curves that share a line
+      // (which the exact intersection reports as a shared component) have some.
       const auto [A, B] = (*build)();
-      for (const IntersectionPoint& ip : intersect(A, B).points)
-        if (inside(ip.point, box)) return ip.point;
+      for (const AlgebraicPoint& p : isolated_common_points(A, B))
+        if (inside(p, box)) return p;
       throw std::logic_error("common_points: no exact common point in a certified box");
     }));
   std::sort(out.points.begin(), out.points.end(), [](const LocatedPoint& p, const LocatedPoint& q) {

@@ -20,7 +20,11 @@ struct CurvePair {
 };
 
 // Every common point of the curves in `search`, perhaps with some beyond it (the exact path gives
-// them all). Exact points' boxes are refined below `width`.
+// them all). Exact points' boxes are refined below `width`. Curves that share a component: the
+// exact path reports `shared_component` (no points), and so does the filtered path when the
+// shared curve meets `search` (no box along it can be certified or excluded, so it falls back);
+// when the shared curve misses `search`, the filtered path gives the isolated points in `search`,
+// the same points a caller finds from the shared line (shared_line.hpp).
 CommonPoints common_points(const CurvePair& curves, const IntervalBox& search, const Rational& width);
 CommonPoints common_points(const Conic& A, const Conic& B, const IntervalBox& search, const Rational& width);
 

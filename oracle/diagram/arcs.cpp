@@ -6,6 +6,7 @@
 // consecutive cuts of a branch the status is constant, so one exact sample decides the piece.
 // Kept pieces are chained through vertical tangents into arcs.
 #include "oracle/algebraic/common_points.hpp"
+#include "oracle/algebraic/shared_line.hpp"
 #include "oracle/diagram/build.hpp"
 #include "oracle/parallel_for.hpp"
 

@@ -134,10 +134,6 @@ class Builder {
   friend Location oracle::locate(const Diagram& d, const Point2<Rational>& p);
 };
 
-// F = L·Q for a non-vertical line L dividing the conic F; the line shared by two conics.
-Conic line_quotient(const Conic& F, const Conic& L);
-std::optional<Conic> common_line(const Conic& A, const Conic& B);
-
 
 // Ray casting: whether p (not on the cycle) is inside the closed walk of cycle c.
 bool cycle_contains(const Diagram& d, int c, const LocatedPoint& p);

@@ -13,12 +13,6 @@ Conic bisector_conic(const Mesh<Rational>& in, int v, int w) {
   return {a.a - b.a, a.b - b.b, a.c - b.c, a.d - b.d, a.e - b.e, a.f - b.f};
 }
 
-Conic line_conic(const Point2<Rational>& a, const Point2<Rational>& b) {
-  // orient(a, b, p) = (bx − ax)(py − ay) − (by − ay)(px − ax)
-  const Rational dx = b.x - a.x, dy = b.y - a.y;
-  return {0, 0, 0, -dy, dx, dy * a.x - dx * a.y};
-}
-
 Conic wedge_form(const Mesh<Rational>& in, int from, int to) {
   const Point2<Rational>& v = in.sites[from];
   const Point2<Rational>& w = in.sites[to];

@@ -27,8 +27,6 @@ using geometry::Mesh;
 Conic distance_conic(const Point2<Rational>& v, const Sym2<Rational>& M);
 // F_vw = Q_v − Q_w: negative where v is strictly closer, positive where w is.
 Conic bisector_conic(const Mesh<Rational>& in, int v, int w);
-// The line through a and b as a degree-1 conic: positive on the left of a → b.
-Conic line_conic(const Point2<Rational>& a, const Point2<Rational>& b);
 // LS Definition 2: the two linear forms whose positivity defines wedge(v, w):
 //   toward_w(q) = (q − v)ᵀ M_v (w − v),  toward_v(q) = (q − w)ᵀ M_w (v − w).
 Conic wedge_form(const Mesh<Rational>& in, int from, int to);

@@ -3,6 +3,7 @@
 // two bisector conics (LS Proposition 2) for every candidate triple of the certified
 // subdivision (candidate_subdivision.hpp: the triples include every vertex's owners).
 #include "oracle/algebraic/common_points.hpp"
+#include "oracle/algebraic/shared_line.hpp"
 #include "oracle/diagram/build.hpp"
 #include "oracle/parallel_for.hpp"
 

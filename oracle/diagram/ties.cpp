@@ -4,6 +4,7 @@
 // handles them exactly and declines by name only when the tie is part of D|Ω (a cell boundary
 // running along ∂Ω, or three cells meeting along a curve), which the face structure does not model.
 #include "oracle/algebraic/common_points.hpp"
+#include "oracle/algebraic/shared_line.hpp"
 #include "oracle/diagram/build.hpp"
 
 #include <algorithm>
@@ -11,30 +12,6 @@
 #include <stdexcept>
 
 namespace anisocert::oracle::build {
-
-// F = L·Q for a line L = d x + e y + f with e ≠ 0 that divides the conic F.
-Conic line_quotient(const Conic& F, const Conic& L) {
-  if (is_line(F)) return {0, 0, 0, 0, 0, F.e / L.e};
-  const Rational q = F.c / L.e, p = (F.b - L.d * q) / L.e, r = (F.e - L.f * q) / L.e;
-  return {0, 0, 0, p, q, r};
-}
-
-// The rational line shared by two conics that share a component and are not proportional: the
-// common root of their restrictions to two vertical lines x = t (each a quadratic in y, since no
-// sheared curve is vertical), or nothing when every restriction has both roots in common.
-std::optional<Conic> common_line(const Conic& A, const Conic& B) {
-  std::vector<Point2<Rational>> on;
-  for (int t = 0; t < 8 && on.size() < 2; ++t) {
-    const Rational x(t * 3 + 1, 7);
-    auto restrict = [&](const Conic& C) {
-      return Polynomial(std::vector<Rational>{C.a * x * x + C.d * x + C.f, C.b * x + C.e, C.c});
-    };
-    const Polynomial g = gcd(restrict(A), restrict(B));
-    if (g.degree() == 1) on.push_back({x, -g.coefficient(0) / g.coefficient(1)});
-  }
-  if (on.size() < 2) return std::nullopt;
-  return line_conic(on[0], on[1]);
-}
 
 Nearest Builder::nearest_rational(const LocatedPoint& p) const {
   const std::vector<int> near = sites_near(p);  // they hold every nearest site
