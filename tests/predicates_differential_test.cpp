@@ -410,6 +410,10 @@ TEST(SqrtSign, HandCheckedCases) {
   EXPECT_EQ(sign_of_root_sum(-3, 1, 9), Sign::zero);
   EXPECT_EQ(sign_of_root_sum(5, -2, 6), Sign::positive);  // 25 > 24
   EXPECT_EQ(sign_of_root_sum(5, 1, 0, -1, 25), Sign::zero);
+  // Two terms of the same sign and equal magnitude add up, they do not cancel: √2 + √2 > 0,
+  // −1 − √1 < 0 (a mutant that compared magnitudes here answered 0).
+  EXPECT_EQ(sign_of_root_sum(0, 1, 2, 1, 2), Sign::positive);
+  EXPECT_EQ(sign_of_root_sum(-1, 0, 0, -1, 1), Sign::negative);
 }
 
 TEST(BadInput, NonFiniteInputsAreNamed) {
