@@ -3,10 +3,14 @@
 // CGAL 5.5's Algebraic_kernel_d_2::Sign_at_2 falls into (DESIGN.md § Numbers).
 
 #include "oracle/algebraic/common_points.hpp"
+#include "oracle/algebraic/certified_roots.hpp"
 #include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/algebraic/polynomial.hpp"
 #include "oracle/algebraic/shared_line.hpp"
 
 #include <gtest/gtest.h>
+
+#include <limits>
 
 using anisocert::parse_rational;
 using anisocert::Rational;
@@ -170,4 +174,22 @@ TEST(SharedLine, IsolatedPointOfCurvesSharingALineIsBuiltFromItsCertifiedBox) {
 TEST(SharedLine, ProportionalConicsHaveNoIsolatedPoint) {
   const Conic A{1, 0, 1, 0, 0, -1}, B{2, 0, 2, 0, 0, -2};
   EXPECT_TRUE(isolated_common_points(A, B).empty());
+}
+
+// A guard no other test reached (a survivor of issue 18's mutation campaign): dividing by the zero
+// polynomial is an error, not a read of its undefined leading coefficient.
+TEST(Polynomial, DivisionByZeroIsAnError) {
+  EXPECT_THROW(divide(Polynomial(std::vector<Rational>{1, 2}), Polynomial(std::vector<Rational>{})), std::domain_error);
+}
+
+// A search box with an infinite side is left to the exact path (no certified answer), whichever
+// side it is.
+TEST(CertifiedRoots, SearchBoxWithAnInfiniteSideIsLeftToTheExactPath) {
+  const double inf = std::numeric_limits<double>::infinity();
+  // x² + y² − 1 and x − y: two common points, (±1/√2, ±1/√2).
+  const IntervalConic A = IntervalConic::around({1, 0, 1, 0, 0, -1}), B = IntervalConic::around({0, 0, 0, 1, -1, 0});
+  ASSERT_TRUE(certified_common_roots(A, B, {{-2, 2}, {-2, 2}}).has_value());
+  for (const IntervalBox& box : {IntervalBox{{-inf, 2}, {-2, 2}}, IntervalBox{{-2, inf}, {-2, 2}},
+                                 IntervalBox{{-2, 2}, {-inf, 2}}, IntervalBox{{-2, 2}, {-2, inf}}})
+    EXPECT_FALSE(certified_common_roots(A, B, box).has_value());
 }
