@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace {
 
 using anisocert::Rational;
@@ -78,6 +80,33 @@ TEST(MeshCertifier, ValidFanIsLocallyUniformAndTheSquareCentreIsATie) {
   EXPECT_TRUE(r.uniform_violations.empty());
   EXPECT_EQ(r.uniform_ties.count(), 2u);  // each triangle's circumcircle holds the fourth corner (one witness each)
   for (const MeshWitness& w : r.uniform_ties.described()) EXPECT_EQ(w.site, w.triangle == 0 ? 3 : 1);
+}
+
+// A tie does not hide a violation: the circumcircle of the triangle (0,0), (1,0), (1,1) passes
+// through the corner (0,1) and holds the site (1/5, 4/5) strictly inside ((3/10)² + (3/10)² < 1/2),
+// so that triangle is a violation whichever of the two sites the search meets first. The
+// configuration is turned four ways and mirrored, so that the search meets them in both orders.
+TEST(MeshCertifier, TieFoundFirstDoesNotHideAViolation) {
+  for (int mirror = 0; mirror < 2; ++mirror)
+    for (int turn = 0; turn < 4; ++turn) {
+      Mesh<Rational> m;
+      m.sites = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {Rational(1, 5), Rational(4, 5)}};
+      m.triangles = {{0, 1, 2}, {0, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+      for (auto& p : m.sites) {
+        for (int k = 0; k < turn; ++k) p = {1 - p.y, p.x};  // a quarter turn about (1/2, 1/2)
+        if (mirror) p.x = 1 - p.x;
+      }
+      if (mirror)
+        for (auto& t : m.triangles) std::swap(t[1], t[2]);  // counter-clockwise again
+      m.metrics.assign(5, {1, 0, 1});
+      m.domain = {m.sites[0], m.sites[1], m.sites[2], m.sites[3]};
+      if (mirror) std::reverse(m.domain.begin(), m.domain.end());
+      const CertifyReport r = certify_mesh(m, {});
+      SCOPED_TRACE("turn " + std::to_string(turn) + (mirror ? ", mirrored" : ""));
+      EXPECT_TRUE(r.valid_holds());
+      const auto strict = r.uniform_violations.described();
+      EXPECT_TRUE(std::any_of(strict.begin(), strict.end(), [](const MeshWitness& w) { return w.triangle == 0 && w.site == 4; }));
+    }
 }
 
 // A quadrilateral split by its long diagonal: the other vertex is inside the circumcircle.
