@@ -130,6 +130,15 @@ TEST(CliMesh, RefineThenCertify) {
   EXPECT_EQ(run("certify /nonexistent/mesh.json").exit_code, 2);
   EXPECT_EQ(run("refine --field spiral").exit_code, 2);
   EXPECT_EQ(run("refine --gamma0 0.5").exit_code, 2);
+  // Each of the star refiner's parameters just outside its range (LU §4.1: ρ₀ > 0, γ₀ > 1,
+  // 0 < δ < 1, β > 0; a size > 0) is refused by name, with nothing written.
+  for (const char* bad : {"--rho0 0", "--rho0 -1", "--gamma0 1", "--delta 0", "--delta 1", "--beta 0", "--beta -2", "--size 0",
+                          "--size -1"}) {
+    const Outcome r = run(std::string("refine --quiet -o ") + base + "_never.json " + bad);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find(std::string(bad) + " is out of range"), std::string::npos) << bad << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(base + "_never.json")) << bad;
+  }
 }
 
 }  // namespace
