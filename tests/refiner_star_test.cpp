@@ -128,7 +128,9 @@ TEST(StarRefiner, ShareOfTrianglesThatAreTheLabelleShewchukDual) {
 
 // LU Lemma 4.1 needs every boundary angle > 90° in the metric; a right angle is not. Under
 // M = 100 I (the angles of M = I, at mesh size 1/10) the unit square's four corners are right
-// angles (e₁ᵀMe₂ = 0), all reported, and the octagon's eight corners (135°) none.
+// angles (e₁ᵀMe₂ = 0), all reported, and the octagon's eight corners (135°) none, nor the
+// pentagon's five (each obtuse: the dot products of its edge vectors are −2, −2, −1/4, −7/4, −1/4;
+// an odd count of corners also tells the previous corner's index apart from a wrapped one).
 TEST(StarRefiner, CornersWhereLemma41FailsAreReported) {
   const auto isotropic = fields::make_field("constant", {{"m11", 100}, {"m12", 0}, {"m22", 100}});
   RefineParameters p;
@@ -138,6 +140,8 @@ TEST(StarRefiner, CornersWhereLemma41FailsAreReported) {
   const RefineResult octagon = refiners::star::refine_star(
       {{1, -0.5}, {1, 0.5}, {0.5, 1}, {-0.5, 1}, {-1, 0.5}, {-1, -0.5}, {-0.5, -1}, {0.5, -1}}, isotropic, p);
   EXPECT_TRUE(octagon.acute_corners.empty());
+  const RefineResult pentagon = refiners::star::refine_star({{0, 0}, {2, 0}, {3, 1.5}, {1, 3}, {-1, 1.5}}, isotropic, p);
+  EXPECT_TRUE(pentagon.acute_corners.empty());
 }
 
 // The gift wrap's tie rule (gift_wrap.hpp): the corners of a square are cocircular under M = I,
