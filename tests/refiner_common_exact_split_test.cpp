@@ -2,6 +2,7 @@
 // checked point by point in rational arithmetic (every point a + k(b − a)/2ʲ a double), and an
 // exact midpoint lies exactly on the segment.
 #include "numbers/rational.hpp"
+#include "refiners/common/domain.hpp"
 #include "refiners/common/exact_split.hpp"
 
 #include <gtest/gtest.h>
@@ -100,6 +101,24 @@ TEST(ExactSplit, MidpointIsExactlyOnTheSegmentOrRefused) {
   }
   EXPECT_GT(given, 500);
   EXPECT_GT(refused, 80);
+}
+
+// A domain is accepted exactly when every edge can be halved min_halvings = 30 times. Closed form
+// (the count's formula 53 − E + t_d, exact_split.cpp): from 0 to 1 + 2⁻²² the magnitude has E = 1
+// and the difference's last bit is 2⁻²², so 53 − 1 − 22 = 30 halvings: accepted, at the bound;
+// to 1 + 2⁻²³, 29: refused, naming the count.
+TEST(ExactSplit, DomainAtTheHalvingBoundIsAccepted) {
+  using anisocert::refiners::common::Domain;
+  const double at = 1 + std::ldexp(1.0, -22), below = 1 + std::ldexp(1.0, -23);
+  EXPECT_EQ(exact_halvings({0, 0}, {at, 0}), 30);
+  EXPECT_EQ(exact_halvings({0, 0}, {below, 0}), 29);
+  EXPECT_NO_THROW(Domain({{0, 0}, {at, 0}, {0, 1}}));
+  try {
+    Domain({{0, 0}, {below, 0}, {0, 1}});
+    ADD_FAILURE() << "a domain edge with 29 exact halvings was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("only 29 times (30 needed"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
