@@ -67,6 +67,8 @@ TEST(ExactSplit, ClosedForms) {
   EXPECT_EQ(exact_halvings({0, 0}, {0x1p-1074, 0}), 0);
   EXPECT_EQ(exact_halvings({0, 0}, {0x1p-1070, 0}), 4);  // multiples of 2⁻¹⁰⁷⁴ below 2⁻¹⁰⁷⁰
   EXPECT_EQ(exact_halvings({0, 0}, {INFINITY, 0}), 0);
+  EXPECT_EQ(exact_halvings({INFINITY, 0}, {INFINITY, 1}), 0);  // equal but not finite: no halving
+  EXPECT_EQ(exact_halvings({NAN, 0}, {1, 1}), 0);
   EXPECT_EQ(exact_halvings({-0x1p1023, 0}, {0x1p1023, 0}), 0);
   EXPECT_FALSE(exact_midpoint({0, 0}, {0x1p-1074, 0}));
   EXPECT_FALSE(exact_midpoint({0, 0}, {NAN, 0}));
