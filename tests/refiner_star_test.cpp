@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <random>
 #include <set>
@@ -154,6 +156,27 @@ TEST(StarRefiner, CocircularTieGoesToTheNearerAngle) {
   for (const std::vector<int>& cand : {std::vector<int>{1, 2, 3}, std::vector<int>{1, 3, 2}}) {
     EXPECT_EQ(refiners::star::next_delaunay_neighbour(pts[0], I, 1, cand, true, pts), 2);
     EXPECT_EQ(refiners::star::next_delaunay_neighbour(pts[0], I, 3, cand, false, pts), 2);
+  }
+}
+
+// The trace's insertion radius (LU Lemmas 4.1–4.4 bound it from below) is the M-distance from the
+// new site to the nearest earlier one, in the new site's metric. The site grid finds it by rings of
+// cells with an early stop; brute force over every earlier site, with the same double arithmetic,
+// must give the same double.
+TEST(StarRefiner, TraceNearestDistanceIsTheNearestEarlierSite) {
+  RefineParameters p;
+  p.max_vertices = 600, p.max_seconds = 5;
+  const RefineResult r = refiners::star::refine_star({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, fields::make_field("shock", {}), p);
+  const auto& x = r.mesh.sites;
+  const std::size_t first = x.size() - r.trace.size();  // the corners come before the insertions
+  ASSERT_GT(r.trace.size(), 100u);
+  for (std::size_t i = 0; i < r.trace.size(); ++i) {
+    const std::size_t k = first + i;
+    ASSERT_EQ(x[k].x, r.trace[i].x);
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < k; ++j)
+      best = std::min(best, predicates::quadratic_form(r.mesh.metrics[k], x[j].x - x[k].x, x[j].y - x[k].y));
+    EXPECT_EQ(r.trace[i].nearest_distance, std::sqrt(best)) << "insertion " << i;
   }
 }
 
