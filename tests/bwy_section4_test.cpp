@@ -58,8 +58,20 @@ TEST(BWY_S42, ViolatorFactorJustAboveOneIsDefined) {
   EXPECT_TRUE(f.violator->certainly_positive());
 }
 
+// A bracket of γ_max must have the left-hand side ≤ 1 at its low end and ≥ 1 at its high end. For
+// B = 2 the sign change lies near 1.0003 (above): [1, 11/10] holds it; [2, 2] does not, since the
+// left-hand side at 2 is 34992 > 1 at both ends; nor does [1, 1] (0 at both ends).
+TEST(BWY_L2, GammaMaxBracketNeedsTheSignChange) {
+  EXPECT_TRUE(bwy_lemma2_gamma_max_bracket_verified(Rational(2), Rational(1), Rational(11, 10)));
+  EXPECT_FALSE(bwy_lemma2_gamma_max_bracket_verified(Rational(2), Rational(2), Rational(2)));
+  EXPECT_FALSE(bwy_lemma2_gamma_max_bracket_verified(Rational(2), Rational(1), Rational(1)));
+  EXPECT_FALSE(bwy_lemma2_gamma_max_bracket_verified(Rational(2), Rational(11, 10), Rational(1)));
+}
+
 TEST(BWY_L2, GammaMaxNeedsBAboveOne) {
   EXPECT_THROW(bwy_lemma2_gamma_max(Rational(1), 128), std::invalid_argument);
   EXPECT_THROW(bwy_s42_conditions(Rational(1), Rational(1)), std::invalid_argument);
   EXPECT_THROW(bwy_s42_conditions(Rational(2), Rational(99, 100)), std::invalid_argument);
+  EXPECT_THROW(bwy_s42_factors(Rational(1), Rational(1), 128), std::invalid_argument);
+  EXPECT_THROW(bwy_s42_factors(Rational(2), Rational(99, 100), 128), std::invalid_argument);
 }
