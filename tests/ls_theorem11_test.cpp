@@ -2,6 +2,7 @@
 
 #include "numbers/decimal_enclosure.hpp"
 #include "theory/ls_theorem11.hpp"
+#include "theory/sign_change_root.hpp"
 
 #include <gtest/gtest.h>
 
@@ -102,4 +103,21 @@ TEST(LS_T11, BracketCheckRejectsWrongBrackets) {
   EXPECT_FALSE(ls_t11_gamma_bracket_verified(Rational(10), hi, lo, prec));               // reversed
   EXPECT_FALSE(ls_t11_gamma_bracket_verified(Rational(11), lo, hi, prec));               // another θ
   EXPECT_FALSE(ls_t11_gamma_bracket_verified(Rational(10), Rational(6, 5), Rational(13, 10), prec));
+}
+
+// The root finder behind γ(θ) and BWY's γ_max needs a < b with f(a) < 0 < f(b), each part
+// checked: f(x) = 4/3 − x is −2/3 at 2 and 1/3 at 1, so the reversed bracket [2, 1] has the signs
+// the ends need and must still be refused, as [1, 2] must be (f(1) > 0).
+TEST(LS_T11, SignChangeNeedsAnOrderedBracketWithTheSigns) {
+  const auto f = [](const Interval& x) { return Interval(Rational(4, 3), 64) - x; };
+  for (const auto& [a, b] : {std::pair{Rational(2), Rational(1)}, std::pair{Rational(1), Rational(2)}}) {
+    try {
+      enclose_sign_change(f, a, b, 64);
+      ADD_FAILURE() << "bracket [" << a << ", " << b << "] accepted";
+    } catch (const std::logic_error& e) {
+      EXPECT_NE(std::string(e.what()).find("no certified sign change"), std::string::npos) << e.what();
+    }
+  }
+  const auto g = [](const Interval& x) { return x - Interval(Rational(4, 3), 64); };  // 4/3 is no bisection point
+  EXPECT_TRUE(enclose_sign_change(g, Rational(1), Rational(2), 64).inside(Rational(1333, 1000), Rational(1334, 1000)));
 }
