@@ -120,4 +120,8 @@ TEST(LS_T11, SignChangeNeedsAnOrderedBracketWithTheSigns) {
   }
   const auto g = [](const Interval& x) { return x - Interval(Rational(4, 3), 64); };  // 4/3 is no bisection point
   EXPECT_TRUE(enclose_sign_change(g, Rational(1), Rational(2), 64).inside(Rational(1333, 1000), Rational(1334, 1000)));
+  // The bracket test itself: both ends' signs are needed (g(5/4) = −1/12 < 0).
+  EXPECT_TRUE(brackets_sign_change(g, Rational(1), Rational(2), 64));
+  EXPECT_FALSE(brackets_sign_change(g, Rational(1), Rational(5, 4), 64));
+  EXPECT_FALSE(brackets_sign_change(g, Rational(3, 2), Rational(2), 64));
 }
