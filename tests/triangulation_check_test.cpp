@@ -12,19 +12,17 @@ namespace {
 using anisocert::Rational;
 using namespace anisocert::oracle;
 
-anisocert::geometry::Mesh<Rational> pentagon() {
+// The convex pentagon (0,0), (2,0), (3,2), (1,3), (−1,2) as the domain, with one cell through its
+// corners in the given order, checked.
+TriangulationCheck check_one_cell(const std::vector<int>& order) {
   anisocert::geometry::Mesh<Rational> m;
   m.sites = {{0, 0}, {2, 0}, {3, 2}, {1, 3}, {-1, 2}};  // convex, counter-clockwise
   m.metrics.assign(5, {1, 0, 1});
   m.domain = m.sites;
-  return m;
-}
-
-CellList one_cell(const std::vector<int>& sites) {
   CellList c;
-  c.add(sites.data(), sites.size());
+  c.add(order.data(), order.size());
   c.name = [](std::size_t k) { return "cell " + std::to_string(k); };
-  return c;
+  return check_triangulation(EnclosedMesh(m), c);
 }
 
 bool names_non_convex(const TriangulationCheck& t) {
@@ -33,9 +31,7 @@ bool names_non_convex(const TriangulationCheck& t) {
 }
 
 TEST(TriangulationCheck, ConvexPentagonIsACell) {
-  const auto m = pentagon();
-  const EnclosedMesh e(m);
-  const TriangulationCheck t = check_triangulation(e, one_cell({0, 1, 2, 3, 4}));
+  const TriangulationCheck t = check_one_cell({0, 1, 2, 3, 4});
   EXPECT_TRUE(t.is_triangulation);
   EXPECT_FALSE(names_non_convex(t));
 }
@@ -44,9 +40,7 @@ TEST(TriangulationCheck, ConvexPentagonIsACell) {
 // direction turns twice around: not strictly convex, and said so (it fails other checks too: its
 // edges are not the domain's).
 TEST(TriangulationCheck, PentagramTurningLeftEverywhereIsNotConvex) {
-  const auto m = pentagon();
-  const EnclosedMesh e(m);
-  const TriangulationCheck t = check_triangulation(e, one_cell({0, 2, 4, 1, 3}));
+  const TriangulationCheck t = check_one_cell({0, 2, 4, 1, 3});
   EXPECT_FALSE(t.is_triangulation);
   EXPECT_TRUE(names_non_convex(t));
   ASSERT_FALSE(t.bad_cells.empty());
