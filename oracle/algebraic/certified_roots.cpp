@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace anisocert::oracle {
 namespace {
@@ -52,12 +53,10 @@ class Solver {
  private:
   static constexpr int max_depth = 48;
   static constexpr int max_boxes = 4000;
-  // Where to try a certification, not an answer: Newton stops when its step is below this share
-  // of the scale (about 5 ulps), and the trial box around its iterate has this relative radius
-  // (wide enough for the iterate's error, narrow enough for K(Y) ⊂ int Y). Other values change
-  // only how often the shortcut succeeds; what it returns is proved by Krawczyk's test.
-  static constexpr double newton_step_share = 1e-15;
-  static constexpr double trial_radius_share = 1e-10;
+  // Newton's iterates in doubles stop improving at rounding level: a step of at most this many
+  // units in the last place of the search's scale ends the iteration. Where the iteration stops
+  // decides only where a certification is tried; what is returned is proved by Krawczyk's test.
+  static constexpr double rounding_ulps = 4;
 
   // F at a point m of X, and the Jacobian J over X: what the tests on X share.
   struct Linearisation {
@@ -81,16 +80,14 @@ class Solver {
     return !contains_zero(A_.natural(X.x, X.y)) || !contains_zero(B_.natural(X.x, X.y));
   }
 
-  enum class Krawczyk { none, unique, undecided };
-  // K(X) at the centre with C the inverse of the Jacobian of the doubles there; `out` receives
-  // K(X) ∩ X.
-  Krawczyk krawczyk(const IntervalBox& X, IntervalBox& out) const { return krawczyk(X, linearise(X), out); }
-  Krawczyk krawczyk(const IntervalBox& X, const Linearisation& L, IntervalBox& out) const {
+  // K(X) at the centre with C the inverse of the Jacobian of the doubles there, if C exists and
+  // K(X) is finite.
+  std::optional<IntervalBox> krawczyk_image(const IntervalBox& X, const Linearisation& L) const {
     const double mx = L.mx, my = L.my;
     const double a00 = A_.approx_gx(mx, my), a01 = A_.approx_gy(mx, my), a10 = B_.approx_gx(mx, my),
                  a11 = B_.approx_gy(mx, my);
     const double det = a00 * a11 - a01 * a10;
-    if (!(std::abs(det) > 0) || !std::isfinite(det)) return Krawczyk::undecided;
+    if (!(std::abs(det) > 0) || !std::isfinite(det)) return std::nullopt;
     const double c00 = a11 / det, c01 = -a01 / det, c10 = -a10 / det, c11 = a00 / det;
     const I m00 = I(1) - (c00 * L.j00 + c01 * L.j10), m01 = -(c00 * L.j01 + c01 * L.j11);
     const I m10 = -(c10 * L.j00 + c11 * L.j10), m11 = I(1) - (c10 * L.j01 + c11 * L.j11);
@@ -98,7 +95,17 @@ class Solver {
     const I kx = I(mx) - (c00 * L.fa + c01 * L.fb) + m00 * dx + m01 * dy;
     const I ky = I(my) - (c10 * L.fa + c11 * L.fb) + m10 * dx + m11 * dy;
     if (!std::isfinite(kx.lo) || !std::isfinite(kx.hi) || !std::isfinite(ky.lo) || !std::isfinite(ky.hi))
-      return Krawczyk::undecided;
+      return std::nullopt;
+    return IntervalBox{kx, ky};
+  }
+
+  enum class Krawczyk { none, unique, undecided };
+  // Krawczyk's test on X; `out` receives K(X) ∩ X.
+  Krawczyk krawczyk(const IntervalBox& X, IntervalBox& out) const { return krawczyk(X, linearise(X), out); }
+  Krawczyk krawczyk(const IntervalBox& X, const Linearisation& L, IntervalBox& out) const {
+    const std::optional<IntervalBox> K = krawczyk_image(X, L);
+    if (!K) return Krawczyk::undecided;
+    const I &kx = K->x, &ky = K->y;
     if (kx.hi < X.x.lo || X.x.hi < kx.lo || ky.hi < X.y.lo || X.y.hi < ky.lo) return Krawczyk::none;
     out = {{std::max(kx.lo, X.x.lo), std::min(kx.hi, X.x.hi)}, {std::max(ky.lo, X.y.lo), std::min(ky.hi, X.y.hi)}};
     if (kx.lo > X.x.lo && kx.hi < X.x.hi && ky.lo > X.y.lo && ky.hi < X.y.hi) return Krawczyk::unique;
@@ -118,6 +125,7 @@ class Solver {
 
   // A root in a small box around Newton's iterate from X's centre, if Krawczyk proves one.
   std::optional<IntervalBox> newton_root(const IntervalBox& X) const {
+    constexpr double eps = std::numeric_limits<double>::epsilon();
     double x = mid(X.x), y = mid(X.y);
     for (int k = 0; k < 24; ++k) {
       const double fa = A_.approx(x, y), fb = B_.approx(x, y);
@@ -127,16 +135,23 @@ class Solver {
       const double sx = (a11 * fa - a01 * fb) / det, sy = (a00 * fb - a10 * fa) / det;
       x -= sx, y -= sy;
       if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
-      if (std::abs(sx) <= newton_step_share * (std::abs(x) + width(X.x)) &&
-          std::abs(sy) <= newton_step_share * (std::abs(y) + width(X.y)))
+      if (std::abs(sx) <= rounding_ulps * eps * (std::abs(x) + width(X.x)) &&
+          std::abs(sy) <= rounding_ulps * eps * (std::abs(y) + width(X.y)))
         break;
     }
     // Outside X's neighbourhood the root says nothing about X.
     if (x < X.x.lo - width(X.x) || x > X.x.hi + width(X.x) || y < X.y.lo - width(X.y) || y > X.y.hi + width(X.y))
       return std::nullopt;
-    // A small box on the scale of the search (a thin search box, e.g. along a horizontal edge,
-    // must not make it thin too).
-    const double r = trial_radius_share * (std::abs(x) + std::abs(y) + width(X.x) + width(X.y));
+    // The trial box Y = x̃ ± r (Rump's ε-inflation): K({x̃}) = x̃ − C·F(x̃) is one more Newton step
+    // in intervals, enclosing the remaining correction δ and the rounding of F(x̃). Then
+    // K(Y) = K({x̃}) + (I − C·J(Y))·(Y − x̃) lies within δ + ‖I − C·J(Y)‖·r of x̃, inside Y when
+    // r = 2δ and the contraction ‖I − C·J(Y)‖ is below 1/2. The few ulps of x̃ added keep Y from
+    // collapsing to a point when F(x̃) encloses 0 exactly.
+    const IntervalBox point{I(x), I(y)};
+    const std::optional<IntervalBox> step = krawczyk_image(point, linearise(point));
+    if (!step) return std::nullopt;
+    const double delta = std::max({x - step->x.lo, step->x.hi - x, y - step->y.lo, step->y.hi - y});
+    const double r = 2 * delta + rounding_ulps * eps * (std::abs(x) + std::abs(y));
     const IntervalBox Y{{x - r, x + r}, {y - r, y + r}};
     IntervalBox K;
     if (krawczyk(Y, K) != Krawczyk::unique) return std::nullopt;
