@@ -8,6 +8,7 @@
 #include "oracle/certify/mesh_certifier.hpp"
 #include "predicates/orientation.hpp"
 #include "refiners/star/gift_wrap.hpp"
+#include "refiners/star/pick_valid.hpp"
 #include "refiners/star/star_refiner.hpp"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <cstdio>
 #include <random>
 #include <set>
@@ -156,6 +158,52 @@ TEST(StarRefiner, CocircularTieGoesToTheNearerAngle) {
   for (const std::vector<int>& cand : {std::vector<int>{1, 2, 3}, std::vector<int>{1, 3, 2}}) {
     EXPECT_EQ(refiners::star::next_delaunay_neighbour(pts[0], I, 1, cand, true, pts), 2);
     EXPECT_EQ(refiners::star::next_delaunay_neighbour(pts[0], I, 3, cand, false, pts), 2);
+  }
+}
+
+// Pick_valid's picking region beyond the doubles in one coordinate only (pick_valid.hpp: then the
+// triangle's centroid). M = diag(2⁻¹⁰⁷⁴, 10³⁰⁸) and r² = 1.7·10³⁰⁸ give M-ball half-widths
+// δr/√m11 ≈ 3·10³¹⁵ (beyond DBL_MAX: the drawn x is ±∞) and δr/√m22 ≈ 0.65 (y stays finite, inside
+// the L-shape's height). The centroid of (1,1), (3,1), (1,3) is (5/3, 5/3), with or without the
+// γ₀-cocircular test of the drawn point, which must not be asked about a non-finite point.
+TEST(StarRefiner, PickingRegionBeyondTheDoublesInOneCoordinateGivesTheCentroid) {
+  const auto isotropic = fields::make_field("constant", {{"m11", 1}, {"m12", 0}, {"m22", 1}});
+  const refiners::common::Domain domain({{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}});
+  refiners::common::Sites sites(domain, isotropic);
+  for (const predicates::Point2<double>& q : {predicates::Point2<double>{1, 1}, {3, 1}, {1, 3}, {1, 2}, {1.5, 2.5}})
+    sites.add(q);
+  const predicates::Sym2<double> M{std::numeric_limits<double>::denorm_min(), 0, 1e308};
+  const geometry::Circumellipse<double> c{0, 0, 1, 2, 1.7e308};
+  for (const int attempts : {0, 3}) {
+    RefineParameters p;
+    p.delta = 0.5, p.pick_attempts = attempts;
+    refiners::star::PickValid picker(domain, sites, p);
+    for (int draw = 0; draw < 20; ++draw) {
+      const predicates::Point2<double> x = picker.pick(c, M, 0, 1, 2);
+      EXPECT_EQ(x.x, 5.0 / 3) << "attempts " << attempts << ", draw " << draw;
+      EXPECT_EQ(x.y, 5.0 / 3) << "attempts " << attempts << ", draw " << draw;
+    }
+    EXPECT_EQ(picker.counts().rejected, 0u);
+  }
+}
+
+// A query box whose sides lie beyond int's range (huge, infinite: the reach of a huge picking
+// region) covers every cell: its columns are clamped before they are converted to int.
+TEST(SiteGrid, BoxesBeyondIntsRangeFindEverySite) {
+  const auto isotropic = fields::make_field("constant", {{"m11", 1}, {"m12", 0}, {"m22", 1}});
+  const refiners::common::Domain domain({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  refiners::common::Sites sites(domain, isotropic);
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j) sites.add({i / 2.0, j / 2.0});
+  sites.grow_grid();
+  ASSERT_GT(sites.grid.columns(), 1);
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  for (const double far : {1e300, inf}) {
+    std::vector<int> found = sites.in({-far, far, -far, far});
+    std::sort(found.begin(), found.end());
+    std::vector<int> all(sites.size());
+    std::iota(all.begin(), all.end(), 0);
+    EXPECT_EQ(found, all) << "sides at ±" << far;
   }
 }
 

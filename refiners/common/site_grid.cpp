@@ -33,8 +33,12 @@ void SiteGrid::rebuild(const std::vector<Point2<double>>& points) {
   for (int i = 0; i < static_cast<int>(points.size()); ++i) add(i, points[i]);
 }
 
-int SiteGrid::cell_x(double x) const { return std::clamp(static_cast<int>((x - extent_.x0) / cw_), 0, g_ - 1); }
-int SiteGrid::cell_y(double y) const { return std::clamp(static_cast<int>((y - extent_.y0) / ch_), 0, g_ - 1); }
+// The column of t cells from the grid's side, clamped in doubles before the conversion: a
+// coordinate beyond int's range, infinite or NaN (a query box of a huge or overflowed ellipse)
+// has no int value.
+int SiteGrid::clamped_cell(double t) const { return t > 0 ? (t < g_ ? static_cast<int>(t) : g_ - 1) : 0; }
+int SiteGrid::cell_x(double x) const { return clamped_cell((x - extent_.x0) / cw_); }
+int SiteGrid::cell_y(double y) const { return clamped_cell((y - extent_.y0) / ch_); }
 
 const std::vector<int>& SiteGrid::sites_in(const Box& b, const std::vector<Point2<double>>& points) const {
   found_.clear();

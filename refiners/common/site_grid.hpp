@@ -46,6 +46,7 @@ class SiteGrid {
   Cells cells_of(const Box& b) const { return {cell_x(b.x0), cell_x(b.x1), cell_y(b.y0), cell_y(b.y1)}; }
 
  private:
+  int clamped_cell(double t) const;
   int cell_x(double x) const;
   int cell_y(double y) const;
   void resize(int g);
