@@ -41,7 +41,7 @@ FIRST_TESTS = {
                   "Encroachment*:RadiusEdge*:SqrtSign*:DistortionEstimate*:LS_*:BWY_*:LU_*",
     "oracle": "ConicIntersection*:AlgebraicPoints*:RealAlgebraic*:OracleDiagram*:SiteSet*:MeshCertifier*:MetricChecks*:"
               "CertifyFilterVsExact*:TriangulationCheck*:CliDiagram*:CliCertify*:Data/*",
-    "refiners": "StarRefiner*:SiteGrid*:QuasiCocircular*:ExactSplit*:Polygon*:CliMesh*:BackgroundMesh*:BackgroundCli*:Data/*",
+    "refiners": "StarRefiner*:SiteGrid*:Boundary.*:QuasiCocircular*:ExactSplit*:Polygon*:CliMesh*:BackgroundMesh*:BackgroundCli*:Data/*",
     "theory": "LS_*:BWY_*:LU_*:Cli.*",
     "numbers": "Rational*:Excerpt*:Interval*:DecimalEnclosure*:FilterInterval*:NumberTypes*",
 }
