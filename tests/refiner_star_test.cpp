@@ -187,6 +187,35 @@ TEST(StarRefiner, PickingRegionBeyondTheDoublesInOneCoordinateGivesTheCentroid) 
   }
 }
 
+// Pick_valid rejects the points LU forbids (Definition 3.9). The sites (±1, 0) and (0, −1) and the
+// point (0, 1) lie on the unit circle: exactly cocircular under M = I. The triangle (0, 3), (2, 1),
+// (−2, 1) has circumcentre (0, 1) and radius 2, so with δ = 1/100 every point drawn lies within
+// 1/50 of (0, 1), where its Delaunay triangle with (±1, 0) stays γ₀-cocircular with (0, −1)
+// (γ₀ = 3/2; radius about 1 < β r_τ = 6, radius-edge ratio about 1/√2 < ρ₀ = 3). Every draw is
+// rejected, and the picker keeps its last draw after pick_attempts rejections. The whole figure is
+// lifted by 10, so the sites within reach of the centre are found in the picking region's own
+// coordinates.
+TEST(StarRefiner, PickValidRejectsPointsCocircularWithFourSites) {
+  const auto isotropic = fields::make_field("constant", {{"m11", 1}, {"m12", 0}, {"m22", 1}});
+  const double lift = 10;
+  const refiners::common::Domain domain({{-4, lift - 4}, {4, lift - 4}, {4, lift + 4}, {-4, lift + 4}});
+  refiners::common::Sites sites(domain, isotropic);
+  for (const predicates::Point2<double>& q : {predicates::Point2<double>{0, 3}, {2, 1}, {-2, 1}, {1, 0}, {-1, 0}, {0, -1}})
+    sites.add({q.x, q.y + lift});
+  const predicates::Sym2<double> I{1, 0, 1};
+  const auto c = geometry::circumellipse(sites.points[0], sites.points[1], sites.points[2], I);
+  ASSERT_EQ(c.cx, 0);
+  ASSERT_EQ(c.cy, 1 + lift);
+  ASSERT_EQ(c.r2, 4);
+  RefineParameters p;
+  p.delta = 0.01, p.gamma0 = 1.5, p.beta = 3, p.rho0 = 3, p.pick_attempts = 3;
+  refiners::star::PickValid picker(domain, sites, p);
+  const int picks = 50;
+  for (int k = 0; k < picks; ++k) picker.pick(c, I, 0, 1, 2);
+  EXPECT_EQ(picker.counts().rejected, static_cast<std::size_t>(picks * p.pick_attempts));
+  EXPECT_EQ(picker.counts().exhausted, static_cast<std::size_t>(picks));
+}
+
 // A query box whose sides lie beyond int's range (huge, infinite: the reach of a huge picking
 // region) covers every cell: its columns are clamped before they are converted to int.
 TEST(SiteGrid, BoxesBeyondIntsRangeFindEverySite) {
