@@ -78,6 +78,23 @@ TEST(LS_T11, AdmissibilityIsDecidedExactlyEvenAtHundredsOfDigits) {
   EXPECT_FALSE(ls_t11_theta_admissible(parse_rational(d.hi)));
 }
 
+// The comparison with θ_max gives up at 2²⁰ bits, as its message says. θ = the lower end of an
+// enclosure of θ_max at 3·2¹⁹ bits agrees with θ_max to about that many bits: beyond the budget,
+// and within the reach of the next precision, 2²¹ bits (about 2.5 s of MPFR's asin).
+TEST(LS_T11, AdmissibilityBeyondItsPrecisionBudgetIsRefusedByName) {
+  mpq_t q;
+  mpq_init(q);
+  mpfr_get_q(q, ls_t11_theta_max_deg(3 << 19).lower());
+  const Rational theta(q);
+  mpq_clear(q);
+  try {
+    ls_t11_theta_admissible(theta);
+    FAIL() << "decided beyond the budget";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("within 2^20 bits of precision"), std::string::npos) << e.what();
+  }
+}
+
 TEST(LS_T11, GammaRefusesInadmissibleTheta) {
   // θ = 170° also has P(1) < 0, and θ < 0 breaks the uniqueness argument (review finding).
   EXPECT_THROW(ls_t11_gamma(Rational(170), prec), std::invalid_argument);
