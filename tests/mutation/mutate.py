@@ -48,6 +48,8 @@ FIRST_TESTS = {
 # Tests of the build rather than of behaviour (the installed package, the include graph): a
 # one-line change inside a function cannot fail them, and they take a third of the suite's time.
 EXCLUDED = r"Api\.ConsumerBuildsAgainstInstalledPackage|LayerIncludes\."
+# The survivors argued equivalent in docs/mutation.md, matched by file and line text.
+EQUIVALENT = ROOT / "tests" / "mutation" / "equivalent.json"
 # The binaries CTest runs (benchmarks are not built).
 TARGETS = ["anisocert", "unit_tests", "property_tests", "format_tests", "cgal_tests", "fuzz_support_tests"]
 
@@ -222,12 +224,15 @@ def select(folders, count, seed, headers):
 
 
 def listed(path):
-    """Mutants written by hand: [{"file", "before", "after"}], `before` a text that occurs on
-    exactly one line of the file."""
+    """Mutants written by hand or kept from a campaign: [{"file", "before", "after"}], `before` a
+    text that occurs on exactly one line of the file, or on several and then the one nearest to
+    an optional "line"."""
     out = []
     for k, e in enumerate(json.loads(Path(path).read_text())):
         lines = (ROOT / e["file"]).read_text().split("\n")
         hits = [i for i, line in enumerate(lines) if e["before"] in line]
+        if len(hits) > 1 and "line" in e:
+            hits = [min(hits, key=lambda i: abs(i + 1 - e["line"]))]
         if len(hits) != 1:
             raise ValueError(f"{path}: mutant {k}: {e['before']!r} is on {len(hits)} lines of {e['file']}, not one")
         line = lines[hits[0]]
@@ -281,7 +286,12 @@ class Campaign:
         return run(["ctest", "--test-dir", str(self.build), "-j", self.jobs, "--stop-on-failure", "--timeout",
                     str(per_test), "-E", EXCLUDED], timeout, self.log)
 
-    def verdict(self, m, suite_seconds):
+    def first_tests(self, folder, timeout):
+        """Exit code of the unit tests that cover `folder`, or None on timeout."""
+        return run([str(self.build / "bin" / "unit_tests"), f"--gtest_filter={FIRST_TESTS[folder]}", "--gtest_fail_fast",
+                    "--gtest_brief=1"], timeout, self.log)
+
+    def verdict(self, m, suite_seconds, first_seconds):
         """killed, survived, timeout or stillborn, and the stage that decided."""
         path = ROOT / m.file
         original = path.read_bytes()
@@ -293,10 +303,9 @@ class Campaign:
             if self.build_all(1800) != 0:
                 return "stillborn", "build"
             budget = 3 * suite_seconds + 120
-            first = FIRST_TESTS.get(m.file.split("/")[0])
-            if first:
-                rc = run([str(self.build / "bin" / "unit_tests"), f"--gtest_filter={first}", "--gtest_fail_fast",
-                          "--gtest_brief=1"], budget, self.log)
+            folder = m.file.split("/")[0]
+            if folder in FIRST_TESTS:
+                rc = self.first_tests(folder, 3 * first_seconds[folder] + 60)
                 if rc is None:
                     return "timeout", "first tests"
                 if rc != 0:
@@ -365,22 +374,39 @@ def main():
         print(f"mutate: the unmutated suite fails (see {c.log}): fix it first", file=sys.stderr)
         return 2
     suite = time.monotonic() - start
+    first = {}  # each first stage's unmutated time, for its own budget
+    for folder in sorted({x.file.split("/")[0] for x in mutants} & FIRST_TESTS.keys()):
+        start = time.monotonic()
+        if c.first_tests(folder, 1800) != 0:
+            print(f"mutate: the unmutated first tests of {folder} fail (see {c.log}): fix them first", file=sys.stderr)
+            return 2
+        first[folder] = time.monotonic() - start
 
     results = []
     began = time.monotonic()
     for k, x in enumerate(mutants, start=1):
         t0 = time.monotonic()
-        verdict, stage = c.verdict(x, suite)
+        verdict, stage = c.verdict(x, suite, first)
         seconds = round(time.monotonic() - t0, 1)
         results.append({**dataclasses.asdict(x), "verdict": verdict, "stage": stage, "seconds": seconds})
         print(f"mutate: [{k}/{len(mutants)}] {verdict:9} {x.file}:{x.line} {x.operator} ({seconds} s)", file=sys.stderr)
         (c.report / f"shard-{shard}-of-{shards}.json").write_text(json.dumps(results, indent=1))
     c.build_all(7200)  # the build folder matches the sources again
-    write_summary(c.report, results, shard, shards, suite, time.monotonic() - began)
+    write_summary(c.report, results, shard, shards, suite, time.monotonic() - began, argued_equivalent())
     return 0
 
 
-def write_summary(report, results, shard, shards, suite, seconds):
+def argued_equivalent():
+    """(file, before, after) of the survivors docs/mutation.md argues equivalent, one paragraph each."""
+    listed = json.loads(EQUIVALENT.read_text())
+    return {(e["file"], e["before"], e["after"]) for e in listed}
+
+
+def is_argued(r, equivalent):
+    return (r["file"], r["before"].strip(), r["after"].strip()) in equivalent
+
+
+def write_summary(report, results, shard, shards, suite, seconds, equivalent):
     by_folder = {}
     for r in results:
         by_folder.setdefault(r["file"].split("/")[0], []).append(r)
@@ -398,12 +424,19 @@ def write_summary(report, results, shard, shards, suite, seconds):
     counted = total["killed"] + total["timeout"] + total["survived"]
     score = f"{100 * (total['killed'] + total['timeout']) / counted:.1f}%" if counted else "—"
     out.append(f"| all | {len(results)} | {total['killed']} | {total['timeout']} | {total['survived']} | {total['stillborn']} | {score} |")
+    argued = sum(r["verdict"] == "survived" and is_argued(r, equivalent) for r in results)
+    if counted > argued:
+        out += ["", f"Leaving out the {argued} survivors argued equivalent in docs/mutation.md "
+                f"(tests/mutation/equivalent.json): {total['killed'] + total['timeout']} / {counted - argued} = "
+                f"{100 * (total['killed'] + total['timeout']) / (counted - argued):.1f}%."]
     out += ["", "## Survivors", ""]
     for r in results:
         if r["verdict"] == "survived":
-            out += [f"- `{r['file']}:{r['line']}` ({r['operator']})", "  ```diff", f"  -{r['before'].strip()}", f"  +{r['after'].strip()}", "  ```"]
+            tag = " — argued equivalent" if is_argued(r, equivalent) else ""
+            out += [f"- `{r['file']}:{r['line']}` ({r['operator']}){tag}", "  ```diff", f"  -{r['before'].strip()}",
+                    f"  +{r['after'].strip()}", "  ```"]
     (report / f"shard-{shard}-of-{shards}.md").write_text("\n".join(out) + "\n")
-    print("\n".join(out[:len(by_folder) + 6]))
+    print("\n".join(out[:out.index("## Survivors") - 1]))
 
 
 if __name__ == "__main__":
