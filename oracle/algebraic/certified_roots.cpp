@@ -53,11 +53,6 @@ class Solver {
  private:
   static constexpr int max_depth = 48;
   static constexpr int max_boxes = 4000;
-  // Newton's iterates in doubles stop improving at rounding level: a step of at most this many
-  // units in the last place of the search's scale ends the iteration. Where the iteration stops
-  // decides only where a certification is tried; what is returned is proved by Krawczyk's test.
-  static constexpr double rounding_ulps = 4;
-
   // F at a point m of X, and the Jacobian J over X: what the tests on X share.
   struct Linearisation {
     double mx, my;
@@ -124,20 +119,23 @@ class Solver {
   }
 
   // A root in a small box around Newton's iterate from X's centre, if Krawczyk proves one.
+  // Newton's steps in doubles shrink until rounding dominates them; the iteration stops at the
+  // first step that does not shrink (or moves nothing). Where it stops decides only where a
+  // certification is tried; what is returned is proved by Krawczyk's test.
   std::optional<IntervalBox> newton_root(const IntervalBox& X) const {
-    constexpr double eps = std::numeric_limits<double>::epsilon();
     double x = mid(X.x), y = mid(X.y);
+    double last_step = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 24; ++k) {
       const double fa = A_.approx(x, y), fb = B_.approx(x, y);
       const double a00 = A_.approx_gx(x, y), a01 = A_.approx_gy(x, y), a10 = B_.approx_gx(x, y), a11 = B_.approx_gy(x, y);
       const double det = a00 * a11 - a01 * a10;
       if (!(std::abs(det) > 0) || !std::isfinite(det)) return std::nullopt;
       const double sx = (a11 * fa - a01 * fb) / det, sy = (a00 * fb - a10 * fa) / det;
+      const double step = std::max(std::abs(sx), std::abs(sy));
+      if (!(step < last_step)) break;
+      last_step = step;
       x -= sx, y -= sy;
       if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
-      if (std::abs(sx) <= rounding_ulps * eps * (std::abs(x) + width(X.x)) &&
-          std::abs(sy) <= rounding_ulps * eps * (std::abs(y) + width(X.y)))
-        break;
     }
     // Outside X's neighbourhood the root says nothing about X.
     if (x < X.x.lo - width(X.x) || x > X.x.hi + width(X.x) || y < X.y.lo - width(X.y) || y > X.y.hi + width(X.y))
@@ -145,14 +143,15 @@ class Solver {
     // The trial box Y = x̃ ± r (Rump's ε-inflation): K({x̃}) = x̃ − C·F(x̃) is one more Newton step
     // in intervals, enclosing the remaining correction δ and the rounding of F(x̃). Then
     // K(Y) = K({x̃}) + (I − C·J(Y))·(Y − x̃) lies within δ + ‖I − C·J(Y)‖·r of x̃, inside Y when
-    // r = 2δ and the contraction ‖I − C·J(Y)‖ is below 1/2. The few ulps of x̃ added keep Y from
-    // collapsing to a point when F(x̃) encloses 0 exactly.
+    // r = 2δ and the contraction ‖I − C·J(Y)‖ is below 1/2. Y's ends are rounded outward to the
+    // next doubles, so Y is not a point even when F(x̃) encloses 0 exactly.
     const IntervalBox point{I(x), I(y)};
     const std::optional<IntervalBox> step = krawczyk_image(point, linearise(point));
     if (!step) return std::nullopt;
-    const double delta = std::max({x - step->x.lo, step->x.hi - x, y - step->y.lo, step->y.hi - y});
-    const double r = 2 * delta + rounding_ulps * eps * (std::abs(x) + std::abs(y));
-    const IntervalBox Y{{x - r, x + r}, {y - r, y + r}};
+    const double r = 2 * std::max({x - step->x.lo, step->x.hi - x, y - step->y.lo, step->y.hi - y});
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const IntervalBox Y{{std::nextafter(x - r, -inf), std::nextafter(x + r, inf)},
+                        {std::nextafter(y - r, -inf), std::nextafter(y + r, inf)}};
     IntervalBox K;
     if (krawczyk(Y, K) != Krawczyk::unique) return std::nullopt;
     return K;
