@@ -15,9 +15,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
-#include <cstdio>
 #include <random>
 #include <set>
 
@@ -31,6 +31,14 @@ using Polygon = std::vector<predicates::Point2<double>>;
 oracle::CertifyReport certify(const RefineResult& r, const RefineParameters& p, oracle::CertifyOptions& o) {
   o.rho0 = rational_from_double(p.rho0), o.gamma0 = rational_from_double(p.gamma0);
   return oracle::certify_mesh(geometry::exact(r.mesh), o);
+}
+
+// Sites at the given points of Ω, each with the metric I.
+refiners::common::Sites isotropic_sites(const refiners::common::Domain& domain,
+                                        const std::vector<predicates::Point2<double>>& points) {
+  refiners::common::Sites sites(domain, fields::make_field("constant", {{"m11", 1}, {"m12", 0}, {"m22", 1}}));
+  for (const predicates::Point2<double>& q : points) sites.add(q);
+  return sites;
 }
 
 TEST(StarRefiner, ConsistentRunsAreCertifiedExactly) {
@@ -167,11 +175,8 @@ TEST(StarRefiner, CocircularTieGoesToTheNearerAngle) {
 // the L-shape's height). The centroid of (1,1), (3,1), (1,3) is (5/3, 5/3), with or without the
 // γ₀-cocircular test of the drawn point, which must not be asked about a non-finite point.
 TEST(StarRefiner, PickingRegionBeyondTheDoublesInOneCoordinateGivesTheCentroid) {
-  const auto isotropic = fields::make_field("constant", {{"m11", 1}, {"m12", 0}, {"m22", 1}});
   const refiners::common::Domain domain({{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}});
-  refiners::common::Sites sites(domain, isotropic);
-  for (const predicates::Point2<double>& q : {predicates::Point2<double>{1, 1}, {3, 1}, {1, 3}, {1, 2}, {1.5, 2.5}})
-    sites.add(q);
+  const refiners::common::Sites sites = isotropic_sites(domain, {{1, 1}, {3, 1}, {1, 3}, {1, 2}, {1.5, 2.5}});
   const predicates::Sym2<double> M{std::numeric_limits<double>::denorm_min(), 0, 1e308};
   const geometry::Circumellipse<double> c{0, 0, 1, 2, 1.7e308};
   for (const int attempts : {0, 3}) {
@@ -196,12 +201,10 @@ TEST(StarRefiner, PickingRegionBeyondTheDoublesInOneCoordinateGivesTheCentroid) 
 // lifted by 10, so the sites within reach of the centre are found in the picking region's own
 // coordinates.
 TEST(StarRefiner, PickValidRejectsPointsCocircularWithFourSites) {
-  const auto isotropic = fields::make_field("constant", {{"m11", 1}, {"m12", 0}, {"m22", 1}});
   const double lift = 10;
   const refiners::common::Domain domain({{-4, lift - 4}, {4, lift - 4}, {4, lift + 4}, {-4, lift + 4}});
-  refiners::common::Sites sites(domain, isotropic);
-  for (const predicates::Point2<double>& q : {predicates::Point2<double>{0, 3}, {2, 1}, {-2, 1}, {1, 0}, {-1, 0}, {0, -1}})
-    sites.add({q.x, q.y + lift});
+  const refiners::common::Sites sites =
+      isotropic_sites(domain, {{0, 3 + lift}, {2, 1 + lift}, {-2, 1 + lift}, {1, lift}, {-1, lift}, {0, lift - 1}});
   const predicates::Sym2<double> I{1, 0, 1};
   const auto c = geometry::circumellipse(sites.points[0], sites.points[1], sites.points[2], I);
   ASSERT_EQ(c.cx, 0);
@@ -219,11 +222,10 @@ TEST(StarRefiner, PickValidRejectsPointsCocircularWithFourSites) {
 // A query box whose sides lie beyond int's range (huge, infinite: the reach of a huge picking
 // region) covers every cell: its columns are clamped before they are converted to int.
 TEST(SiteGrid, BoxesBeyondIntsRangeFindEverySite) {
-  const auto isotropic = fields::make_field("constant", {{"m11", 1}, {"m12", 0}, {"m22", 1}});
-  const refiners::common::Domain domain({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
-  refiners::common::Sites sites(domain, isotropic);
+  std::vector<predicates::Point2<double>> lattice;
   for (int i = 0; i <= 8; ++i)
-    for (int j = 0; j <= 8; ++j) sites.add({i / 2.0, j / 2.0});
+    for (int j = 0; j <= 8; ++j) lattice.push_back({i / 2.0, j / 2.0});
+  refiners::common::Sites sites = isotropic_sites(refiners::common::Domain({{0, 0}, {4, 0}, {4, 4}, {0, 4}}), lattice);
   sites.grow_grid();
   ASSERT_GT(sites.grid.columns(), 1);
   constexpr double inf = std::numeric_limits<double>::infinity();
