@@ -11,6 +11,7 @@ void add_diagram(CLI::App&, int&);
 void add_demo(CLI::App&, int&);
 void add_certify(CLI::App&, int&);
 void add_refine(CLI::App&, int&);
+void add_metric(CLI::App&, int&);
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
@@ -20,6 +21,7 @@ const std::vector<Command>& commands() {
       {"demo", add_demo},
       {"certify", add_certify},
       {"refine", add_refine},
+      {"metric", add_metric},
   };
   return table;
 }

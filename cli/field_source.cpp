@@ -59,4 +59,27 @@ FieldSource field_source(const std::string& text, const std::vector<std::string>
   }
 }
 
+std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, const std::string& text,
+                                                   const std::vector<predicates::Point2<Rational>>& points) {
+  std::vector<predicates::Sym2<Rational>> metrics;
+  metrics.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& p = points[i];
+    if (source.background) {
+      const auto m = source.background->metric_at(p);
+      if (!m) throw UsageError("--field " + text + ": vertex " + std::to_string(i) + " " + geometry::point_excerpt(p) +
+                               " lies outside the background mesh");
+      metrics.push_back(*m);
+    } else {
+      try {
+        const auto m = source.field.at(p.x.convert_to<double>(), p.y.convert_to<double>());
+        metrics.push_back({rational_from_double(m.m11), rational_from_double(m.m12), rational_from_double(m.m22)});
+      } catch (const std::invalid_argument& e) {  // fields::FieldError, or NumberSyntaxError (not finite)
+        throw UsageError("--field " + text + ": at vertex " + std::to_string(i) + ": " + e.what());
+      }
+    }
+  }
+  return metrics;
+}
+
 }  // namespace anisocert::cli

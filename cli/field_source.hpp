@@ -26,4 +26,10 @@ inline constexpr const char* background_field_help =
 // Throws UsageError naming the option, the file or the point, and what is wrong.
 FieldSource field_source(const std::string& text, const std::vector<std::string>& params);
 
+// The metric at every point: a background mesh's exactly (P1, rational), a built-in field's at the
+// points' nearest doubles (its double values taken as the rationals they are). `text` is the
+// --field text, for messages (UsageError naming the point by index).
+std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, const std::string& text,
+                                                   const std::vector<predicates::Point2<Rational>>& points);
+
 }  // namespace anisocert::cli

@@ -64,38 +64,13 @@ oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
   return o;
 }
 
-// The metric at every vertex from --field: a background mesh exactly (P1, rational), a built-in
-// field at the vertices' nearest doubles (its double values taken as the rationals they are).
-std::vector<predicates::Sym2<Rational>> field_metrics(const CertifyCommandOptions& c, const geometry::Mesh<Rational>& mesh) {
-  const FieldSource source = field_source(c.field, c.params);
-  std::vector<predicates::Sym2<Rational>> metrics;
-  metrics.reserve(mesh.sites.size());
-  for (std::size_t i = 0; i < mesh.sites.size(); ++i) {
-    const auto& p = mesh.sites[i];
-    if (source.background) {
-      const auto m = source.background->metric_at(p);
-      if (!m) throw UsageError("--field " + c.field + ": vertex " + std::to_string(i) + " " + geometry::point_excerpt(p) +
-                               " lies outside the background mesh");
-      metrics.push_back(*m);
-    } else {
-      const auto m = source.field.at(p.x.convert_to<double>(), p.y.convert_to<double>());
-      try {
-        metrics.push_back({rational_from_double(m.m11), rational_from_double(m.m12), rational_from_double(m.m22)});
-      } catch (const NumberSyntaxError& e) {
-        throw UsageError("--field " + c.field + ": at vertex " + std::to_string(i) + ": " + e.what());
-      }
-    }
-  }
-  return metrics;
-}
-
 int run_certify(CertifyCommandOptions& c) {
   const oracle::CertifyOptions o = certify_options(c);
   if (!c.metric.empty() && !c.field.empty()) throw UsageError("--metric and --field: give one metric source");
   io::MeshFile file;
   try {
     file = io::read_mesh_file(c.input, c.format, {c.planar_3d}, c.metric, c.metric_format);
-    if (!c.field.empty()) io::attach_metrics(file, field_metrics(c, file.mesh), "--field " + c.field);
+    if (!c.field.empty()) io::attach_metrics(file, metrics_at(field_source(c.field, c.params), c.field, file.mesh.sites), "--field " + c.field);
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }

@@ -2,6 +2,7 @@
 
 #include "io/formats/freefem.hpp"
 #include "io/formats/gmsh.hpp"
+#include "io/formats/gmsh_view.hpp"
 #include "io/formats/medit.hpp"
 #include "io/formats/text_reader.hpp"
 #include "io/formats/triangle.hpp"
@@ -79,6 +80,8 @@ const std::vector<MeshFormat>& mesh_formats() {
        [](const std::string& p, const ReadOptions&) { return read_freefem_file(p); }, write_freefem_file},
       {"triangle", "Triangle .node/.ele/.poly (boundary markers, holes)", {".node", ".ele", ".poly"}, nullptr,
        [](const std::string& p, const ReadOptions&) { return read_triangle_files(p); }, write_triangle_files},
+      {"gmsh-view", "Gmsh list-based tensor view .pos, a background metric for Gmsh's BAMG (written only)", {".pos"}, nullptr,
+       nullptr, write_gmsh_view},
   };
   return formats;
 }
@@ -120,6 +123,7 @@ const MeshFormat& mesh_format_to_write(const std::string& path, const std::strin
 MeshFile read_mesh_file(const std::string& path, const std::string& format, const ReadOptions& o,
                         const std::string& metric_path, const std::string& metric_format) {
   const MeshFormat& mf = mesh_format_of(path, format);
+  if (!mf.read) throw InputError(path + ": anisocert writes " + mf.name + " files but does not read them");
   MeshFile f = mf.read(path, o);
   if (!f.mesh.metrics.empty()) f.metric_source = path;
   std::string metrics = metric_path;
