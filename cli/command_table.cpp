@@ -12,6 +12,7 @@ void add_demo(CLI::App&, int&);
 void add_certify(CLI::App&, int&);
 void add_refine(CLI::App&, int&);
 void add_metric(CLI::App&, int&);
+void add_dual(CLI::App&, int&);
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
@@ -20,6 +21,7 @@ const std::vector<Command>& commands() {
       {"diagram", add_diagram},
       {"demo", add_demo},
       {"certify", add_certify},
+      {"dual", add_dual},
       {"refine", add_refine},
       {"metric", add_metric},
   };

@@ -2,7 +2,7 @@
 // (oracle/certify/mesh_certifier.hpp) on a mesh in any format of io/formats/registry.hpp. Exit 0
 // when every requested check holds, 1 with witnesses when one fails, 2 for bad input (nothing
 // written).
-#include "cli/field_source.hpp"
+#include "cli/mesh_input.hpp"
 #include "cli/output.hpp"
 #include "cli/usage_error.hpp"
 #include "io/formats/registry.hpp"
@@ -18,12 +18,11 @@ namespace anisocert::cli {
 namespace {
 
 struct CertifyCommandOptions {
-  std::string input, format, metric, metric_format, field, json_path, svg_path;
-  std::vector<std::string> params;
+  MeshInput in;
+  std::string json_path, svg_path;
   io::BoundTexts bounds;
   std::vector<std::string> length_range;
   std::vector<std::string> checks{"valid", "uniform", "metric"};
-  bool planar_3d = false;
   bool checks_given = false;   // --checks was on the command line
   bool all_witnesses = false;
   int threads = 0;
@@ -66,32 +65,24 @@ oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
 
 int run_certify(CertifyCommandOptions& c) {
   const oracle::CertifyOptions o = certify_options(c);
-  if (!c.metric.empty() && !c.field.empty()) throw UsageError("--metric and --field: give one metric source");
-  io::MeshFile file;
-  try {
-    file = io::read_mesh_file(c.input, c.format, {c.planar_3d}, c.metric, c.metric_format);
-    if (!c.field.empty()) io::attach_metrics(file, metrics_at(field_source(c.field, c.params), c.field, file.mesh.sites), "--field " + c.field);
-  } catch (const io::InputError& e) {
-    throw UsageError(e.what());
-  }
-  if (file.mesh.triangles.empty()) throw UsageError(c.input + ": the file has no triangles");
+  io::MeshFile file = read_mesh_input(c.in);
+  if (file.mesh.triangles.empty()) throw UsageError(c.in.path + ": the file has no triangles");
   if (file.mesh.metrics.empty()) {
     // A bound or a check the user asked for must run or be refused, never be skipped quietly.
     const bool asked = o.rho0 || o.gamma0 || o.length_range || o.min_quality || o.min_angle ||
                        (c.checks_given && (o.uniform || o.metric));
     if (asked)
-      throw UsageError(c.input + ": has no metric, which the requested checks and bounds need (give --metric FILE or --field NAME)");
+      throw UsageError(c.in.path + ": has no metric, which the requested checks and bounds need (give --metric FILE or --field NAME)");
   }
-  if (!c.field.empty()) file.metric_source = "--field " + c.field;
   const oracle::CertifyReport report = oracle::certify_mesh(file.mesh, o);
   io::CertifyVerdict v = io::certify_verdict(report, o, file.mesh, c.bounds);
   v.metric_source = file.metric_source;
   std::vector<OutputFile> files;
   // Streamed: with --all-witnesses a bad mesh's report lists a witness per triangle.
   if (!c.json_path.empty()) files.push_back({c.json_path, "", [&](std::ostream& out) { io::write_json(out, v, report); }});
-  if (!c.svg_path.empty()) files.push_back({c.svg_path, io::certify_svg(file.mesh, report, c.input + (v.holds ? ": certified" : ": not certified"))});
+  if (!c.svg_path.empty()) files.push_back({c.svg_path, io::certify_svg(file.mesh, report, c.in.path + (v.holds ? ": certified" : ": not certified"))});
   write_files_atomically(files);
-  emit(io::full_text(v, c.input));
+  emit(io::full_text(v, c.in.path));
   return v.holds ? 0 : 1;
 }
 
@@ -127,16 +118,7 @@ void add_certify(CLI::App& app, int& exit_code) {
       "runs, and bounds that need one are refused. Each check's verdict stands on its own.\n"
       "Exit 0 all hold, 1 a check fails (witnesses), 2 bad input (one line, nothing written).\nMesh formats (by extension, or --format):\n" +
           format_list());
-  c->add_option("mesh", o->input, "the mesh file")->required();
-  c->add_option("--format", o->format, "the mesh format, when the extension does not tell");
-  c->add_option("--metric", o->metric,
-                "per-vertex metrics in a separate file (.sol/.solb, .mtr); a Medit BASE.mesh reads BASE.sol beside it\n"
-                "without this option, as MMG does");
-  c->add_option("--metric-format", o->metric_format, "the metric file's format (medit, bamg)");
-  c->add_option("--field", o->field, std::string("a metric field instead: a built-in name (see refine --help) or\n") +
-                                         background_field_help);
-  c->add_option("--param", o->params, "a parameter of the built-in field, name=value (repeatable)");
-  c->add_flag("--planar-3d", o->planar_3d, "read a 3D Medit file whose every z is 0 as a 2D mesh");
+  add_mesh_input_options(c, o->in);
   CLI::Option* checks =
       c->add_option("--checks", o->checks, "which of valid, uniform, metric to run (default all)")->delimiter(',');
   c->add_option("--rho0", o->bounds.rho0, "check radius-edge ratio <= this (exact rational)");

@@ -24,10 +24,6 @@ WitnessLines texts(const std::vector<std::string>& lines, std::size_t count) {
 std::string enclosure_text(const FilterInterval& q) { return "[" + outward(q.lo, false) + ", " + outward(q.hi, true) + "]"; }
 ReportJson enclosure_json(const FilterInterval& q) { return ReportJson::array({q.lo, q.hi}); }
 
-std::string percent(std::size_t k, std::size_t n) {
-  return n == 0 ? "0%" : as_printed(100.0 * static_cast<double>(k) / static_cast<double>(n)) + "%";
-}
-
 const char* verdict(const CheckReport& c) { return !c.is_verdict ? "measured" : c.holds ? "holds" : "FAILS"; }
 
 void add_validity(const oracle::CertifyReport& r, CertifyVerdict& v) {

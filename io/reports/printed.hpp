@@ -15,6 +15,11 @@ inline std::string as_printed(double x) {
   return o.str();
 }
 
+// k of n as a percentage, printed as as_printed does ("74.2793%"); "0%" of nothing.
+inline std::string percent(std::size_t k, std::size_t n) {
+  return n == 0 ? "0%" : as_printed(100.0 * static_cast<double>(k) / static_cast<double>(n)) + "%";
+}
+
 // x rounded outward (down, or up) to 10 significant decimal digits, exactly: the ends of an
 // enclosure stay ends of an enclosure in print.
 inline std::string outward(double x, bool up) {

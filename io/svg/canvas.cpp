@@ -13,6 +13,12 @@ Canvas::Canvas(const geometry::Polygon<double>& frame, double margin) : x0_(1e30
   height_ = (y1_ - y0_ + 2 * margin_) * px_;
 }
 
+std::string xml_text(const std::string& s) {
+  std::string e;
+  for (char ch : s) e += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
+  return e;
+}
+
 void Canvas::open(std::ostream& o, double footer, double min_width) const {
   const double w = std::max(width_, min_width);
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << height_ + footer << "\" viewBox=\"0 0 "

@@ -4,8 +4,12 @@
 #include "geometry/polygon.hpp"
 
 #include <ostream>
+#include <string>
 
 namespace anisocert::io {
+
+// Text for an SVG element's content: &, < and > escaped (a caption names the user's file).
+std::string xml_text(const std::string& s);
 
 class Canvas {
  public:

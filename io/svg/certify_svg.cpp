@@ -118,7 +118,7 @@ std::string certify_svg(const geometry::Mesh<Rational>& mesh, const oracle::Cert
   if (r.quality)
     histogram(o, r.quality->qualities, 0, 1, 40, 350, y, 290, 100, 0, 0,
               "mean-ratio quality (" + std::to_string(r.quality->qualities.size()) + " triangles, 1 = equilateral)", tick);
-  o << "<text x=\"8\" y=\"" << c.height() + footer - 10 << "\" font-family=\"sans-serif\" font-size=\"12\">" << caption
+  o << "<text x=\"8\" y=\"" << c.height() + footer - 10 << "\" font-family=\"sans-serif\" font-size=\"12\">" << xml_text(caption)
     << ": failing triangles in red, failing edges in orange</text>\n</svg>\n";
   return o.str();
 }

@@ -19,7 +19,7 @@ std::string mesh_svg(const geometry::Mesh<double>& m, const std::string& caption
   }
   o << "\"/>\n<polygon fill=\"none\" stroke=\"black\" stroke-width=\"1.2\" points=\"";
   for (const auto& p : m.domain) o << c.X(p.x) << "," << c.Y(p.y) << " ";
-  o << "\"/>\n<text x=\"8\" y=\"" << c.height() + 16 << "\" font-family=\"sans-serif\" font-size=\"12\">" << caption << "</text>\n</svg>\n";
+  o << "\"/>\n<text x=\"8\" y=\"" << c.height() + 16 << "\" font-family=\"sans-serif\" font-size=\"12\">" << xml_text(caption) << "</text>\n</svg>\n";
   return o.str();
 }
 
