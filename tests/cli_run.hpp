@@ -1,6 +1,6 @@
 #pragma once
-// Runs the anisocert program as a user does (ANISOCERT_BIN, set by CMake) and collects its exit
-// code, standard output and standard error.
+// Runs the anisocert program as a user does (ANISOCERT_BIN, set by CMake), or any command line,
+// and collects its exit code, standard output and standard error.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,10 +18,11 @@ struct Outcome {
   std::string out, err;
 };
 
-inline Outcome run(const std::string& args) {
+// A shell command line, its standard error collected apart.
+inline Outcome run_command(const std::string& command_line) {
   // One file per process: CTest runs the tests of this file in parallel processes.
   const std::string err_file = ::testing::TempDir() + "anisocert_stderr_" + std::to_string(getpid()) + ".txt";
-  const std::string command = std::string(ANISOCERT_BIN) + " " + args + " 2>" + err_file;
+  const std::string command = command_line + " 2>" + err_file;
   FILE* pipe = popen(command.c_str(), "r");
   Outcome r{-1, "", ""};
   std::array<char, 4096> buf{};
@@ -34,5 +35,7 @@ inline Outcome run(const std::string& args) {
   r.err = ss.str();
   return r;
 }
+
+inline Outcome run(const std::string& args) { return run_command(std::string(ANISOCERT_BIN) + " " + args); }
 
 }  // namespace

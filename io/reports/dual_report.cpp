@@ -85,7 +85,7 @@ std::string dual_svg(const geometry::Mesh<Rational>& mesh, const oracle::Diagram
   const Canvas c(geometry::Polygon<double>(p.begin(), p.end()), 0.03);
   std::ostringstream o;
   o.precision(6);
-  c.open(o, 60, 500);
+  c.open(o, 80, 560);
   o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   const auto path = [&](const int* t) {
     o << "M" << c.X(p[t[0]].x) << " " << c.Y(p[t[0]].y) << " L" << c.X(p[t[1]].x) << " " << c.Y(p[t[1]].y) << " L" << c.X(p[t[2]].x)
@@ -101,10 +101,11 @@ std::string dual_svg(const geometry::Mesh<Rational>& mesh, const oracle::Diagram
   }
   o << "<path fill=\"none\" stroke=\"#0050ff\" stroke-width=\"1.2\" d=\"";
   for (const auto& cell : m.missing) path(cell.sites.data());
-  o << "\"/>\n<g font-family=\"sans-serif\" font-size=\"12\"><text x=\"10\" y=\"" << c.height() + 20 << "\">" << xml_text(caption) << "</text>\n"
-    << "<text x=\"10\" y=\"" << c.height() + 40 << "\">pale: dual to a Voronoi vertex (" << m.dual << "); red: not dual (" << m.not_dual
-    << "); yellow: ties (" << m.ties << "); blue outline: dual triangles missing from the mesh (first " << m.missing.size() << " of "
-    << m.missing_count << ", of " << d.dual_triangles.size() << ")</text></g>\n</svg>\n";
+  const double y = c.height();
+  o << "\"/>\n<g font-family=\"sans-serif\" font-size=\"12\"><text x=\"10\" y=\"" << y + 20 << "\">" << xml_text(caption) << "</text>\n"
+    << "<text x=\"10\" y=\"" << y + 40 << "\">pale: dual to a Voronoi vertex (" << m.dual << "); red: not dual (" << m.not_dual << "); yellow: ties ("
+    << m.ties << ")</text>\n<text x=\"10\" y=\"" << y + 60 << "\">blue outline: dual triangles missing from the mesh (" << m.missing_count
+    << " of the diagram's " << d.dual_triangles.size() << "; the first " << m.missing.size() << " drawn)</text></g>\n</svg>\n";
   return o.str();
 }
 
