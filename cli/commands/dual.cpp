@@ -21,6 +21,7 @@ struct DualOptions {
   MeshInput in;
   std::string json_path, svg_path;
   bool quiet = false;
+  bool exact_only = false;
   int threads = 0;
 };
 
@@ -42,6 +43,7 @@ int run_dual(const DualOptions& o) {
   try {
     oracle::DiagramOptions options;
     options.threads = o.threads;
+    options.exact_only = o.exact_only;
     options.progress = progress_printer(o.quiet);
     d = oracle::compute_diagram(sites, options);
   } catch (const std::domain_error& e) {  // a degenerate input the oracle declines, named
@@ -79,6 +81,8 @@ void add_dual(CLI::App& app, int& exit_code) {
                 "write the report to this file: counts, and the first " + std::to_string(described_witnesses) + " witnesses of each list");
   c->add_option("--svg", o->svg_path, "write a picture: triangles dual, tied and not dual coloured, missing dual triangles outlined");
   c->add_flag("--quiet", o->quiet, "no progress lines on standard error");
+  c->add_flag("--exact-only", o->exact_only,
+              "build every point of the diagram with exact arithmetic (no interval filters first); same answers, slower");
   c->add_option("--threads", o->threads, "threads for the diagram (default: every core)")->check(CLI::Range(1, 1024));
   c->callback([o, &exit_code] { exit_code = run_dual(*o); });
 }
