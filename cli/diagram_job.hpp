@@ -5,6 +5,7 @@
 // counterexample, also said on standard error).
 #include "cli/output.hpp"
 #include "geometry/mesh.hpp"
+#include "oracle/diagram/diagram.hpp"
 
 #include <string>
 #include <vector>
@@ -23,6 +24,14 @@ struct DiagramJob {
   std::vector<OutputFile> files;
   int exit_code = 0;
 };
+
+// The exact diagram with progress lines (unless quiet), exact-only and threads as asked; a
+// degenerate input the oracle declines is a UsageError naming `name`.
+oracle::Diagram exact_diagram(const geometry::Mesh<Rational>& in, const std::string& name, const DiagramOutputs& o);
+
+// 3 after saying so on standard error when Theorem 7's preconditions hold and its conclusion
+// fails (a bug or a counterexample); else 0.
+int theorem7_exit_code(const oracle::Diagram& d);
 
 // `name` names the input in messages and the summary. A degenerate input the oracle declines
 // is a UsageError naming it.

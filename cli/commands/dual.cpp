@@ -3,6 +3,7 @@
 // with their metrics, Ω the boundary of its triangles (geometry/boundary_polygon.hpp), compared
 // triangle by triangle (oracle/diagram/mesh_dual.hpp). Exit 0 it is the dual, 1 it is not, 2 bad
 // input (nothing written), 3 Theorem 7's preconditions hold and its conclusion fails.
+#include "cli/diagram_job.hpp"
 #include "cli/mesh_input.hpp"
 #include "cli/output.hpp"
 #include "cli/usage_error.hpp"
@@ -11,7 +12,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
 #include <memory>
 
 namespace anisocert::cli {
@@ -20,9 +20,7 @@ namespace {
 struct DualOptions {
   MeshInput in;
   std::string json_path, svg_path;
-  bool quiet = false;
-  bool exact_only = false;
-  int threads = 0;
+  DiagramOutputs diagram;  // quiet, exact_only, threads (its paths unused)
 };
 
 constexpr std::size_t described_witnesses = 100;
@@ -39,16 +37,7 @@ int run_dual(const DualOptions& o) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(o.in.path + ": " + e.what());
   }
-  oracle::Diagram d;
-  try {
-    oracle::DiagramOptions options;
-    options.threads = o.threads;
-    options.exact_only = o.exact_only;
-    options.progress = progress_printer(o.quiet);
-    d = oracle::compute_diagram(sites, options);
-  } catch (const std::domain_error& e) {  // a degenerate input the oracle declines, named
-    throw UsageError(o.in.path + ": " + e.what());
-  }
+  const oracle::Diagram d = exact_diagram(sites, o.in.path, o.diagram);
   const oracle::MeshDual m = oracle::compare_with_dual(d, mesh.triangles, described_witnesses);
   std::vector<OutputFile> files;
   if (!o.json_path.empty()) files.push_back({o.json_path, render(io::dual_json(d, m, file.metric_source))});
@@ -56,11 +45,7 @@ int run_dual(const DualOptions& o) {
     files.push_back({o.svg_path, io::dual_svg(mesh, d, m, o.in.path + (m.is_dual() ? ": the dual of D|Ω" : ": not the dual of D|Ω"))});
   write_files_atomically(files);
   emit(io::dual_text(d, m, o.in.path, file.metric_source));
-  if (d.theorem7.disagreement) {
-    std::cerr << "anisocert: THEOREM 7 DISAGREEMENT: its preconditions hold but the dual is not a triangulation of Ω.\n"
-                 "This is a bug in the oracle or a counterexample to LS Theorem 7; please report the input.\n";
-    return 3;
-  }
+  if (const int code = theorem7_exit_code(d)) return code;
   return m.is_dual() ? 0 : 1;
 }
 
@@ -80,10 +65,10 @@ void add_dual(CLI::App& app, int& exit_code) {
   c->add_option("--json", o->json_path,
                 "write the report to this file: counts, and the first " + std::to_string(described_witnesses) + " witnesses of each list");
   c->add_option("--svg", o->svg_path, "write a picture: triangles dual, tied and not dual coloured, missing dual triangles outlined");
-  c->add_flag("--quiet", o->quiet, "no progress lines on standard error");
-  c->add_flag("--exact-only", o->exact_only,
+  c->add_flag("--quiet", o->diagram.quiet, "no progress lines on standard error");
+  c->add_flag("--exact-only", o->diagram.exact_only,
               "build every point of the diagram with exact arithmetic (no interval filters first); same answers, slower");
-  c->add_option("--threads", o->threads, "threads for the diagram (default: every core)")->check(CLI::Range(1, 1024));
+  c->add_option("--threads", o->diagram.threads, "threads for the diagram (default: every core)")->check(CLI::Range(1, 1024));
   c->callback([o, &exit_code] { exit_code = run_dual(*o); });
 }
 

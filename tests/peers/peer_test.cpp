@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,9 @@ struct Peer {
 };
 
 std::string test_name(const Peer& p) { return p.peer + "_" + p.domain + "_" + p.field + "_" + p.size; }
+
+// How GoogleTest (and CTest's test names) print a case.
+[[maybe_unused]] void PrintTo(const Peer& p, std::ostream* o) { *o << test_name(p); }
 
 // The field parameters of the two sizes: the default field ("fine") and one twice as coarse.
 std::vector<std::string> size_params(const Peer& p) {
