@@ -77,6 +77,13 @@ std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, co
       } catch (const std::invalid_argument& e) {  // fields::FieldError, or NumberSyntaxError (not finite)
         throw UsageError("--field " + text + ": at vertex " + std::to_string(i) + ": " + e.what());
       }
+      // In doubles a field can round to a metric that is not positive definite (underflow to 0,
+      // cancellation at a large anisotropy): decided exactly, as for a metric read from a file.
+      if (!predicates::positive_definite(metrics.back()))
+        throw UsageError("--field " + text + ": at vertex " + std::to_string(i) + " " + geometry::point_excerpt(p) +
+                         ", the field's metric in doubles is not positive definite (m11 m12 m22 = " +
+                         exact_excerpt(metrics.back().m11) + " " + exact_excerpt(metrics.back().m12) + " " +
+                         exact_excerpt(metrics.back().m22) + ")");
     }
   }
   return metrics;

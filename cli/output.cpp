@@ -33,23 +33,49 @@ std::function<void(const std::string&)> progress_printer(bool quiet) {
 
 std::string render(const Json& j) { return j.dump(2) + "\n"; }
 
-void write_files_atomically(const std::vector<OutputFile>& files) {
-  // What would make a rename fail after others succeeded is refused before anything is written:
-  // two outputs at one path, or a path that is a directory.
-  for (std::size_t i = 0; i < files.size(); ++i) {
+namespace {
+
+// Why a file cannot be written, when the system said ("No such file or directory").
+std::string reason(int error) { return error != 0 ? std::string(": ") + std::strerror(error) : std::string(); }
+
+std::string partial(const std::string& path) { return path + ".partial"; }
+
+// What would make a rename fail after others succeeded: two outputs at one path, or a path that
+// is a directory.
+void check_paths(const std::vector<std::string>& paths) {
+  for (std::size_t i = 0; i < paths.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j)
-      if (files[i].path == files[j].path) throw UsageError("cannot write " + files[i].path + ": two outputs given the same path");
-    if (std::filesystem::is_directory(files[i].path)) throw UsageError("cannot write " + files[i].path + ": it is a directory");
+      if (paths[i] == paths[j]) throw UsageError("cannot write " + paths[i] + ": two outputs given the same path");
+    if (std::filesystem::is_directory(paths[i])) throw UsageError("cannot write " + paths[i] + ": it is a directory");
   }
-  const auto partial = [](const OutputFile& f) { return f.path + ".partial"; };
+}
+
+}  // namespace
+
+void check_outputs(const std::vector<std::string>& paths) {
+  std::vector<std::string> given;
+  for (const std::string& p : paths)
+    if (!p.empty()) given.push_back(p);
+  check_paths(given);
+  for (const std::string& p : given) {
+    errno = 0;
+    const bool writable = std::ofstream(partial(p), std::ios::binary | std::ios::trunc).good();
+    const int error = errno;
+    std::remove(partial(p).c_str());
+    if (!writable) throw UsageError("cannot write " + p + reason(error));
+  }
+}
+
+void write_files_atomically(const std::vector<OutputFile>& files) {
+  std::vector<std::string> paths;
+  for (const OutputFile& f : files) paths.push_back(f.path);
+  check_paths(paths);  // before anything is written
   const auto remove_partials = [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i < to; ++i) std::remove(partial(files[i]).c_str());
+    for (std::size_t i = from; i < to; ++i) std::remove(partial(files[i].path).c_str());
   };
-  // Why a file cannot be written, when the system said ("No such file or directory").
-  const auto reason = [](int error) { return error != 0 ? std::string(": ") + std::strerror(error) : std::string(); };
   for (std::size_t i = 0; i < files.size(); ++i) {
     errno = 0;
-    std::ofstream out(partial(files[i]), std::ios::binary | std::ios::trunc);
+    std::ofstream out(partial(files[i].path), std::ios::binary | std::ios::trunc);
     if (out) {
       try {
         if (files[i].write) files[i].write(out);
@@ -68,7 +94,7 @@ void write_files_atomically(const std::vector<OutputFile>& files) {
     }
   }
   for (std::size_t i = 0; i < files.size(); ++i)
-    if (std::rename(partial(files[i]).c_str(), files[i].path.c_str()) != 0) {
+    if (std::rename(partial(files[i].path).c_str(), files[i].path.c_str()) != 0) {
       const int error = errno;
       remove_partials(i, files.size());
       throw UsageError("cannot write " + files[i].path + reason(error));

@@ -38,6 +38,10 @@ struct OutputFile {
   std::function<void(std::ostream&)> write = {};
 };
 void write_files_atomically(const std::vector<OutputFile>& files);
+// Before long work: refuses (UsageError) the outputs write_files_atomically would fail to write
+// — two at one path, a directory, a folder that is missing or not writable — by creating and
+// removing each one's temporary file. Empty paths (outputs not asked for) are skipped.
+void check_outputs(const std::vector<std::string>& paths);
 void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace anisocert::cli

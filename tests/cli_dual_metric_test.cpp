@@ -84,6 +84,10 @@ TEST(CliDual, BadInputIsRefusedAndNothingIsWritten) {
   EXPECT_EQ(no_metric.exit_code, 2);
   EXPECT_NE(no_metric.err.find("has no metric"), std::string::npos) << no_metric.err;
   EXPECT_FALSE(fs::exists(json));
+  // An output that cannot be written is refused before the diagram is computed: no progress line.
+  const Outcome unwritable = run("dual " + fixtures + "freefem-lshape-shock-coarse.msh --field shock --json /nonexistent/dir/d.json");
+  EXPECT_EQ(unwritable.exit_code, 2);
+  EXPECT_EQ(unwritable.err, "anisocert: cannot write /nonexistent/dir/d.json: No such file or directory\n");
 }
 
 TEST(CliMetric, AMeshCertifiedWithTheWrittenMetricGetsTheReportOfTheField) {

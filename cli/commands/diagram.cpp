@@ -33,6 +33,7 @@ void add_diagram(CLI::App& app, int& exit_code) {
   c->add_option("--threads", o->outputs.threads, "threads for candidate triples and pairs (default: every core)")
       ->check(CLI::Range(1, 1024));
   c->callback([o, &exit_code] {
+    check_outputs({o->outputs.json_path, o->outputs.svg_path});  // before the diagram, which can take minutes
     geometry::Mesh<Rational> in;
     try {
       in = io::read_mesh_json_file(o->input);

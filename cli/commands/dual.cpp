@@ -26,6 +26,7 @@ struct DualOptions {
 constexpr std::size_t described_witnesses = 100;
 
 int run_dual(const DualOptions& o) {
+  check_outputs({o.json_path, o.svg_path});  // before the diagram, which can take minutes
   io::MeshFile file = read_mesh_input(o.in);
   geometry::Mesh<Rational>& mesh = file.mesh;
   if (mesh.triangles.empty()) throw UsageError(o.in.path + ": the file has no triangles");

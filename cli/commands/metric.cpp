@@ -56,7 +56,11 @@ int run_metric(const MetricOptions& o) {
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }
-  f.mesh.metrics = metrics_at(field_source(o.field, o.params), o.field, f.mesh.sites);
+  FieldSource source = field_source(o.field, o.params);
+  // A file holds decimals or doubles, and a background mesh's exact P1 values are rationals with
+  // no finite decimal expansion in general: every field is written at its doubles.
+  source.background = nullptr;
+  f.mesh.metrics = metrics_at(source, o.field, f.mesh.sites);
   std::vector<OutputFile> files;
   try {
     for (const std::string& path : o.outputs) {
@@ -88,14 +92,16 @@ void add_metric(CLI::App& app, int& exit_code) {
       "--field` checks: at the vertices of a mesh (--at; e.g. a BAMG .mtr for FreeFem's adaptmesh, a Medit .sol for\n"
       "MMG) or on an N x N grid of a box (--grid; e.g. a Gmsh tensor view .pos, the background field of Gmsh's BAMG).\n"
       "Each -o is written in the format of its extension: a metric file (.mtr, .sol, .solb: the metrics only) or a\n"
-      "mesh file with its metrics (.pos, .msh, .mesh, .json, ...). Values are the field's doubles, written exactly.\n"
+      "mesh file with its metrics (.pos, .msh, .mesh, .json, ...). Values are the field's doubles (a background\nmesh's too), written exactly.\n"
       "Example: anisocert metric --field shock --grid 100 --box -0.01 -0.01 1.01 1.01 -o bg.pos");
   c->add_option("--field", o->field, "a built-in field (see refine --help) or background:MESH[:METRIC]")->required();
   c->add_option("--param", o->params, "a parameter of the built-in field, name=value (repeatable)");
-  c->add_option("--at", o->at, "the mesh at whose vertices to write the metric");
-  c->add_option("--format", o->format, "the format of --at, when the extension does not tell");
-  c->add_option("--grid", o->grid, "N: an N x N grid of --box, two triangles per cell")->check(CLI::Range(1, 2000));
-  c->add_option("--box", o->box, "X0 Y0 X1 Y1 of --grid (exact decimals)")->expected(4)->capture_default_str();
+  CLI::Option* at = c->add_option("--at", o->at, "the mesh at whose vertices to write the metric");
+  c->add_option("--format", o->format, "the format of --at, when the extension does not tell")->needs(at);
+  // A .pos triangle takes about 2 KB (each double's exact decimal expansion): 400 x 400 cells are 640 MB.
+  CLI::Option* grid = c->add_option("--grid", o->grid, "N: an N x N grid of --box, two triangles per cell (N at most 400)")
+                          ->check(CLI::Range(1, 400));
+  c->add_option("--box", o->box, "X0 Y0 X1 Y1 of --grid (exact decimals)")->expected(4)->capture_default_str()->needs(grid);
   c->add_option("-o,--output", o->outputs, "a file to write (repeatable; all are written or none)")->required();
   c->callback([o, &exit_code] { exit_code = run_metric(*o); });
 }

@@ -262,6 +262,33 @@ TEST(ValidateBadInput, PeerWritesAMalformedMesh) {
   expect_refused(validate("--peer gmsh --out " + out, "GMSH=" + gmsh), "validate: gmsh: its mesh: anisocert: mesh.msh", out);
 }
 
+TEST(ValidateBadInput, AnOptionWithoutItsValueIsRefusedNotLoopedOn) {
+  const Outcome r = run_command("timeout 20 bash " + source_dir + "/scripts/validate --peer gmsh --field");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "validate: --field needs a value (see scripts/validate --help)\n");
+}
+
+TEST(ValidateBadInput, AnOutThatIsAFileIsRefusedBeforeAnyWork) {
+  const std::string file = fresh_dir("out_file");
+  std::ofstream(file) << "not a folder\n";
+  const Outcome r = validate("--peer bamg --out " + file);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");  // refused before the peer ran
+  EXPECT_EQ(r.err, "validate: --out: cannot write in \"" + file + "\"\n");
+  fs::remove(file);
+}
+
+// The steps run in a temporary folder: a relative --out is where the user is, not there.
+TEST(Validate, ARelativeOutIsWrittenWhereTheUserIs) {
+  const std::string cwd = fresh_dir("relative");
+  fs::create_directories(cwd);
+  const Outcome r = run_command("cd " + cwd + " && ANISOCERT=" + std::string(ANISOCERT_BIN) + " bash " + source_dir +
+                                "/scripts/validate --peer bamg --rounds 1 --out here");
+  EXPECT_LE(r.exit_code, 1) << r.err;
+  for (const char* f : {"mesh.msh", "certify.json", "certify.svg", "certify.txt"}) EXPECT_TRUE(fs::exists(cwd + "/here/" + f)) << f;
+  fs::remove_all(cwd);
+}
+
 TEST(ValidateBadInput, BadFieldParameterNamesTheStep) {
   const std::string out = fresh_dir("param");
   expect_refused(validate("--peer bamg --param h=-1 --out " + out),
