@@ -97,9 +97,10 @@ DiagramCounts diagram_counts(const Diagram& d) {
   c.nodes = d.nodes.size(), c.arcs = d.arcs.size(), c.faces = d.faces.size();
   for (const auto& n : d.nodes) {
     if (n.kind == oracle::Node::Kind::voronoi) ++c.voronoi_vertices;
-    if (n.sites.size() >= 2 && !n.wedged) ++c.wedge_violations;
+    if (n.sites.size() >= 2 && !n.wedged) ++c.unwedged_vertices;
   }
-  for (const auto& a : d.arcs) c.wedge_violations += a.wedged ? 0 : 1;
+  for (const auto& a : d.arcs) c.unwedged_arcs += a.wedged ? 0 : 1;
+  c.wedge_violations = c.unwedged_arcs + c.unwedged_vertices;
   for (const auto& f : d.faces) c.orphans += f.orphan ? 1 : 0;
   return c;
 }

@@ -24,6 +24,7 @@ OrderedJson filter_counts_json(const oracle::FilterCounts& f);
 
 struct DiagramCounts {
   std::size_t voronoi_vertices = 0, nodes = 0, arcs = 0, faces = 0, orphans = 0, wedge_violations = 0;
+  std::size_t unwedged_arcs = 0, unwedged_vertices = 0;  // wedge_violations = their sum
 };
 DiagramCounts diagram_counts(const oracle::Diagram& d);
 

@@ -15,23 +15,11 @@ std::string owners_text(const std::vector<int>& sites) {
   return "(" + s + ")";
 }
 
-struct Wedges {
-  std::size_t arcs = 0, vertices = 0;
-};
-
-Wedges unwedged(const oracle::Diagram& d) {
-  Wedges w;
-  for (const auto& a : d.arcs) w.arcs += a.wedged ? 0 : 1;
-  for (const auto& n : d.nodes) w.vertices += (n.sites.size() >= 2 && !n.wedged) ? 1 : 0;
-  return w;
-}
-
 }  // namespace
 
 std::string dual_text(const oracle::Diagram& d, const oracle::MeshDual& m, const std::string& input, const std::string& metric_source) {
   const std::size_t n = m.kinds.size();
   const DiagramCounts c = diagram_counts(d);
-  const Wedges w = unwedged(d);
   std::ostringstream o;
   o << input << ": " << d.input.sites.size() << " vertices, " << n << " triangles, metrics from " << metric_source
     << "; D|Ω of its vertices, Ω its boundary (" << d.input.domain.size() << " corners)\n"
@@ -44,8 +32,8 @@ std::string dual_text(const oracle::Diagram& d, const oracle::MeshDual& m, const
   for (std::size_t k = 0; k < m.missing.size() && k < 3; ++k)
     o << "    Voronoi vertex " << m.missing[k].vertex << " owned by " << owners_text(m.missing[k].sites) << "\n";
   if (m.missing_count > 3) o << "    … and " << m.missing_count - 3 << " more\n";
-  o << "  D|Ω: " << c.voronoi_vertices << " Voronoi vertices, " << c.arcs << " arcs, " << c.orphans << " orphans, " << w.arcs
-    << " unwedged arcs, " << w.vertices << " unwedged vertices; its dual "
+  o << "  D|Ω: " << c.voronoi_vertices << " Voronoi vertices, " << c.arcs << " arcs, " << c.orphans << " orphans, " << c.unwedged_arcs
+    << " unwedged arcs, " << c.unwedged_vertices << " unwedged vertices; its dual "
     << (d.dual_check.is_triangulation ? "is a triangulation of Ω" : "is not a triangulation of Ω") << "\n"
     << "  Theorem 7 preconditions: " << (d.theorem7.preconditions_hold ? "hold" : "do not hold");
   if (!d.theorem7.reasons.empty()) o << " (" << d.theorem7.reasons.front() << (d.theorem7.reasons.size() > 1 ? ", …" : "") << ")";
@@ -59,7 +47,6 @@ std::string dual_text(const oracle::Diagram& d, const oracle::MeshDual& m, const
 nlohmann::ordered_json dual_json(const oracle::Diagram& d, const oracle::MeshDual& m, const std::string& metric_source) {
   using J = nlohmann::ordered_json;
   const DiagramCounts c = diagram_counts(d);
-  const Wedges w = unwedged(d);
   J not_dual = J::array(), missing = J::array(), reasons = J::array();
   for (const auto& x : m.not_dual_witnesses) not_dual.push_back({{"triangle", x.triangle}, {"why", x.why}});
   for (const auto& x : m.missing) missing.push_back({{"voronoi_vertex", x.vertex}, {"sites", x.sites}});
@@ -71,7 +58,7 @@ nlohmann::ordered_json dual_json(const oracle::Diagram& d, const oracle::MeshDua
           {"not_dual", {{"count", m.not_dual}, {"first", not_dual}}},
           {"missing", {{"count", m.missing_count}, {"first", missing}}},
           {"diagram", {{"voronoi_vertices", c.voronoi_vertices}, {"arcs", c.arcs}, {"faces", c.faces}, {"orphans", c.orphans},
-                       {"unwedged_arcs", w.arcs}, {"unwedged_vertices", w.vertices}, {"dual_triangles", d.dual_triangles.size()},
+                       {"unwedged_arcs", c.unwedged_arcs}, {"unwedged_vertices", c.unwedged_vertices}, {"dual_triangles", d.dual_triangles.size()},
                        {"dual_polygons", d.dual_polygons.size()}, {"dual_is_triangulation", d.dual_check.is_triangulation}}},
           {"theorem7", {{"preconditions_hold", d.theorem7.preconditions_hold}, {"reasons_count", d.theorem7.reasons.size()},
                         {"reasons", reasons}, {"disagreement", d.theorem7.disagreement}}},

@@ -19,7 +19,6 @@ Triple sorted(Triple t) {
 std::string why_not_dual(const Diagram& d, const Triple& t, const std::set<std::pair<int, int>>& arc_pairs,
                          const std::map<std::pair<int, int>, std::vector<int>>& nodes_of_pair) {
   const std::array<std::pair<int, int>, 3> pairs{{{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}}};
-  const std::array<int, 3> third{t[2], t[0], t[1]};
   for (const auto& [a, b] : pairs)
     if (!arc_pairs.count({a, b}))
       return "the cells of sites " + std::to_string(a) + " and " + std::to_string(b) + " share no Voronoi arc of D|Ω";
@@ -27,7 +26,7 @@ std::string why_not_dual(const Diagram& d, const Triple& t, const std::set<std::
   const auto it = nodes_of_pair.find({a, b});
   if (it == nodes_of_pair.end())
     return "the Voronoi arcs of sites " + std::to_string(a) + " and " + std::to_string(b) + " end only on ∂Ω, never at a vertex owned by " +
-           std::to_string(third[0]);
+           std::to_string(t[2]);
   std::string nodes;
   for (std::size_t k = 0; k < it->second.size() && k < 4; ++k) {
     const Node& n = d.nodes[it->second[k]];
@@ -37,7 +36,7 @@ std::string why_not_dual(const Diagram& d, const Triple& t, const std::set<std::
   }
   if (it->second.size() > 4) nodes += "; …";
   return "the Voronoi arcs of sites " + std::to_string(a) + " and " + std::to_string(b) + " end at vertices " + nodes + ", none owned by " +
-         std::to_string(third[0]);
+         std::to_string(t[2]);
 }
 
 }  // namespace
