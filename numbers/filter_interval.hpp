@@ -54,6 +54,22 @@ struct FilterInterval {
     return std::nullopt;
   }
 
+  bool has_zero() const { return !(lo > 0 || hi < 0); }
+  // [lo, hi] ⊂ (outer.lo, outer.hi).
+  bool strictly_inside(const FilterInterval& outer) const { return lo > outer.lo && hi < outer.hi; }
+  // A double of the interval near its middle (any point will do for centred forms and Krawczyk's
+  // operator); NaN for an interval with a NaN end.
+  FilterInterval midpoint() const {
+    const double m = std::clamp(0.5 * lo + 0.5 * hi, lo, hi);  // halves first: no overflow
+    return m;
+  }
+  friend std::optional<FilterInterval> intersection(const FilterInterval& a, const FilterInterval& b) {
+    if (!(a.lo <= b.hi && b.lo <= a.hi)) return std::nullopt;  // disjoint, or NaN
+    return FilterInterval(std::max(a.lo, b.lo), std::min(a.hi, b.hi));
+  }
+  double lower_double() const { return lo; }
+  double upper_double() const { return hi; }
+
   friend FilterInterval operator+(const FilterInterval& a, const FilterInterval& b) {
     return widen(a.lo + b.lo, a.hi + b.hi);
   }
@@ -79,6 +95,12 @@ struct FilterInterval {
     return widen(std::min(p1, p2), std::max(p1, p2));
   }
   friend FilterInterval operator*(double s, const FilterInterval& a) { return a * s; }
+  // {x² : x ∈ a}, tighter than a · a when a holds 0.
+  friend FilterInterval sqr(const FilterInterval& a) {
+    if (a.lo >= 0) return widen(a.lo * a.lo, a.hi * a.hi);
+    if (a.hi <= 0) return widen(a.hi * a.hi, a.lo * a.lo);
+    return {0, next_up(std::max(a.lo * a.lo, a.hi * a.hi))};
+  }
   // The least of two values, for every pair of points of the two intervals.
   friend FilterInterval min(const FilterInterval& a, const FilterInterval& b) {
     return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)};

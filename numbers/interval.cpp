@@ -22,6 +22,13 @@ Interval::Interval(mpfr_srcptr lo, mpfr_srcptr hi, mpfr_prec_t prec) : Interval(
   mpfi_interv_fr(v_, lo, hi);
 }
 
+Interval::Interval(double d, mpfr_prec_t prec) : Interval(prec) { mpfi_set_d(v_, d); }
+
+Interval::Interval(double lo, double hi, mpfr_prec_t prec) : Interval(prec) {
+  if (!(lo <= hi)) throw std::logic_error("Interval: lo > hi");
+  mpfi_interv_d(v_, lo, hi);
+}
+
 Interval Interval::pi(mpfr_prec_t prec) {
   Interval r(prec);
   mpfi_const_pi(r.v_);
@@ -50,6 +57,32 @@ bool Interval::inside(const Rational& a, const Rational& b) const {
   return mpfr_cmp_q(lower(), a.backend().data()) >= 0 && mpfr_cmp_q(upper(), b.backend().data()) <= 0;
 }
 
+bool Interval::strictly_inside(const Interval& outer) const {
+  return mpfr_cmp(lower(), outer.lower()) > 0 && mpfr_cmp(upper(), outer.upper()) < 0;
+}
+
+Interval Interval::midpoint() const {
+  mpfr_t m;
+  mpfr_init2(m, precision());
+  mpfi_mid(m, v_);  // rounded to nearest: a point of [lo, hi], which is all a midpoint must be
+  Interval r(m, m, precision());
+  mpfr_clear(m);
+  return r;
+}
+
+Interval Interval::at_precision(mpfr_prec_t prec) const {
+  Interval r(prec);
+  mpfi_set(r.v_, v_);
+  return r;
+}
+
+std::optional<Interval> intersection(const Interval& a, const Interval& b) {
+  if (mpfr_cmp(a.upper(), b.lower()) < 0 || mpfr_cmp(b.upper(), a.lower()) < 0) return std::nullopt;
+  Interval r = a.at_precision(std::max(a.precision(), b.precision()));
+  mpfi_intersect(r.v_, a.v_, b.v_);
+  return r;
+}
+
 #define ANISOCERT_BINARY(op, fn)                                 \
   Interval operator op(const Interval& a, const Interval& b) {   \
     Interval r(joint(a, b));                                     \
@@ -60,6 +93,12 @@ ANISOCERT_BINARY(+, mpfi_add)
 ANISOCERT_BINARY(-, mpfi_sub)
 ANISOCERT_BINARY(*, mpfi_mul)
 #undef ANISOCERT_BINARY
+
+Interval operator-(const Interval& a) {
+  Interval r(a.precision());
+  mpfi_neg(r.v_, a.v_);
+  return r;
+}
 
 Interval operator/(const Interval& a, const Interval& b) {
   if (mpfi_has_zero(b.v_)) throw std::domain_error("interval division by an interval containing 0");

@@ -13,6 +13,8 @@
 
 #include <mpfi.h>
 
+#include <optional>
+
 namespace anisocert {
 
 class Interval {
@@ -21,6 +23,10 @@ class Interval {
   Interval(const Rational& q, mpfr_prec_t prec);
   // [lo, hi] for MPFR numbers lo <= hi (rounded outward if they have more than prec bits).
   Interval(mpfr_srcptr lo, mpfr_srcptr hi, mpfr_prec_t prec);
+  // The point d (exact when prec >= 53).
+  Interval(double d, mpfr_prec_t prec);
+  // [lo, hi] for doubles lo <= hi (exact when prec >= 53).
+  Interval(double lo, double hi, mpfr_prec_t prec);
   static Interval pi(mpfr_prec_t prec);
 
   Interval(const Interval& other);
@@ -37,11 +43,23 @@ class Interval {
   bool contains(const Rational& q) const;
   // [lo, hi] ⊂ [a, b] for rationals a <= b.
   bool inside(const Rational& a, const Rational& b) const;
+  bool has_zero() const { return mpfi_has_zero(v_) > 0; }
+  // [lo, hi] ⊂ (outer.lo, outer.hi).
+  bool strictly_inside(const Interval& outer) const;
+  // A point of the interval near its middle, as a point interval (for centred forms and
+  // Krawczyk's operator, where any point of the interval will do).
+  Interval midpoint() const;
+  // The same interval at a higher precision (exact), or rounded outward to a lower one.
+  Interval at_precision(mpfr_prec_t prec) const;
+  // The endpoints rounded outward to doubles.
+  double lower_double() const { return mpfr_get_d(lower(), MPFR_RNDD); }
+  double upper_double() const { return mpfr_get_d(upper(), MPFR_RNDU); }
 
   friend Interval operator+(const Interval& a, const Interval& b);
   friend Interval operator-(const Interval& a, const Interval& b);
   friend Interval operator*(const Interval& a, const Interval& b);
   friend Interval operator/(const Interval& a, const Interval& b);
+  friend Interval operator-(const Interval& a);
   friend Interval operator+(const Interval& a, long b);
   friend Interval operator-(const Interval& a, long b);
   friend Interval operator+(long a, const Interval& b);
@@ -59,12 +77,15 @@ class Interval {
   friend Interval asin(const Interval& a);
   friend Interval acos(const Interval& a);
   friend Interval atan(const Interval& a);
+  friend std::optional<Interval> intersection(const Interval& a, const Interval& b);
 
  private:
   explicit Interval(mpfr_prec_t prec);
   mpfi_t v_;
 };
 
+// a ∩ b, or nothing when they are disjoint.
+std::optional<Interval> intersection(const Interval& a, const Interval& b);
 // a < b for every point of a and of b (hi(a) < lo(b)).
 bool certainly_less(const Interval& a, const Interval& b);
 // The degree measure of an angle given in radians, and the reverse.

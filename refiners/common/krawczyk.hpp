@@ -1,0 +1,113 @@
+#pragma once
+// Krawczyk's operator for the points equidistant from three sites a, b, c (the candidates for a
+// Voronoi vertex, LS §7), on a box X of any interval type T:
+//   F(x) = (Q_a(x) − Q_b(x), Q_a(x) − Q_c(x)),   J(x) = its Jacobian,
+//   K(X) = m − Y F(m) + (I − Y J(X)) (X − m),
+// for a point m of X and any matrix Y (here an approximate inverse of J(m)). Every zero of F in X
+// lies in K(X); K(X) ⊂ int X proves that X holds exactly one (R. Krawczyk, Computing 4 (1969);
+// A. Neumaier, Interval Methods for Systems of Equations (1990), §5.1). So K(X) ∩ X = ∅ proves
+// that X holds none. These are the only conclusions drawn from it.
+//
+// F is quadratic, so its expansion at m is exact: with δ = x − m and H₁ = M_a − M_b,
+// H₂ = M_a − M_c (half the rows' Hessians),
+//   F_i(x) = F_i(m) + ∇F_i(m)·δ + δᵀ H_i δ,   ½∇F_i(x) = ½∇F_i(m) + H_i δ.
+// Evaluated on a box this form is much tighter than Q_a − Q_b term by term: where two metrics are
+// equal (H_i = 0, a straight bisector) it is the exact range up to rounding.
+
+#include "refiners/common/distance_function.hpp"
+
+#include <optional>
+
+namespace anisocert::refiners::common {
+
+template <class T>
+struct Box2 {
+  T x, y;
+};
+
+template <class T>
+using SitesIn = std::array<SiteIn<T>, 3>;
+
+// F of three sites, in T.
+template <class T>
+class Equidistance {
+ public:
+  explicit Equidistance(const SitesIn<T>& s)
+      : s_(s),
+        H_{Sym2<T>{s[0].m11 - s[1].m11, s[0].m12 - s[1].m12, s[0].m22 - s[1].m22},
+           Sym2<T>{s[0].m11 - s[2].m11, s[0].m12 - s[2].m12, s[0].m22 - s[2].m22}} {}
+
+  // F at a point (x and y are points of T).
+  std::array<T, 2> at(const T& x, const T& y) const {
+    const T qa = distance2(s_[0], x, y);
+    return {qa - distance2(s_[1], x, y), qa - distance2(s_[2], x, y)};
+  }
+
+  // ½J at a point, row by row: M_a(x − a) − M_b(x − b), M_a(x − a) − M_c(x − c).
+  std::array<T, 4> half_jacobian(const T& x, const T& y) const {
+    const auto ga = half_gradient(s_[0], x, y), gb = half_gradient(s_[1], x, y), gc = half_gradient(s_[2], x, y);
+    return {ga[0] - gb[0], ga[1] - gb[1], ga[0] - gc[0], ga[1] - gc[1]};
+  }
+
+  // ½J on the box m + δ, from ½J(m) (δ = X − m).
+  std::array<T, 4> half_jacobian(const std::array<T, 4>& at_m, const T& dx, const T& dy) const {
+    return {at_m[0] + (H_[0].m11 * dx + H_[0].m12 * dy), at_m[1] + (H_[0].m12 * dx + H_[0].m22 * dy),
+            at_m[2] + (H_[1].m11 * dx + H_[1].m12 * dy), at_m[3] + (H_[1].m12 * dx + H_[1].m22 * dy)};
+  }
+
+  // F on the box X: the exact expansion at X's midpoint.
+  std::array<T, 2> on(const Box2<T>& X) const {
+    const T mx = X.x.midpoint(), my = X.y.midpoint();
+    const T dx = X.x - mx, dy = X.y - my;
+    const auto F = at(mx, my);
+    const auto g = half_jacobian(mx, my);
+    const T sx = sqr(dx), sy = sqr(dy), xy = dx * dy;
+    const auto term = [&](int i) {
+      const Sym2<T>& h = H_[i];
+      return ((g[2 * i] * dx + g[2 * i + 1] * dy) + (g[2 * i] * dx + g[2 * i + 1] * dy)) +
+             (h.m11 * sx + (h.m12 * xy + h.m12 * xy) + h.m22 * sy);
+    };
+    return {F[0] + term(0), F[1] + term(1)};
+  }
+
+ private:
+  SitesIn<T> s_;
+  std::array<Sym2<T>, 2> H_;
+};
+
+enum class KrawczykVerdict {
+  no_zero,      // K(X) ∩ X = ∅
+  unique_zero,  // K(X) ⊂ int X
+  unknown,      // neither: `box` is K(X) ∩ X, which holds every zero of X
+};
+
+template <class T>
+struct KrawczykStep {
+  KrawczykVerdict verdict;
+  Box2<T> box;  // K(X) when unique, K(X) ∩ X when unknown
+};
+
+// One application of K to X. `one` is 1 in T.
+template <class T>
+KrawczykStep<T> krawczyk(const Equidistance<T>& F, const Box2<T>& X, const T& one) {
+  const T mx = X.x.midpoint(), my = X.y.midpoint();
+  const T dx = X.x - mx, dy = X.y - my;
+  // Y = mid(½J(m))⁻¹; K with Y/2 in place of Y is then m − Y·(½F(m)) + (I − Y·½J(X))(X − m).
+  const auto Jm = F.half_jacobian(mx, my);
+  const T a = Jm[0].midpoint(), b = Jm[1].midpoint(), c = Jm[2].midpoint(), d = Jm[3].midpoint();
+  const T det = a * d - b * c;
+  if (det.has_zero()) return {KrawczykVerdict::unknown, X};
+  const T y11 = (d / det).midpoint(), y12 = (-b / det).midpoint(), y21 = (-c / det).midpoint(), y22 = (a / det).midpoint();
+  const auto Fm = F.at(mx, my);
+  const T half = one / 2, hf0 = Fm[0] * half, hf1 = Fm[1] * half;
+  const auto JX = F.half_jacobian(Jm, dx, dy);
+  const T c11 = one - (y11 * JX[0] + y12 * JX[2]), c12 = -(y11 * JX[1] + y12 * JX[3]);
+  const T c21 = -(y21 * JX[0] + y22 * JX[2]), c22 = one - (y21 * JX[1] + y22 * JX[3]);
+  Box2<T> K{mx - (y11 * hf0 + y12 * hf1) + (c11 * dx + c12 * dy), my - (y21 * hf0 + y22 * hf1) + (c21 * dx + c22 * dy)};
+  auto ix = intersection(K.x, X.x), iy = intersection(K.y, X.y);
+  if (!ix || !iy) return {KrawczykVerdict::no_zero, X};
+  if (K.x.strictly_inside(X.x) && K.y.strictly_inside(X.y)) return {KrawczykVerdict::unique_zero, K};
+  return {KrawczykVerdict::unknown, {*ix, *iy}};
+}
+
+}  // namespace anisocert::refiners::common

@@ -1,0 +1,171 @@
+#include "refiners/common/voronoi_vertex.hpp"
+
+#include "predicates/orientation.hpp"
+
+#include <cmath>
+
+namespace anisocert::refiners::common {
+namespace {
+
+using FI = FilterInterval;
+
+Equidistance<FI> in_doubles(const Trio& s) {
+  const auto of = [](double d) { return FI(d); };
+  return Equidistance<FI>({lift<FI>(s[0], of), lift<FI>(s[1], of), lift<FI>(s[2], of)});
+}
+
+bool same_metric(const Sym2<double>& a, const Sym2<double>& b) {
+  return a.m11 == b.m11 && a.m12 == b.m12 && a.m22 == b.m22;
+}
+bool equal_metrics(const Trio& s) { return same_metric(s[0].M, s[1].M) && same_metric(s[0].M, s[2].M); }
+
+bool inside(const Box2<FI>& inner, const Box2<FI>& outer) {
+  return inner.x.lo >= outer.x.lo && inner.x.hi <= outer.x.hi && inner.y.lo >= outer.y.lo && inner.y.hi <= outer.y.hi;
+}
+bool meet(const Box2<FI>& a, const Box2<FI>& b) { return intersection(a.x, b.x) && intersection(a.y, b.y); }
+double width(const FI& a) { return a.hi - a.lo; }
+
+// Krawczyk iterated on a box that holds exactly one point, while it shrinks.
+Box2<FI> tighten(const Equidistance<FI>& s, Box2<FI> K) {
+  for (int i = 0; i < 8; ++i) {
+    const KrawczykStep<FI> k = krawczyk(s, K, FI(1.0));
+    if (k.verdict == KrawczykVerdict::no_zero) break;  // cannot happen with a point inside: keep K
+    const bool shrank = width(k.box.x) < width(K.x) || width(k.box.y) < width(K.y);
+    K = k.box;
+    if (!shrank) break;
+  }
+  return K;
+}
+
+// Newton's method in doubles from X's midpoint; when it settles within reach of X, a small box
+// around where it lands, certified by Krawczyk (the box may reach beyond X).
+std::optional<VertexBox> newton_box(const Trio& t, const Equidistance<FI>& s, const Box2<FI>& X) {
+  double x = X.x.midpoint().lo, y = X.y.midpoint().lo, step = 0;
+  bool settled = false;
+  for (int i = 0; i < 12 && !settled; ++i) {
+    const auto qa = [&](int k) {
+      const double dx = x - t[k].p.x, dy = y - t[k].p.y;
+      return dx * (t[k].M.m11 * dx + t[k].M.m12 * dy) + dy * (t[k].M.m12 * dx + t[k].M.m22 * dy);
+    };
+    const auto g = [&](int k) {
+      const double dx = x - t[k].p.x, dy = y - t[k].p.y;
+      return std::array<double, 2>{t[k].M.m11 * dx + t[k].M.m12 * dy, t[k].M.m12 * dx + t[k].M.m22 * dy};
+    };
+    const double f0 = (qa(0) - qa(1)) / 2, f1 = (qa(0) - qa(2)) / 2;
+    const auto ga = g(0), gb = g(1), gc = g(2);
+    const double a = ga[0] - gb[0], b = ga[1] - gb[1], c = ga[0] - gc[0], d = ga[1] - gc[1], det = a * d - b * c;
+    if (!(std::abs(det) > 0) || !std::isfinite(det)) return std::nullopt;
+    const double sx = (d * f0 - b * f1) / det, sy = (a * f1 - c * f0) / det;
+    x -= sx;
+    y -= sy;
+    step = std::hypot(sx, sy);
+    settled = step <= 0x1p-50 * (std::abs(x) + std::abs(y)) || step == 0;
+  }
+  if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
+  const double reach_x = width(X.x), reach_y = width(X.y);
+  if (x < X.x.lo - reach_x || x > X.x.hi + reach_x || y < X.y.lo - reach_y || y > X.y.hi + reach_y) return std::nullopt;
+  double r = 8 * step + 0x1p-44 * (std::abs(x) + std::abs(y)) + 0x1p-1000;
+  for (int attempt = 0; attempt < 3; ++attempt, r *= 1024) {
+    const Box2<FI> R{FI::widen(x - r, x + r), FI::widen(y - r, y + r)};
+    const KrawczykStep<FI> k = krawczyk(s, R, FI(1.0));
+    if (k.verdict == KrawczykVerdict::unique_zero) return VertexBox{tighten(s, k.box), R};
+    if (k.verdict == KrawczykVerdict::no_zero) return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+// Adds a certified vertex unless it is one already found; false when that cannot be decided.
+bool add(std::vector<VertexBox>& found, const VertexBox& v) {
+  for (const VertexBox& u : found) {
+    const std::optional<bool> same = same_vertex(u, v);
+    if (!same) return false;
+    if (*same) return true;
+  }
+  found.push_back(v);
+  return true;
+}
+
+}  // namespace
+
+std::optional<bool> same_vertex(const VertexBox& u, const VertexBox& v) {
+  if (!meet(u.box, v.box)) return false;
+  if (inside(v.box, u.isolating) || inside(u.box, v.isolating)) return true;
+  return std::nullopt;
+}
+
+VertexSearch vertices_in(const Trio& t, const Box2<FilterInterval>& search, int budget) {
+  VertexSearch out;
+  if (equal_metrics(t) && predicates::orientation(t[0].p, t[1].p, t[2].p) == Sign::zero)
+    return out;  // the bisectors are parallel lines, or one line: no single point is equidistant
+  const Equidistance<FI> s = in_doubles(t);
+  std::vector<Box2<FI>> pending{search};
+  const auto undecided = [&out] {
+    out.complete = false;
+    return out;
+  };
+  for (; !pending.empty(); ++out.boxes) {
+    if (out.boxes == budget) return undecided();
+    const Box2<FI> X = pending.back();
+    pending.pop_back();
+    bool known = false;
+    for (const VertexBox& v : out.vertices) known = known || inside(X, v.isolating);
+    if (known) continue;  // at most the point already found
+    const auto F = s.on(X);
+    if (!F[0].has_zero() || !F[1].has_zero()) continue;
+    const KrawczykStep<FI> k = krawczyk(s, X, FI(1.0));
+    if (k.verdict == KrawczykVerdict::no_zero) continue;
+    if (k.verdict == KrawczykVerdict::unique_zero) {
+      if (!add(out.vertices, {tighten(s, k.box), X})) return undecided();
+      continue;
+    }
+    if (auto v = newton_box(t, s, X))
+      if (!add(out.vertices, *v)) return undecided();
+    // Halve the wider side of K(X) ∩ X; a side that no double splits ends the search undecided.
+    const Box2<FI>& Y = k.box;
+    const bool along_x = width(Y.x) >= width(Y.y);
+    const FI& side = along_x ? Y.x : Y.y;
+    const double m = side.midpoint().lo;
+    if (!(m > side.lo && m < side.hi)) return undecided();
+    if (along_x) {
+      pending.push_back({FI(side.lo, m), Y.y});
+      pending.push_back({FI(m, side.hi), Y.y});
+    } else {
+      pending.push_back({Y.x, FI(side.lo, m)});
+      pending.push_back({Y.x, FI(m, side.hi)});
+    }
+  }
+  return out;
+}
+
+Box2<Interval> enclose(const Trio& t, const VertexBox& v, mpfr_prec_t bits) {
+  const auto of = [bits](double d) { return Interval(d, bits); };
+  const Equidistance<Interval> s({lift<Interval>(t[0], of), lift<Interval>(t[1], of), lift<Interval>(t[2], of)});
+  const Interval one(1.0, bits);
+  Box2<Interval> X{Interval(v.isolating.x.lo, v.isolating.x.hi, bits), Interval(v.isolating.y.lo, v.isolating.y.hi, bits)};
+  // Krawczyk's image of a box holding one zero holds it too; it contracts about quadratically.
+  for (int i = 0; i < 64; ++i) {
+    const KrawczykStep<Interval> k = krawczyk(s, X, one);
+    if (k.verdict == KrawczykVerdict::no_zero) break;  // not with a zero inside; keep X
+    const bool shrank = mpfr_cmp(k.box.x.lower(), X.x.lower()) != 0 || mpfr_cmp(k.box.x.upper(), X.x.upper()) != 0 ||
+                        mpfr_cmp(k.box.y.lower(), X.y.lower()) != 0 || mpfr_cmp(k.box.y.upper(), X.y.upper()) != 0;
+    X = k.box;  // K(X) ⊂ X when unique, K(X) ∩ X otherwise
+    if (!shrank) break;
+  }
+  return X;
+}
+
+std::optional<Point2<Rational>> rational_vertex(const Trio& t) {
+  if (!equal_metrics(t)) return std::nullopt;
+  const auto of = [](double d) { return Rational(d); };
+  const Equidistance<Rational> s({lift<Rational>(t[0], of), lift<Rational>(t[1], of), lift<Rational>(t[2], of)});
+  const Rational zero(0);
+  const auto J = s.half_jacobian(zero, zero);
+  const auto F0 = s.at(zero, zero);
+  // F(x) = F(0) + 2 (½J) x for a linear F: solve (½J) x = −F(0)/2.
+  const Rational det = J[0] * J[3] - J[1] * J[2];
+  if (det == 0) return std::nullopt;
+  const Rational r0 = -F0[0] / 2, r1 = -F0[1] / 2;
+  return Point2<Rational>{(J[3] * r0 - J[1] * r1) / det, (J[0] * r1 - J[2] * r0) / det};
+}
+
+}  // namespace anisocert::refiners::common
