@@ -7,7 +7,7 @@
 
 #include "oracle/algebraic/conic_intersection.hpp"
 #include "predicates/orientation.hpp"
-#include "refiners/common/voronoi_vertex.hpp"
+#include "refiners/common/certified_point.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -173,9 +173,10 @@ RC_GTEST_PROP(RefinerVoronoiVertex, SignsAtVerticesAreTheExactSigns, ()) {
   const VertexSearch ours = vertices_in(c.t, search);
   const Conic g = bisector(c.q, c.t[0]);
   for (const VertexBox& v : ours.vertices) {
-    const auto ours_sign = sign_at(c.t, v, [&](const auto& x, const auto& y, auto of) {
-      using T = std::decay_t<decltype(x)>;
-      return distance2(lift<T>(c.q, of), x, y) - distance2(lift<T>(c.t[0], of), x, y);
+    const CertifiedPoint vertex(c.t, v);
+    const auto ours_sign = sign_at<1>({&vertex}, [&](const auto& p, auto of) {
+      using T = std::decay_t<decltype(p[0].x)>;
+      return distance2(lift<T>(c.q, of), p[0].x, p[0].y) - distance2(lift<T>(c.t[0], of), p[0].x, p[0].y);
     });
     for (const auto& p : exact.points) {
       if (!in_box(p.point, v.box)) continue;
@@ -188,6 +189,37 @@ RC_GTEST_PROP(RefinerVoronoiVertex, SignsAtVerticesAreTheExactSigns, ()) {
       if (c.kind == "equal metrics") RC_ASSERT(ours_sign.has_value());  // a rational vertex decides ties too
     }
   }
+}
+
+// Signs of expressions in two points (here x₁ − x₂ of two vertices, or of a vertex and a double
+// point) against the oracle's exact comparison.
+RC_GTEST_PROP(RefinerVoronoiVertex, SignsAtTwoPointsAreTheExactSigns, ()) {
+  const Case c = *trio_case();
+  RC_PRE(distinct(c));
+  const auto exact = anisocert::oracle::intersect(bisector(c.t[0], c.t[1]), bisector(c.t[0], c.t[2]));
+  RC_PRE(!exact.shared_component);
+  const VertexSearch ours = vertices_in(c.t, search);
+  // Each vertex against every other and against the double point at its box's midpoint.
+  std::vector<std::pair<CertifiedPoint, AlgebraicPoint>> points;
+  for (const VertexBox& v : ours.vertices)
+    for (const auto& p : exact.points)
+      if (in_box(p.point, v.box)) {
+        points.emplace_back(CertifiedPoint(c.t, v), p.point);
+        const Point2<double> m = v.approx();
+        points.emplace_back(CertifiedPoint(m), AlgebraicPoint::rational(Rational(m.x), Rational(m.y)));
+      }
+  int ties = 0;
+  for (const auto& [a, ea] : points)
+    for (const auto& [b, eb] : points) {
+      const auto s = sign_at<2>({&a, &b}, [](const auto& p, auto) { return p[0].x - p[1].x; });
+      const Sign e = anisocert::oracle::compare_x(ea, eb);
+      ties += &a != &b && e == Sign::zero;
+      if (s)
+        RC_ASSERT(*s == e);
+      else
+        RC_ASSERT(e == Sign::zero);
+    }
+  RC_TAG(ties ? "two points with equal x" : "no two points with equal x");
 }
 
 RC_GTEST_PROP(RefinerVoronoiVertex, EnclosuresAtHighPrecisionHoldThePointAndShrink, ()) {

@@ -1,18 +1,15 @@
 #pragma once
 // Voronoi vertices for the refiners, certified (issue 16's "fast machinery", shared by the LS and
 // BWY refiners): the points equidistant from three sites a, b, c (LS §7: where three cells can
-// meet) are isolated in double boxes by Krawczyk's operator (krawczyk.hpp), and a sign at such a
-// point is read from the box when it can be, else from the point enclosed at 128, 256, 512 and
-// 1024 bits (MPFI), else exactly when the three metrics are equal (the point is rational). A
-// sign none of these decides is reported undecided: the caller treats the configuration as
-// degenerate, never guesses.
+// meet) are isolated in double boxes by Krawczyk's operator (krawczyk.hpp), enclosed at any
+// precision on demand, and exact when the three metrics are equal (then the point is rational).
+// Signs at them: certified_point.hpp.
 //
 // This is the refiners' own machinery, apart from the oracle's exact algebraic points, which
 // the refiners must not use (DESIGN.md § Layers): tests compare the two.
 
 #include "numbers/filter_interval.hpp"
 #include "numbers/interval.hpp"
-#include "numbers/sign.hpp"
 #include "refiners/common/krawczyk.hpp"
 
 #include <optional>
@@ -50,21 +47,5 @@ Box2<Interval> enclose(const Trio& s, const VertexBox& v, mpfr_prec_t bits);
 
 // The point, exactly, when the three metrics are equal (then F is linear); nothing otherwise.
 std::optional<Point2<Rational>> rational_vertex(const Trio& s);
-
-// sign(f(x, y)) at the vertex. `f(x, y, of)` computes in the number type T of x and y, with
-// of(d) the T that denotes the double d; it is called with FilterInterval, Interval and, for
-// equal metrics, Rational. Nothing when undecided (a value that is zero, or too close to it).
-template <class F>
-std::optional<Sign> sign_at(const Trio& s, const VertexBox& v, F f) {
-  if (auto sign = f(v.box.x, v.box.y, [](double d) { return FilterInterval(d); }).sign()) return sign;
-  if (auto p = rational_vertex(s)) return sign_of(f(p->x, p->y, [](double d) { return Rational(d); }));
-  for (mpfr_prec_t bits = 128; bits <= 1024; bits *= 2) {
-    const Box2<Interval> X = enclose(s, v, bits);
-    const Interval value = f(X.x, X.y, [bits](double d) { return Interval(d, bits); });
-    if (value.certainly_positive()) return Sign::positive;
-    if (value.certainly_negative()) return Sign::negative;
-  }
-  return std::nullopt;
-}
 
 }  // namespace anisocert::refiners::common
