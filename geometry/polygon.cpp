@@ -1,6 +1,7 @@
 #include "geometry/polygon.hpp"
 
 #include "numbers/excerpt.hpp"
+#include "numbers/filter_interval.hpp"
 
 namespace anisocert::geometry {
 namespace {
@@ -50,6 +51,43 @@ std::string describe(const PolygonDefect& d, const Polygon<Rational>& v, const s
       return "the vertices are clockwise; list the vertices counter-clockwise";
   }
   return "";
+}
+
+SplitPolygon split_at_points(const Polygon<Rational>& polygon, const std::vector<Point>& points) {
+  // Candidates by x first: the points sorted by a double box of x, so that an edge looks only at
+  // those whose box meets its own x-range (a few per edge on a mesh's boundary); then exactly.
+  const auto box = [](const Rational& r) { return FilterInterval::around(r); };
+  std::vector<std::pair<double, int>> by_x;
+  by_x.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) by_x.emplace_back(box(points[i].x).lo, static_cast<int>(i));
+  std::sort(by_x.begin(), by_x.end());
+  const std::size_t m = polygon.size();
+  SplitPolygon out;
+  for (std::size_t k = 0; k < m; ++k) {
+    const Point& a = polygon[k];
+    const Point& b = polygon[(k + 1) % m];
+    out.corners.push_back(a);
+    out.point.push_back(-1);
+    const FilterInterval ax = box(a.x), bx = box(b.x);
+    const double lo = std::min(ax.lo, bx.lo), hi = std::max(ax.hi, bx.hi);
+    // A box's lower end is within two ulps below the exact value: start three steps below lo.
+    const double start = FilterInterval::next_down(FilterInterval::next_down(FilterInterval::next_down(lo)));
+    auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{start, -1});
+    std::vector<std::pair<Rational, int>> inside;  // (position along the edge, point)
+    for (; it != by_x.end() && it->first <= hi; ++it) {
+      const Point& p = points[static_cast<std::size_t>(it->second)];
+      if (p.x == a.x && p.y == a.y) out.point.back() = it->second;
+      if (!on_segment(p, a, b) || (p.x == a.x && p.y == a.y) || (p.x == b.x && p.y == b.y)) continue;
+      inside.emplace_back(a.x != b.x ? abs(p.x - a.x) : abs(p.y - a.y), it->second);
+    }
+    std::sort(inside.begin(), inside.end());
+    for (std::size_t j = 0; j < inside.size(); ++j) {
+      if (j > 0 && inside[j].first == inside[j - 1].first) continue;  // the same point twice
+      out.corners.push_back(points[static_cast<std::size_t>(inside[j].second)]);
+      out.point.push_back(inside[j].second);
+    }
+  }
+  return out;
 }
 
 std::optional<PolygonDefect> simplicity_defect(const Polygon<Rational>& v) {

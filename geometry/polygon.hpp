@@ -87,6 +87,17 @@ struct PolygonDefect {
 };
 std::optional<PolygonDefect> simplicity_defect(const Polygon<Rational>& polygon);
 
+// Ω with every point of `points` that lies on an edge inserted as a corner, in order along the
+// edge: the polygon whose edges are the subsegments between consecutive points of ∂Ω (LS
+// Theorem 7 reads Ω's vertices and edges so: the sites on ∂Ω split its edges). Same set, same
+// orientation; `point` gives for each corner the index of the point at it (−1 when none is).
+// Points are taken once each; a point at a corner names that corner.
+struct SplitPolygon {
+  Polygon<Rational> corners;
+  std::vector<int> point;
+};
+SplitPolygon split_at_points(const Polygon<Rational>& polygon, const std::vector<Point2<Rational>>& points);
+
 // "(x, y)" as messages name a point: each coordinate as exact_excerpt shows it (numbers/excerpt.hpp:
 // its exact text when short, else about ten digits), so that a message stays one short line.
 std::string point_excerpt(const Point2<Rational>& p);

@@ -165,6 +165,7 @@ OrderedJson diagram_json(const Diagram& d) {
   };
   const DiagramCounts c = diagram_counts(d);
   return {{"input", {{"sites", d.input.sites.size()}, {"domain_vertices", d.input.domain.size()},
+                     {"domain_corner_sites", d.corner_site},
                      {"internal_shear", to_exact_string(d.shear)}}},
           {"vertices", vertices},
           {"arcs", arcs},

@@ -235,3 +235,69 @@ TEST(Polygon, SegmentMeetingAgreesWithTheParametricSolution) {
 }
 
 }  // namespace
+
+namespace {
+
+// The split polygon against its definition, checked pointwise: random points on a random
+// polygon's edges (at rational parameters), at its corners, on the extensions of its edges and
+// off them. Every corner of the split polygon is a corner of Ω or a point on an edge; every point
+// strictly inside an edge is a corner; consecutive corners lie on one edge of Ω, in order; the
+// index of each corner's point is right.
+TEST(SplitAtPoints, EveryPointOnAnEdgeBecomesACornerInOrder) {
+  std::mt19937_64 rng(16);
+  std::uniform_int_distribution<int> coord(-20, 20), pick(0, 4), den(1, 9);
+  for (int trial = 0; trial < 300; ++trial) {
+    // A convex polygon: the hull of a regular-ish fan of rational points (counter-clockwise).
+    const Polygon<Rational> omega = {{Rational(-10 + coord(rng) % 3), Rational(-10)}, {Rational(10), Rational(-10 + coord(rng) % 3)},
+                                     {Rational(10 + coord(rng) % 3), Rational(10)}, {Rational(-10), Rational(10)}};
+    const std::size_t m = omega.size();
+    std::vector<Point2<Rational>> points;
+    for (int k = 0; k < 12; ++k) {
+      const auto& a = omega[static_cast<std::size_t>(k) % m];
+      const auto& b = omega[(static_cast<std::size_t>(k) + 1) % m];
+      const Rational t(coord(rng) % 10, den(rng) + 10);  // in (−1, 1): inside or on the extension
+      switch (pick(rng)) {
+        case 0: points.push_back(a); break;                                                        // a corner
+        case 1: points.push_back({a.x + abs(t) * (b.x - a.x), a.y + abs(t) * (b.y - a.y)}); break;  // on the edge
+        case 2: points.push_back({a.x - abs(t) * (b.x - a.x), a.y - abs(t) * (b.y - a.y)}); break;  // on its extension
+        case 3: points.push_back({Rational(coord(rng), den(rng)), Rational(coord(rng), den(rng))}); break;
+        default: if (!points.empty()) points.push_back(points.back());  // the same point twice
+      }
+    }
+    const geometry::SplitPolygon s = geometry::split_at_points(omega, points);
+    ASSERT_EQ(s.corners.size(), s.point.size());
+    // Walk the split polygon: corner j lies on edge e(j) of Ω, e non-decreasing, each original
+    // corner present, and between corners of one edge the distance from its start increases.
+    std::size_t e = 0;
+    for (std::size_t j = 0; j < s.corners.size(); ++j) {
+      const auto& c = s.corners[j];
+      const bool original = c.x == omega[e % m].x && c.y == omega[e % m].y;
+      if (!original) {
+        ASSERT_TRUE(geometry::on_segment(c, omega[e], omega[(e + 1) % m])) << "corner " << j;
+        const auto& prev = s.corners[j - 1];
+        const auto d = [&](const Point2<Rational>& p) { return abs(p.x - omega[e].x) + abs(p.y - omega[e].y); };
+        EXPECT_LT(d(prev), d(c)) << "corner " << j;
+      }
+      if (s.point[j] >= 0) {
+        EXPECT_EQ(points[static_cast<std::size_t>(s.point[j])].x, c.x);
+        EXPECT_EQ(points[static_cast<std::size_t>(s.point[j])].y, c.y);
+      } else {
+        EXPECT_TRUE(original);
+        for (const auto& p : points) EXPECT_FALSE(p.x == c.x && p.y == c.y) << "corner " << j << " is a point";
+      }
+      if (j + 1 < s.corners.size() && s.corners[j + 1].x == omega[(e + 1) % m].x && s.corners[j + 1].y == omega[(e + 1) % m].y)
+        ++e;
+    }
+    EXPECT_EQ(e, m - 1);
+    // Every point strictly inside an edge is a corner.
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      bool on_edge = false;
+      for (std::size_t k = 0; k < m; ++k) on_edge = on_edge || geometry::on_segment(points[i], omega[k], omega[(k + 1) % m]);
+      bool corner = false;
+      for (const auto& c : s.corners) corner = corner || (c.x == points[i].x && c.y == points[i].y);
+      EXPECT_EQ(on_edge, corner) << "point " << i;
+    }
+  }
+}
+
+}  // namespace

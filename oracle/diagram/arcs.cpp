@@ -86,7 +86,7 @@ PairArcs Builder::arcs_of_pair(std::size_t i) const {
   if (auto it = nodes_of_pair_.find({v, w}); it != nodes_of_pair_.end())
     for (int n : it->second) add_cut(d_.nodes[n].at, n, false);
   // Crossings with ∂Ω (original-coordinate bounding boxes decide which edges can meet the arc).
-  const auto& orig = d_.input.domain;
+  const auto& orig = d_.domain;
   const std::size_t m = orig.size();
   for (std::size_t k = 0; k < m; ++k) {
     const auto& a = orig[k];

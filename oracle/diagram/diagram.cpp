@@ -52,8 +52,13 @@ void Builder::run() {
     progress_("candidates: " + std::to_string(cand_.boxes) + " boxes, " + std::to_string(cand_.triples.size()) +
               " triples, " + std::to_string(cand_.pairs.size()) + " pairs");
 
-  d_.shear = choose_shear(d_.input, cand_.pairs);
-  d_.sheared = shear_input(d_.input, d_.shear);
+  geometry::SplitPolygon split = geometry::split_at_points(d_.input.domain, d_.input.sites);
+  d_.domain = std::move(split.corners);
+  d_.corner_site = std::move(split.point);
+  Mesh<Rational> split_input = d_.input;
+  split_input.domain = d_.domain;
+  d_.shear = choose_shear(split_input, cand_.pairs);
+  d_.sheared = shear_input(split_input, d_.shear);
   sheared_ = std::make_shared<const Mesh<Rational>>(d_.sheared);
   domain_.emplace(d_.sheared);
   shear_ = FilterInterval::around(d_.shear);

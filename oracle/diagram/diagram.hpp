@@ -107,6 +107,12 @@ struct HalfEdge {
 
 struct Diagram {
   Mesh<Rational> input;                         // as given (original coordinates)
+  // Ω as the construction takes it: input.domain with its edges split at the sites on them (LS
+  // Theorem 7: the sites on ∂Ω are vertices of Ω, so a refined mesh's boundary subsegments are
+  // Ω's edges), and the site at each corner (−1 when none is). Edge k runs from domain[k] to
+  // domain[k + 1]; Arc::cut_by_edges and the Theorem 7 reasons number edges so.
+  geometry::Polygon<Rational> domain;
+  std::vector<int> corner_site;
   Mesh<Rational> sheared;
   Rational shear;
   std::vector<Node> nodes;

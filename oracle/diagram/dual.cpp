@@ -50,14 +50,10 @@ void Builder::check_triangulation() {
 
 void Builder::check_theorem7() {
   Theorem7& th = d_.theorem7;
-  const auto& sites = d_.input.sites;
-  const auto& dom = d_.input.domain;
-  std::vector<int> corner_site(dom.size(), -1);
-  for (std::size_t k = 0; k < dom.size(); ++k) {
-    for (std::size_t s = 0; s < sites.size(); ++s)
-      if (sites[s].x == dom[k].x && sites[s].y == dom[k].y) corner_site[k] = static_cast<int>(s);
+  const auto& dom = d_.domain;
+  const auto& corner_site = d_.corner_site;
+  for (std::size_t k = 0; k < dom.size(); ++k)
     if (corner_site[k] < 0) th.reasons.push_back("corner " + std::to_string(k) + " of Ω is not a site");
-  }
   for (std::size_t a = 0; a < d_.arcs.size(); ++a)
     for (int k : d_.arcs[a].cut_by_edges) {
       const int p = corner_site[k], q = corner_site[(k + 1) % dom.size()];
