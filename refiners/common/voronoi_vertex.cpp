@@ -68,16 +68,32 @@ std::optional<VertexBox> newton_box(const Trio& t, const Equidistance<FI>& s, co
   for (int attempt = 0; attempt < 3; ++attempt, r *= 1024) {
     const Box2<FI> R{FI::widen(x - r, x + r), FI::widen(y - r, y + r)};
     const KrawczykStep<FI> k = krawczyk(s, R, FI(1.0));
-    if (k.verdict == KrawczykVerdict::unique_zero) return VertexBox{tighten(s, k.box), R};
     if (k.verdict == KrawczykVerdict::no_zero) return std::nullopt;
+    if (k.verdict != KrawczykVerdict::unique_zero) continue;
+    // Isolate it in as large a box as Krawczyk certifies (fewer boxes to search, and a box
+    // another search finds this vertex in is more likely to lie inside it).
+    Box2<FI> isolating = R;
+    for (double grown = 16 * r; grown < 0x1p-10 * (1 + std::abs(x) + std::abs(y)); grown *= 16) {
+      const Box2<FI> G{FI::widen(x - grown, x + grown), FI::widen(y - grown, y + grown)};
+      if (krawczyk(s, G, FI(1.0)).verdict != KrawczykVerdict::unique_zero) break;
+      isolating = G;
+    }
+    return VertexBox{tighten(s, k.box), isolating};
   }
   return std::nullopt;
 }
 
+Box2<FI> hull(const Box2<FI>& a, const Box2<FI>& b) {
+  return {{std::min(a.x.lo, b.x.lo), std::max(a.x.hi, b.x.hi)}, {std::min(a.y.lo, b.y.lo), std::max(a.y.hi, b.y.hi)}};
+}
+
 // Adds a certified vertex unless it is one already found; false when that cannot be decided.
-bool add(std::vector<VertexBox>& found, const VertexBox& v) {
+// Two boxes that meet hold the same point when one lies in the other's isolating box, or when
+// Krawczyk proves the hull of their isolating boxes holds a single point.
+bool add(const Equidistance<FI>& s, std::vector<VertexBox>& found, const VertexBox& v) {
   for (const VertexBox& u : found) {
-    const std::optional<bool> same = same_vertex(u, v);
+    std::optional<bool> same = same_vertex(u, v);
+    if (!same && krawczyk(s, hull(u.isolating, v.isolating), FI(1.0)).verdict == KrawczykVerdict::unique_zero) same = true;
     if (!same) return false;
     if (*same) return true;
   }
@@ -115,11 +131,11 @@ VertexSearch vertices_in(const Trio& t, const Box2<FilterInterval>& search, int 
     const KrawczykStep<FI> k = krawczyk(s, X, FI(1.0));
     if (k.verdict == KrawczykVerdict::no_zero) continue;
     if (k.verdict == KrawczykVerdict::unique_zero) {
-      if (!add(out.vertices, {tighten(s, k.box), X})) return undecided();
+      if (!add(s, out.vertices, {tighten(s, k.box), X})) return undecided();
       continue;
     }
     if (auto v = newton_box(t, s, X))
-      if (!add(out.vertices, *v)) return undecided();
+      if (!add(s, out.vertices, *v)) return undecided();
     // Halve the wider side of K(X) ∩ X; a side that no double splits ends the search undecided.
     const Box2<FI>& Y = k.box;
     const bool along_x = width(Y.x) >= width(Y.y);
@@ -141,8 +157,9 @@ Box2<Interval> enclose(const Trio& t, const VertexBox& v, mpfr_prec_t bits) {
   const auto of = [bits](double d) { return Interval(d, bits); };
   const Equidistance<Interval> s({lift<Interval>(t[0], of), lift<Interval>(t[1], of), lift<Interval>(t[2], of)});
   const Interval one(1.0, bits);
-  Box2<Interval> X{Interval(v.isolating.x.lo, v.isolating.x.hi, bits), Interval(v.isolating.y.lo, v.isolating.y.hi, bits)};
-  // Krawczyk's image of a box holding one zero holds it too; it contracts about quadratically.
+  // From the double box (it holds the point, and is small enough for Krawczyk to contract: the
+  // isolating box may not be). K's image of a box holding the zero holds it too.
+  Box2<Interval> X{Interval(v.box.x.lo, v.box.x.hi, bits), Interval(v.box.y.lo, v.box.y.hi, bits)};
   for (int i = 0; i < 64; ++i) {
     const KrawczykStep<Interval> k = krawczyk(s, X, one);
     if (k.verdict == KrawczykVerdict::no_zero) break;  // not with a zero inside; keep X

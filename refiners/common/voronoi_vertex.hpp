@@ -42,7 +42,7 @@ VertexSearch vertices_in(const Trio& s, const Box2<FilterInterval>& search, int 
 // nothing when their boxes overlap without either isolating box holding the other's box.
 std::optional<bool> same_vertex(const VertexBox& u, const VertexBox& v);
 
-// The point enclosed at `bits` of precision (Krawczyk iterated in MPFI from the isolating box).
+// The point enclosed at `bits` of precision (Krawczyk iterated in MPFI from the double box).
 Box2<Interval> enclose(const Trio& s, const VertexBox& v, mpfr_prec_t bits);
 
 // The point, exactly, when the three metrics are equal (then F is linear); nothing otherwise.
