@@ -43,7 +43,7 @@ class Interval {
   bool contains(const Rational& q) const;
   // [lo, hi] ⊂ [a, b] for rationals a <= b.
   bool inside(const Rational& a, const Rational& b) const;
-  bool has_zero() const { return mpfi_has_zero(v_) > 0; }
+  bool has_zero() const { return mpfi_has_zero(v_) > 0 || mpfi_nan_p(v_); }  // NaN: 0 not excluded
   // [lo, hi] ⊂ (outer.lo, outer.hi).
   bool strictly_inside(const Interval& outer) const;
   // A point of the interval near its middle, as a point interval (for centred forms and

@@ -69,6 +69,7 @@ struct Case {
   Trio t;
   MetricSite q;  // a fourth site, for signs
   std::string kind;
+  double scale = 1;  // coordinates are multiples of 1/16 times this power of two
 };
 
 Sym2<double> mirrored(const Sym2<double>& M) { return {M.m11, -M.m12, M.m22}; }
@@ -107,6 +108,24 @@ rc::Gen<Case> trio_case() {
   });
 }
 
+// A third of the cases moved to another magnitude: coordinates times 2^k (k in −30..30), metrics
+// times 2^j (j in −20..20). Powers of two keep every double exact, so the geometry is the same.
+rc::Gen<Case> scaled_case() {
+  return rc::gen::apply(
+      [](Case c, int k, int j, int pick) {
+        if (pick != 0) return c;
+        const double s = std::ldexp(1.0, k), m = std::ldexp(1.0, j);
+        for (MetricSite* site : {&c.t[0], &c.t[1], &c.t[2], &c.q}) {
+          site->p = {site->p.x * s, site->p.y * s};
+          site->M = {site->M.m11 * m, site->M.m12 * m, site->M.m22 * m};
+        }
+        c.scale = s;
+        c.kind += ", scaled";
+        return c;
+      },
+      trio_case(), rc::gen::inRange(-30, 31), rc::gen::inRange(-20, 21), rc::gen::inRange(0, 3));
+}
+
 std::ostream& operator<<(std::ostream& os, const MetricSite& s) {
   return os << "(" << s.p.x << ", " << s.p.y << ") [" << s.M.m11 << ", " << s.M.m12 << ", " << s.M.m22 << "]";
 }
@@ -130,18 +149,19 @@ bool strictly_in(const AlgebraicPoint& p, const Box2<FilterInterval>& b) {
          cmp(p.y(), b.y.hi) == Sign::negative;
 }
 
-const Box2<FilterInterval> search{{-4, 4}, {-4, 4}};
+Box2<FilterInterval> search_for(const Case& c) { return {{-4 * c.scale, 4 * c.scale}, {-4 * c.scale, 4 * c.scale}}; }
 
 }  // namespace
 
 RC_GTEST_PROP(RefinerVoronoiVertex, BoxesHoldExactlyTheEquidistantPoints, ()) {
-  const Case c = *trio_case();
+  const Case c = *scaled_case();
   RC_PRE(distinct(c));
   RC_TAG(c.kind);
   const auto exact = anisocert::oracle::intersect(bisector(c.t[0], c.t[1]), bisector(c.t[0], c.t[2]));
-  const VertexSearch ours = vertices_in(c.t, search);
-  if (exact.shared_component) {
+  const VertexSearch ours = vertices_in(c.t, search_for(c));
+  if (exact.shared_component) {  // infinitely many points: no search may call itself complete
     RC_TAG("shared component");
+    RC_ASSERT(!ours.complete || ours.vertices.empty());
     return;
   }
   bool multiple = false;
@@ -161,7 +181,7 @@ RC_GTEST_PROP(RefinerVoronoiVertex, BoxesHoldExactlyTheEquidistantPoints, ()) {
   }
   if (ours.complete)
     for (const auto& p : exact.points) {
-      if (!strictly_in(p.point, search)) continue;
+      if (!strictly_in(p.point, search_for(c))) continue;
       int found = 0;
       for (const VertexBox& v : ours.vertices) found += in_box(p.point, v.box);
       RC_ASSERT(found == 1);
@@ -169,11 +189,11 @@ RC_GTEST_PROP(RefinerVoronoiVertex, BoxesHoldExactlyTheEquidistantPoints, ()) {
 }
 
 RC_GTEST_PROP(RefinerVoronoiVertex, SignsAtVerticesAreTheExactSigns, ()) {
-  const Case c = *trio_case();
+  const Case c = *scaled_case();
   RC_PRE(distinct(c));
   const auto exact = anisocert::oracle::intersect(bisector(c.t[0], c.t[1]), bisector(c.t[0], c.t[2]));
   RC_PRE(!exact.shared_component);
-  const VertexSearch ours = vertices_in(c.t, search);
+  const VertexSearch ours = vertices_in(c.t, search_for(c));
   const Conic g = bisector(c.q, c.t[0]);
   for (const VertexBox& v : ours.vertices) {
     const CertifiedPoint vertex(c.t, v);
@@ -197,11 +217,11 @@ RC_GTEST_PROP(RefinerVoronoiVertex, SignsAtVerticesAreTheExactSigns, ()) {
 // Signs of expressions in two points (here x₁ − x₂ of two vertices, or of a vertex and a double
 // point) against the oracle's exact comparison.
 RC_GTEST_PROP(RefinerVoronoiVertex, SignsAtTwoPointsAreTheExactSigns, ()) {
-  const Case c = *trio_case();
+  const Case c = *scaled_case();
   RC_PRE(distinct(c));
   const auto exact = anisocert::oracle::intersect(bisector(c.t[0], c.t[1]), bisector(c.t[0], c.t[2]));
   RC_PRE(!exact.shared_component);
-  const VertexSearch ours = vertices_in(c.t, search);
+  const VertexSearch ours = vertices_in(c.t, search_for(c));
   // Each vertex against every other and against the double point at its box's midpoint.
   std::vector<std::pair<CertifiedPoint, AlgebraicPoint>> points;
   for (const VertexBox& v : ours.vertices)
@@ -226,11 +246,11 @@ RC_GTEST_PROP(RefinerVoronoiVertex, SignsAtTwoPointsAreTheExactSigns, ()) {
 }
 
 RC_GTEST_PROP(RefinerVoronoiVertex, EnclosuresAtHighPrecisionHoldThePointAndShrink, ()) {
-  const Case c = *trio_case();
+  const Case c = *scaled_case();
   RC_PRE(distinct(c));
   const auto exact = anisocert::oracle::intersect(bisector(c.t[0], c.t[1]), bisector(c.t[0], c.t[2]));
   RC_PRE(!exact.shared_component);
-  for (const VertexBox& v : vertices_in(c.t, search).vertices) {
+  for (const VertexBox& v : vertices_in(c.t, search_for(c)).vertices) {
     const Box2<anisocert::Interval> X = enclose(c.t, v, 512);
     for (const auto& p : exact.points) {
       if (!in_box(p.point, v.box)) continue;
@@ -251,11 +271,99 @@ RC_GTEST_PROP(RefinerVoronoiVertex, EnclosuresAtHighPrecisionHoldThePointAndShri
       mpfr_sub(w, X.y.upper(), X.y.lower(), MPFR_RNDU);
       const double wy = mpfr_get_d(w, MPFR_RNDU);
       mpfr_clear(w);
-      const double scale = 1 + std::abs(v.approx().x) + std::abs(v.approx().y);
+      const double scale = c.scale + std::abs(v.approx().x) + std::abs(v.approx().y);
       RC_ASSERT(wx <= std::ldexp(scale, -400));
       RC_ASSERT(wy <= std::ldexp(scale, -400));
     }
   }
+}
+
+// The enclosures Krawczyk's operator is built on: F on a box (the exact quadratic expansion) and
+// ½J on a box contain the exact values at every rational point of the box.
+RC_GTEST_PROP(RefinerVoronoiVertex, EnclosuresOnBoxesHoldTheExactValues, ()) {
+  const Case c = *scaled_case();
+  const int e = *rc::gen::inRange(-40, 3);  // box half-width 2^e · scale
+  const double cx = *rc::gen::inRange(-64, 65) / 16.0 * c.scale, cy = *rc::gen::inRange(-64, 65) / 16.0 * c.scale;
+  const double r = std::ldexp(c.scale, e);
+  const Box2<FilterInterval> X{{cx - r, cx + r}, {cy - r, cy + r}};
+  RC_PRE(X.x.lo < X.x.hi && X.y.lo < X.y.hi);
+  const auto fi = [](double d) { return FilterInterval(d); };
+  const auto q = [](double d) { return Rational(d); };
+  const Equidistance<FilterInterval> F({lift<FilterInterval>(c.t[0], fi), lift<FilterInterval>(c.t[1], fi), lift<FilterInterval>(c.t[2], fi)});
+  const Equidistance<Rational> E({lift<Rational>(c.t[0], q), lift<Rational>(c.t[1], q), lift<Rational>(c.t[2], q)});
+  const auto on = F.on(X);
+  const FilterInterval mx = X.x.midpoint(), my = X.y.midpoint();
+  const auto J = F.half_jacobian(F.half_jacobian(mx, my), X.x - mx, X.y - my);
+  const auto holds = [](const FilterInterval& i, const Rational& v) { return Rational(i.lo) <= v && v <= Rational(i.hi); };
+  for (int k = 0; k < 8; ++k) {  // corners, the centre and random points: (cx + r·s/64, cy + r·t/64)
+    const int s = *rc::gen::inRange(-64, 65), t = *rc::gen::inRange(-64, 65);
+    const Rational x = Rational(cx) + Rational(r) * Rational(k < 4 ? (k & 1 ? 64 : -64) : s, 64);
+    const Rational y = Rational(cy) + Rational(r) * Rational(k < 4 ? (k & 2 ? 64 : -64) : t, 64);
+    const auto v = E.at(x, y);
+    RC_ASSERT(holds(on[0], v[0]));
+    RC_ASSERT(holds(on[1], v[1]));
+    const auto g = E.half_jacobian(x, y);
+    for (int i = 0; i < 4; ++i) RC_ASSERT(holds(J[static_cast<std::size_t>(i)], g[static_cast<std::size_t>(i)]));
+  }
+}
+
+// Krawczyk's verdicts against the exact count of points in the box: none ⇒ 0, unique ⇒ 1. Boxes
+// of every size, many hugging an exact vertex (centred at its double box, width 2^e).
+RC_GTEST_PROP(RefinerVoronoiVertex, KrawczykVerdictsAgreeWithTheExactCount, ()) {
+  const Case c = *scaled_case();
+  RC_PRE(distinct(c));
+  const auto exact = anisocert::oracle::intersect(bisector(c.t[0], c.t[1]), bisector(c.t[0], c.t[2]));
+  RC_PRE(!exact.shared_component);
+  const VertexSearch found = vertices_in(c.t, search_for(c));
+  double cx = *rc::gen::inRange(-64, 65) / 16.0 * c.scale, cy = *rc::gen::inRange(-64, 65) / 16.0 * c.scale;
+  if (!found.vertices.empty() && *rc::gen::inRange(0, 2) == 0) {  // hug a vertex
+    const auto a = found.vertices[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(found.vertices.size())))].approx();
+    cx = a.x + std::ldexp(c.scale, -50) * *rc::gen::inRange(-8, 9), cy = a.y + std::ldexp(c.scale, -50) * *rc::gen::inRange(-8, 9);
+  }
+  const double r = std::ldexp(c.scale, *rc::gen::inRange(-48, 3));
+  const Box2<FilterInterval> X{{cx - r, cx + r}, {cy - r, cy + r}};
+  RC_PRE(X.x.lo < X.x.hi && X.y.lo < X.y.hi);
+  const auto fi = [](double d) { return FilterInterval(d); };
+  const Equidistance<FilterInterval> F({lift<FilterInterval>(c.t[0], fi), lift<FilterInterval>(c.t[1], fi), lift<FilterInterval>(c.t[2], fi)});
+  const KrawczykStep<FilterInterval> k = krawczyk(F, X, FilterInterval(1.0));
+  int inside = 0;
+  for (const auto& p : exact.points) inside += in_box(p.point, X);
+  RC_TAG(k.verdict == KrawczykVerdict::no_zero ? "no zero" : k.verdict == KrawczykVerdict::unique_zero ? "unique zero" : "unknown");
+  if (k.verdict == KrawczykVerdict::no_zero) RC_ASSERT(inside == 0);
+  if (k.verdict == KrawczykVerdict::unique_zero) {
+    RC_ASSERT(inside == 1);
+    for (const auto& p : exact.points)
+      if (in_box(p.point, X)) RC_ASSERT(in_box(p.point, k.box));  // and the zero is in K(X)
+  }
+  if (k.verdict == KrawczykVerdict::unknown)  // K(X) ∩ X keeps every zero of X
+    for (const auto& p : exact.points)
+      if (in_box(p.point, X)) RC_ASSERT(in_box(p.point, k.box));
+}
+
+// The same vertex found by two searches over different boxes is recognized as the same, and
+// different vertices as different: same_vertex against the exact points.
+RC_GTEST_PROP(RefinerVoronoiVertex, SameVertexAcrossSearchesIsTheExactEquality, ()) {
+  const Case c = *scaled_case();
+  RC_PRE(distinct(c));
+  const auto exact = anisocert::oracle::intersect(bisector(c.t[0], c.t[1]), bisector(c.t[0], c.t[2]));
+  RC_PRE(!exact.shared_component);
+  const double cx = *rc::gen::inRange(-32, 33) / 16.0 * c.scale, cy = *rc::gen::inRange(-32, 33) / 16.0 * c.scale;
+  const double r = std::ldexp(c.scale, *rc::gen::inRange(-3, 3));
+  const VertexSearch one = vertices_in(c.t, search_for(c)), two = vertices_in(c.t, {{cx - r, cx + r}, {cy - r, cy + r}});
+  const auto point_of = [&](const VertexBox& v) {
+    for (std::size_t i = 0; i < exact.points.size(); ++i)
+      if (in_box(exact.points[i].point, v.box)) return i;
+    return exact.points.size();
+  };
+  int decided = 0;
+  for (const VertexBox& u : one.vertices)
+    for (const VertexBox& v : two.vertices) {
+      const auto same = same_vertex(u, v);
+      if (!same) continue;
+      ++decided;
+      RC_ASSERT(*same == (point_of(u) == point_of(v)));
+    }
+  RC_TAG(decided ? "pairs decided" : "no pair");
 }
 
 namespace {

@@ -104,8 +104,11 @@ KrawczykStep<T> krawczyk(const Equidistance<T>& F, const Box2<T>& X, const T& on
   const T c11 = one - (y11 * JX[0] + y12 * JX[2]), c12 = -(y11 * JX[1] + y12 * JX[3]);
   const T c21 = -(y21 * JX[0] + y22 * JX[2]), c22 = one - (y21 * JX[1] + y22 * JX[3]);
   Box2<T> K{mx - (y11 * hf0 + y12 * hf1) + (c11 * dx + c12 * dy), my - (y21 * hf0 + y22 * hf1) + (c21 * dx + c22 * dy)};
+  // No zero only when K(X) is certainly apart from X (a NaN end decides nothing).
+  const auto apart = [](const T& k, const T& x) { return k.upper_double() < x.lower_double() || k.lower_double() > x.upper_double(); };
+  if (apart(K.x, X.x) || apart(K.y, X.y)) return {KrawczykVerdict::no_zero, X};
   auto ix = intersection(K.x, X.x), iy = intersection(K.y, X.y);
-  if (!ix || !iy) return {KrawczykVerdict::no_zero, X};
+  if (!ix || !iy) return {KrawczykVerdict::unknown, X};
   if (K.x.strictly_inside(X.x) && K.y.strictly_inside(X.y)) return {KrawczykVerdict::unique_zero, K};
   return {KrawczykVerdict::unknown, {*ix, *iy}};
 }

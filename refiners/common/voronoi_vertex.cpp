@@ -58,7 +58,7 @@ std::optional<VertexBox> newton_box(const Trio& t, const Equidistance<FI>& s, co
     const double sx = (d * f0 - b * f1) / det, sy = (a * f1 - c * f0) / det;
     x -= sx;
     y -= sy;
-    step = std::hypot(sx, sy);
+    step = std::max(std::abs(sx), std::abs(sy));
     settled = step <= 0x1p-50 * (std::abs(x) + std::abs(y)) || step == 0;
   }
   if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
@@ -111,8 +111,13 @@ std::optional<bool> same_vertex(const VertexBox& u, const VertexBox& v) {
 
 VertexSearch vertices_in(const Trio& t, const Box2<FilterInterval>& search, int budget) {
   VertexSearch out;
-  if (equal_metrics(t) && predicates::orientation(t[0].p, t[1].p, t[2].p) == Sign::zero)
-    return out;  // the bisectors are parallel lines, or one line: no single point is equidistant
+  const auto same_point = [&](int i, int j) { return t[i].p.x == t[j].p.x && t[i].p.y == t[j].p.y; };
+  if (equal_metrics(t) && predicates::orientation(t[0].p, t[1].p, t[2].p) == Sign::zero) {
+    // Distinct collinear sites: the bisectors are parallel lines, no point is equidistant. Two
+    // sites that coincide: a whole line is, and no finite list of points answers.
+    out.complete = !(same_point(0, 1) || same_point(0, 2) || same_point(1, 2));
+    return out;
+  }
   const Equidistance<FI> s = in_doubles(t);
   std::vector<Box2<FI>> pending{search};
   const auto undecided = [&out] {
@@ -120,7 +125,7 @@ VertexSearch vertices_in(const Trio& t, const Box2<FilterInterval>& search, int 
     return out;
   };
   for (; !pending.empty(); ++out.boxes) {
-    if (out.boxes == budget) return undecided();
+    if (out.boxes >= budget) return undecided();
     const Box2<FI> X = pending.back();
     pending.pop_back();
     bool known = false;
@@ -136,12 +141,18 @@ VertexSearch vertices_in(const Trio& t, const Box2<FilterInterval>& search, int 
     }
     if (auto v = newton_box(t, s, X))
       if (!add(s, out.vertices, *v)) return undecided();
-    // Halve the wider side of K(X) ∩ X; a side that no double splits ends the search undecided.
+    // Halve the wider side of K(X) ∩ X (the other when no double splits the wider one); a box
+    // that no double splits ends the search undecided.
     const Box2<FI>& Y = k.box;
-    const bool along_x = width(Y.x) >= width(Y.y);
+    const auto splits = [](const FI& side) {
+      const double m = side.midpoint().lo;
+      return m > side.lo && m < side.hi;
+    };
+    bool along_x = width(Y.x) >= width(Y.y);
+    if (!splits(along_x ? Y.x : Y.y)) along_x = !along_x;
     const FI& side = along_x ? Y.x : Y.y;
+    if (!splits(side)) return undecided();
     const double m = side.midpoint().lo;
-    if (!(m > side.lo && m < side.hi)) return undecided();
     if (along_x) {
       pending.push_back({FI(side.lo, m), Y.y});
       pending.push_back({FI(m, side.hi), Y.y});

@@ -32,10 +32,12 @@ struct VertexSearch {
   int boxes = 0;                    // boxes examined
 };
 
-// Every point equidistant from the three sites in the closed box `search` (and perhaps some just
-// beyond it), each certified, with `complete`; or complete = false when a part of the box could
-// not be decided within `budget` boxes: a tangency (a double point), curves sharing a component,
-// or sites that coincide.
+// Every point equidistant from the three sites in the closed box `search` (and perhaps some
+// beyond it: Newton's method may land up to a box's width outside the box it starts from), each
+// certified, with `complete`; or complete = false when a part of the box could not be decided
+// within `budget` boxes: a tangency (a double point), curves sharing a component, sites that
+// coincide, or, rarely, a simple point so ill-conditioned that its boxes reach the resolution of
+// doubles before Krawczyk can isolate it.
 VertexSearch vertices_in(const Trio& s, const Box2<FilterInterval>& search, int budget = 4000);
 
 // Whether two vertex boxes of the same Trio hold the same point: true or false when certified,
