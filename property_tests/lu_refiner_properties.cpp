@@ -10,6 +10,7 @@
 #include "fields/registry.hpp"
 #include "geometry/mesh.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
+#include "property_tests/generators/domains.hpp"
 #include "refiners/star/rules.hpp"
 #include "refiners/star/star_refiner.hpp"
 #include "theory/lu_theorem45.hpp"
@@ -32,33 +33,6 @@ const std::vector<Polygon> kDomains = {
     {{1, -0.375}, {1, 0.375}, {0.375, 1}, {-0.375, 1}, {-1, 0.375}, {-1, -0.375}, {-0.375, -1}, {0.375, -1}},
     {{0, 0}, {2, 0}, {2.5, 1}, {1, 1.75}, {-0.5, 1}}};
 
-// A random polygon, star-shaped around the origin, on the 1/64 grid (so every edge can be split
-// exactly): 5 to 9 vertices at jittered angles and radii, convex, or 8 to 9 with one vertex pushed
-// in to radius 0.6 (a reflex corner, checked); discarded unless every convex corner is obtuse,
-// decided exactly on the grid ((prev − v)·(next − v) < 0), which is Lemma 4.1 for near-isotropic
-// metrics. (About 1 in 20 convex and 1 in 7 non-convex draws are discarded.)
-Polygon random_domain(bool reflex) {
-  const int n = reflex ? *rc::gen::inRange(8, 10) : *rc::gen::inRange(5, 10);
-  std::vector<std::array<long, 2>> q;
-  for (int i = 0; i < n; ++i) {
-    const double theta = 2 * M_PI * (i + 0.03 * *rc::gen::inRange(-10, 11)) / n;
-    const double r = reflex ? (i == 0 ? 0.6 : 0.9 + 0.01 * *rc::gen::inRange(0, 11)) : 0.8 + 0.01 * *rc::gen::inRange(0, 21);
-    q.push_back({std::lround(64 * r * std::cos(theta)), std::lround(64 * r * std::sin(theta))});
-  }
-  bool has_reflex = false;
-  for (int i = 0; i < n; ++i) {
-    const auto &a = q[(i + n - 1) % n], &v = q[i], &b = q[(i + 1) % n];
-    const long turn = (v[0] - a[0]) * (b[1] - v[1]) - (v[1] - a[1]) * (b[0] - v[0]);
-    RC_PRE(turn != 0);
-    if (turn > 0) RC_PRE((a[0] - v[0]) * (b[0] - v[0]) + (a[1] - v[1]) * (b[1] - v[1]) < 0);
-    has_reflex = has_reflex || turn < 0;
-  }
-  RC_PRE(has_reflex == reflex);
-  Polygon p;
-  for (const auto& v : q) p.push_back({v[0] / 64.0, v[1] / 64.0});
-  return p;
-}
-
 struct Run {
   RefineParameters p;
   RefineResult r;
@@ -72,7 +46,7 @@ Run random_run() {
   // size as inRange does, which would keep the early cases on the fixed domains.
   const int choice = *rc::gen::elementOf(std::vector<int>{0, 1, 2, 3, 4, 5});
   const bool reflex = choice >= 4;
-  const Polygon domain = choice < 2 ? kDomains[choice] : random_domain(reflex);
+  const Polygon domain = choice < 2 ? kDomains[choice] : gen::random_domain(reflex);
   if (choice >= 2) run.domain = reflex ? "random non-convex" : "random convex";
   const int kind = *rc::gen::elementOf(std::vector<int>{0, 1, 2});  // constant, shock, radial
   std::map<std::string, double> params;

@@ -1,5 +1,6 @@
 #include "refiners/registry.hpp"
 
+#include "refiners/ls/entry.hpp"
 #include "refiners/star/entry.hpp"
 
 namespace anisocert::refiners {
@@ -7,6 +8,7 @@ namespace anisocert::refiners {
 const std::vector<RefinerEntry>& registered_refiners() {
   static const std::vector<RefinerEntry> entries = {
       star::entry(),
+      ls::entry(),
   };
   return entries;
 }

@@ -1,0 +1,32 @@
+#include "property_tests/generators/domains.hpp"
+
+#include <rapidcheck.h>
+
+#include <array>
+#include <cmath>
+
+namespace anisocert::gen {
+
+std::vector<predicates::Point2<double>> random_domain(bool reflex, bool obtuse_corners) {
+  const int n = reflex ? *rc::gen::inRange(8, 10) : *rc::gen::inRange(5, 10);
+  std::vector<std::array<long, 2>> q;
+  for (int i = 0; i < n; ++i) {
+    const double theta = 2 * M_PI * (i + 0.03 * *rc::gen::inRange(-10, 11)) / n;
+    const double r = reflex ? (i == 0 ? 0.6 : 0.9 + 0.01 * *rc::gen::inRange(0, 11)) : 0.8 + 0.01 * *rc::gen::inRange(0, 21);
+    q.push_back({std::lround(64 * r * std::cos(theta)), std::lround(64 * r * std::sin(theta))});
+  }
+  bool has_reflex = false;
+  for (int i = 0; i < n; ++i) {
+    const auto &a = q[(i + n - 1) % n], &v = q[i], &b = q[(i + 1) % n];
+    const long turn = (v[0] - a[0]) * (b[1] - v[1]) - (v[1] - a[1]) * (b[0] - v[0]);
+    RC_PRE(turn != 0);
+    if (turn > 0 && obtuse_corners) RC_PRE((a[0] - v[0]) * (b[0] - v[0]) + (a[1] - v[1]) * (b[1] - v[1]) < 0);
+    has_reflex = has_reflex || turn < 0;
+  }
+  RC_PRE(has_reflex == reflex);
+  std::vector<predicates::Point2<double>> p;
+  for (const auto& v : q) p.push_back({v[0] / 64.0, v[1] / 64.0});
+  return p;
+}
+
+}  // namespace anisocert::gen

@@ -1,0 +1,18 @@
+#pragma once
+// RapidCheck generators of refiner domains: random star-shaped polygons on the 1/64 grid, so that
+// every edge can be split exactly many times (refiners/common/exact_split.hpp).
+#include "predicates/point.hpp"
+
+#include <vector>
+
+namespace anisocert::gen {
+
+// Star-shaped around the origin: 5 to 9 vertices at jittered angles and radii, convex, or (reflex)
+// 8 to 9 with one vertex pushed in to radius 0.6, a reflex corner (checked). With obtuse_corners,
+// discarded unless every convex corner is obtuse, decided exactly on the grid
+// ((prev − v)·(next − v) < 0): LU Lemma 4.1 for near-isotropic metrics, and LS Theorem 11's
+// separation for θ_bound near its limit. (About 1 in 20 convex and 1 in 7 non-convex draws are
+// then discarded.)
+std::vector<predicates::Point2<double>> random_domain(bool reflex, bool obtuse_corners = true);
+
+}  // namespace anisocert::gen

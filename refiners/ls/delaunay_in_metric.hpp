@@ -1,0 +1,70 @@
+#pragma once
+// The anisotropic Voronoi diagram of sites that all share one metric M (a constant field). With
+// M = FᵀF, d_v(p) = |F(p − v)| (LS §3), so the diagram is the ordinary Voronoi diagram of the
+// mapped sites, pulled back: its cells are convex and hold their sites, it has no orphans, and
+// every loose diagram of the sites is this diagram (LS §7). It is kept as its dual Del_M (LU
+// Definition 2.1) by Bowyer–Watson insertion with the exact in-circle predicate in M; its Voronoi
+// vertices are the M-circumcentres of the triangles, rational points.
+//
+// Three ghost sites far outside the sites' box close the triangulation. A triangle with a ghost
+// is dual to a Voronoi vertex outside the sites' convex hull, so outside Ω (whose corners are
+// sites).
+#include "numbers/rational.hpp"
+#include "predicates/point.hpp"
+#include "refiners/common/domain.hpp"
+
+#include <array>
+#include <vector>
+
+namespace anisocert::refiners::ls {
+
+using predicates::Point2;
+using predicates::Sym2;
+
+class DelaunayInMetric {
+ public:
+  // Counter-clockwise; across[i] is the triangle across the edge opposite v[i]. Ghosts have
+  // negative ids.
+  struct Triangle {
+    std::array<int, 3> v;
+    std::array<int, 3> across;
+    bool alive = true;
+  };
+
+  // Sites are to lie in `extent` (the ghosts are 2¹⁰ of its size away).
+  DelaunayInMetric(const Sym2<double>& M, const common::Box& extent);
+
+  // Inserts site `id` at p (p in the extent box, distinct from every site, ids 0, 1, 2, … in
+  // order); returns the triangles created (valid until the next insertion).
+  const std::vector<int>& insert(int id, const Point2<double>& p);
+
+  const Sym2<double>& metric() const { return M_; }
+  const Triangle& triangle(int t) const { return triangles_[t]; }
+  std::size_t slots() const { return triangles_.size(); }
+  // No ghost among its vertices.
+  bool real(int t) const;
+  const Point2<double>& point(int id) const { return id >= 0 ? points_[id] : ghosts_[-id - 1]; }
+  // The Voronoi vertex dual to triangle t: its circumcentre in M, exactly.
+  Point2<Rational> circumcentre(int t) const;
+
+ private:
+  int locate(const Point2<double>& p) const;
+  int new_triangle(const std::array<int, 3>& v);
+
+  Sym2<double> M_;
+  std::array<Point2<double>, 3> ghosts_;
+  std::vector<Point2<double>> points_;
+  std::vector<Triangle> triangles_;
+  std::vector<int> free_;  // dead slots, reused
+  int recent_ = 0;         // a live triangle near the last insertion: where the next walk starts
+  std::vector<int> created_, cavity_;
+  std::vector<unsigned> stamp_;  // per triangle: marked inside or outside the cavity at insertion generation_
+  unsigned generation_ = 0;
+  std::vector<std::pair<int, int>> rim_;  // (cavity triangle, edge) on the cavity's boundary
+};
+
+// The M-circumcentre of a, b, c (not collinear), exactly: 2 (b − a)ᵀM (p − a) = |b − a|²_M and
+// likewise for c.
+Point2<Rational> circumcentre_in(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M);
+
+}  // namespace anisocert::refiners::ls

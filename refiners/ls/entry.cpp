@@ -1,0 +1,77 @@
+#include "refiners/ls/entry.hpp"
+
+#include "refiners/common/summary.hpp"
+#include "refiners/ls/ls_refiner.hpp"
+#include "refiners/ls/theorem11_conditions.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace anisocert::refiners::ls {
+namespace {
+
+LsParameters parameters(const ParameterValues& v, const common::Budget& budget) {
+  LsParameters p;
+  static_cast<common::Budget&>(p) = budget;
+  p.theta_bound = v.at("theta-bound"), p.size = v.at("size");
+  if (!(p.theta_bound > 0 && p.theta_bound < 60))
+    throw ParameterError("--theta-bound " + shortest_decimal(p.theta_bound) + " is out of range: need 0 < θ_bound < 60 (degrees)");
+  if (!(p.size >= 0 && std::isfinite(p.size)))
+    throw ParameterError("--size " + shortest_decimal(p.size) + " is out of range: need 0 <= size < ∞ (0: no size rule)");
+  return p;
+}
+
+std::string corner_list(const std::vector<int>& corners) {
+  std::string s;
+  for (int k : corners) s += " " + std::to_string(k);
+  return s;
+}
+
+std::vector<std::string> report(const LsResult& r, const LsParameters& p, const common::Domain& domain) {
+  std::vector<std::string> lines{
+      common::size_line(r, "LS refiner"),
+      common::stop_line(r, "encroached subsegments: " + std::to_string(r.encroached_left) +
+                               ", violators: " + std::to_string(r.violators_left))};
+  std::vector<predicates::Sym2<double>> metrics(r.mesh.metrics.begin(), r.mesh.metrics.begin() + static_cast<long>(domain.size()));
+  const Theorem11Conditions c = theorem11_conditions(domain, metrics, p.theta_bound);
+  std::ostringstream o;
+  o << "  LS Theorem 11 (decided exactly): ";
+  if (!c.theta_admissible) {
+    o << "θ_bound = " << p.theta_bound << "° is not below arcsin(1/(2√2)) ≈ 20.7°: no termination guarantee";
+  } else {
+    o.precision(6);
+    o << "θ_bound admissible, γ ∈ [" << c.gamma_lo << ", " << c.gamma_hi << "]; adjoining segments need "
+      << c.separation_hi << "° (2 arcsin(γ²/2)) in the corner's metric: ";
+    if (c.corners_failing.empty() && c.corners_undecided.empty()) o << "holds at every corner";
+    if (!c.corners_failing.empty()) o << "fails at corner(s)" << corner_list(c.corners_failing);
+    if (!c.corners_undecided.empty()) o << (c.corners_failing.empty() ? "" : "; ") << "undecided at corner(s)" << corner_list(c.corners_undecided);
+    if (p.size > 0) o << "; the theorem is stated without the size rule (--size 0)";
+  }
+  lines.push_back(o.str());
+  lines.push_back(common::rule_counts_line(r));
+  lines.push_back("  angles checked in the metric of the triangle's vertices and of its Voronoi vertex (one metric: LS checks every point of the triangle)");
+  o.str("");
+  o << "  parameters: θ_bound = " << p.theta_bound << "°, size = " << p.size << (p.size > 0 ? "" : " (no size rule)");
+  lines.push_back(o.str());
+  return lines;
+}
+
+}  // namespace
+
+RefinerEntry entry() {
+  const LsParameters d;
+  return {"ls",
+          "Labelle–Shewchuk Voronoi refinement (LS §9: encroached segments, then Voronoi vertices whose dual triangle has an "
+          "angle below θ_bound or is too large); constant fields only so far",
+          {{"theta-bound", "LS: smallest angle θ_bound in degrees (Theorem 11 needs < 20.7)", d.theta_bound},
+           {"size", "largest circumradius in the metric", d.size}},
+          [](const common::Domain& domain, const fields::MetricField& field, const ParameterValues& values,
+             const common::Budget& budget, unsigned, const common::Progress& progress) {
+            const LsParameters p = parameters(values, budget);
+            LsResult r = refine_ls(domain, field, p, progress);
+            std::vector<std::string> lines = report(r, p, domain);
+            return Run{std::move(r), std::move(lines)};
+          }};
+}
+
+}  // namespace anisocert::refiners::ls

@@ -1,0 +1,248 @@
+#include "refiners/ls/ls_refiner.hpp"
+
+#include "predicates/angle.hpp"
+#include "refiners/common/sites.hpp"
+#include "refiners/ls/delaunay_in_metric.hpp"
+#include "refiners/ls/rules.hpp"
+#include "refiners/ls/segment_cells.hpp"
+#include "theory/ls_theorem11.hpp"
+
+#include <cmath>
+#include <deque>
+
+namespace anisocert::refiners::ls {
+namespace {
+
+std::string point_text(const Point2<double>& p) { return "(" + shortest_decimal(p.x) + ", " + shortest_decimal(p.y) + ")"; }
+std::string metric_text(const Sym2<double>& M) {
+  return "[" + shortest_decimal(M.m11) + ", " + shortest_decimal(M.m12) + ", " + shortest_decimal(M.m22) + "]";
+}
+bool same(const Sym2<double>& a, const Sym2<double>& b) { return a.m11 == b.m11 && a.m12 == b.m12 && a.m22 == b.m22; }
+
+// The double just above sin²θ_bound: "angle ≥ arcsin √s2" then implies "angle ≥ θ_bound" exactly.
+double sin2_above(double theta_deg) {
+  return sqr(theory::ls_t11_sin_theta(rational_from_double(theta_deg), 128)).upper_double();
+}
+
+Rational squared_length(const Sym2<double>& M, const Point2<Rational>& p, const Point2<double>& v) {
+  const Rational dx = p.x - Rational(v.x), dy = p.y - Rational(v.y);
+  return Rational(M.m11) * dx * dx + 2 * Rational(M.m12) * dx * dy + Rational(M.m22) * dy * dy;
+}
+
+class LsRefinement {
+ public:
+  LsRefinement(const common::Domain& domain, const fields::MetricField& field, const LsParameters& p)
+      : domain_(domain),
+        p_(p),
+        sites_(domain, field),
+        metric_(field.at(domain.corners()[0].x, domain.corners()[0].y)),
+        diagram_(metric_, domain.bounding_box()),
+        s2_(sin2_above(p.theta_bound)),
+        size2_(Rational(p.size) * Rational(p.size)) {
+    const auto& corners = domain.corners();
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      const Sym2<double> M = field.at(corners[k].x, corners[k].y);
+      if (!same(M, metric_))
+        throw common::FieldError("--algo ls needs one metric at every site so far (LS §8's loose diagram of bisector conics is not built yet): the field " +
+                                 field.name + " gives " + metric_text(metric_) + " at " + domain.corner_text(0) + " and " +
+                                 metric_text(M) + " at " + domain.corner_text(k));
+      diagram_.insert(sites_.add(corners[k], M), corners[k]);
+    }
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      subsegments_.push_back({static_cast<int>(k), static_cast<int>((k + 1) % corners.size())});
+      queued_.push_back(false);
+      queue_segment(static_cast<int>(k));
+    }
+    for (std::size_t t = 0; t < diagram_.slots(); ++t)
+      if (diagram_.triangle(static_cast<int>(t)).alive) queue_if_violator(static_cast<int>(t));
+  }
+
+  std::size_t vertices() const { return sites_.size(); }
+  std::size_t queued() const { return encroached_.size() + violators_.size(); }
+  const std::string& stalled() const { return stalled_; }
+  std::string done() const { return "no encroached subsegment and no violator"; }
+
+  bool step() {
+    while (!encroached_.empty()) {
+      const int s = encroached_.front();
+      encroached_.pop_front();
+      queued_[s] = false;
+      const std::vector<CellOnSegment> by = encroachers(s);
+      if (by.empty()) continue;
+      split(s, by, Rule::encroached_segment);
+      return true;
+    }
+    while (!violators_.empty()) {
+      const auto [t, v] = violators_.front();
+      violators_.pop_front();
+      if (!current(t, v)) continue;
+      const Rule rule = violation(t);
+      if (rule == Rule::none) continue;
+      const Point2<Rational> c = diagram_.circumcentre(t);
+      const Point2<double> q{c.x.convert_to<double>(), c.y.convert_to<double>()};
+      // LS §9: "A new site is never permitted to encroach upon a segment".
+      if (const auto s = encroached_by(q)) {
+        split(s->first, {s->second}, Rule::violator_encroaches);
+        violators_.emplace_front(t, v);
+        return true;
+      }
+      if (!domain_.contains(q)) {
+        stalled_ = "the Voronoi vertex of sites " + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) +
+                   " rounds to " + point_text(q) + ", outside Ω, and encroaches no subsegment";
+        return true;
+      }
+      insert(q, rule, std::sqrt(squared_length(metric_, c, diagram_.point(v[0])).convert_to<double>()));
+      return true;
+    }
+    return false;
+  }
+
+  LsResult result(std::string stop_reason, bool finished) const {
+    LsResult r;
+    r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
+    r.mesh.segments = subsegments_;
+    for (std::size_t t = 0; t < diagram_.slots(); ++t) {
+      const auto& tri = diagram_.triangle(static_cast<int>(t));
+      if (!tri.alive || !diagram_.real(static_cast<int>(t))) continue;
+      if (domain_.contains(diagram_.circumcentre(static_cast<int>(t)))) r.mesh.triangles.push_back(tri.v);
+      r.violators_left += violation(static_cast<int>(t)) != Rule::none;
+    }
+    for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
+    r.consistent = finished;
+    r.stop_reason = std::move(stop_reason);
+    for (Rule rule : rules_by_priority) r.rule_counts.emplace_back(rule_name(rule), counts_[static_cast<int>(rule)]);
+    r.last_rule = rule_name(last_rule_);
+    r.trace = trace_;
+    return r;
+  }
+
+ private:
+  bool current(int t, const std::array<int, 3>& v) const {
+    return t < static_cast<int>(diagram_.slots()) && diagram_.triangle(t).alive && diagram_.triangle(t).v == v;
+  }
+
+  // Rule 3 or 4 for the Voronoi vertex dual to triangle t, or none (a vertex outside closed Ω is
+  // no violator: LS §9 "q ∈ Ω").
+  Rule violation(int t) const {
+    if (!diagram_.real(t)) return Rule::none;
+    const Point2<Rational> c = diagram_.circumcentre(t);
+    if (!domain_.contains(c)) return Rule::none;
+    const auto& v = diagram_.triangle(t).v;
+    for (int i = 0; i < 3; ++i)
+      if (!predicates::angle_at_least_arcsin(diagram_.point(v[(i + 2) % 3]), diagram_.point(v[i]), diagram_.point(v[(i + 1) % 3]),
+                                             metric_, s2_))
+        return Rule::poor_angle;
+    if (p_.size > 0 && squared_length(metric_, c, diagram_.point(v[0])) > size2_) return Rule::too_large;
+    return Rule::none;
+  }
+
+  void queue_if_violator(int t) {
+    if (violation(t) != Rule::none) violators_.emplace_back(t, diagram_.triangle(t).v);
+  }
+  void queue_segment(int s) {
+    if (queued_[s]) return;
+    queued_[s] = true;
+    encroached_.push_back(s);
+  }
+
+  // The cells other than its endpoints' that subsegment s meets.
+  std::vector<CellOnSegment> encroachers(int s) const {
+    const auto [a, b] = subsegments_[s];
+    const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
+    const Box2d box = near_segment(pa, pb, metric_);
+    std::vector<std::pair<int, Point2<double>>> near;
+    for (int u : sites_.in({box.x0, box.x1, box.y0, box.y1})) near.emplace_back(u, sites_.points[u]);
+    std::vector<CellOnSegment> by = cells_along(pa, pb, metric_, near);
+    std::erase_if(by, [&](const CellOnSegment& c) { return c.site == a || c.site == b; });
+    return by;
+  }
+
+  // A subsegment q's cell would meet, were q inserted, and that part of it (when no subsegment is
+  // encroached, the cells along each are its endpoints' only).
+  std::optional<std::pair<int, CellOnSegment>> encroached_by(const Point2<double>& q) const {
+    for (std::size_t s = 0; s < subsegments_.size(); ++s)
+      if (auto c = would_meet(static_cast<int>(s), q)) return std::pair{static_cast<int>(s), *c};
+    return std::nullopt;
+  }
+  std::optional<CellOnSegment> would_meet(int s, const Point2<double>& q) const {
+    const auto [a, b] = subsegments_[s];
+    const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
+    if (!near_segment(pa, pb, metric_).contains(q)) return std::nullopt;
+    for (const CellOnSegment& c : cells_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}))
+      if (c.site == -1) return c;
+    return std::nullopt;
+  }
+
+  // LS §9: s is split in one of the cells `in`, the one nearest its midpoint, as near the
+  // midpoint as a double exactly on s allows.
+  void split(int s, const std::vector<CellOnSegment>& in, Rule rule) {
+    const Rational half(1, 2);
+    const auto gap = [&](const CellOnSegment& c) { return c.lo > half ? c.lo - half : c.hi < half ? half - c.hi : Rational(0); };
+    const CellOnSegment* best = &in.front();
+    for (const CellOnSegment& c : in)
+      if (gap(c) < gap(*best)) best = &c;
+    const auto [a, b] = subsegments_[s];
+    const auto z = split_point(sites_.points[a], sites_.points[b], best->lo, best->hi);
+    if (!z) {
+      stalled_ = "subsegment " + point_text(sites_.points[a]) + " – " + point_text(sites_.points[b]) +
+                 " is to be split in a cell that holds no double point exactly on it";
+      return;
+    }
+    const int k = insert(*z, rule, 0);
+    if (k < 0) return;
+    subsegments_[s] = {a, k};
+    subsegments_.push_back({k, b});
+    queued_.push_back(false);
+    queue_segment(s);
+    queue_segment(static_cast<int>(subsegments_.size()) - 1);
+  }
+
+  // Inserts q as a site; its index, or −1 when the run stalls.
+  int insert(const Point2<double>& q, Rule rule, double radius) {
+    const Sym2<double> M = sites_.field.at(q.x, q.y);
+    if (!same(M, metric_)) {
+      stalled_ = "the field " + sites_.field.name + " gives " + metric_text(M) + " at " + point_text(q) + ", not the corners' " +
+                 metric_text(metric_) + ": --algo ls needs one metric at every site so far (LS §8's loose diagram of bisector conics is not built yet)";
+      return -1;
+    }
+    const double nearest = sites_.grid.nearest_site2(q, M, sites_.points);
+    trace_.push_back({static_cast<int>(rule), q.x, q.y, std::sqrt(nearest), -1, radius});
+    ++counts_[static_cast<int>(rule)];
+    last_rule_ = rule;
+    const int k = sites_.add(q, M);
+    sites_.grow_grid();
+    for (int t : diagram_.insert(k, q)) queue_if_violator(t);
+    for (std::size_t s = 0; s < subsegments_.size(); ++s)
+      if (subsegments_[s].first != k && subsegments_[s].second != k && would_meet(static_cast<int>(s), q)) queue_segment(static_cast<int>(s));
+    return k;
+  }
+
+  const common::Domain& domain_;
+  LsParameters p_;
+  common::Sites sites_;
+  Sym2<double> metric_;
+  DelaunayInMetric diagram_;
+  double s2_;
+  Rational size2_;
+  std::vector<std::pair<int, int>> subsegments_;
+  std::vector<bool> queued_;
+  std::deque<int> encroached_;
+  std::deque<std::pair<int, std::array<int, 3>>> violators_;
+  std::string stalled_;
+  std::array<std::size_t, 5> counts_{};
+  Rule last_rule_ = Rule::none;
+  std::vector<common::Insertion> trace_;
+};
+
+}  // namespace
+
+LsResult refine_ls(const common::Domain& domain, const fields::MetricField& field, const LsParameters& p, const common::Progress& progress) {
+  const common::Stopwatch clock;
+  LsRefinement r(domain, field, p);
+  const std::string stop = common::refine_until_done(r, p, clock, progress);
+  LsResult result = r.result(stop, stop == r.done());
+  result.seconds = clock.seconds();
+  return result;
+}
+
+}  // namespace anisocert::refiners::ls

@@ -1,0 +1,13 @@
+#pragma once
+// The Labelle–Shewchuk refiner's parameters (LS §9): θ_bound and the size bound, with the budgets
+// every run has.
+#include "refiners/common/result.hpp"
+
+namespace anisocert::refiners::ls {
+
+struct LsParameters : common::Budget {
+  double theta_bound = 20;  // degrees; LS Theorem 11 needs θ_bound < arcsin(1/(2√2)) ≈ 20.7°
+  double size = 1;          // largest circumradius in the metric; 0: no size rule (LS Theorem 11's setting)
+};
+
+}  // namespace anisocert::refiners::ls

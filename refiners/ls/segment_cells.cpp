@@ -1,0 +1,89 @@
+#include "refiners/ls/segment_cells.hpp"
+
+#include "refiners/common/exact_split.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace anisocert::refiners::ls {
+
+namespace {
+
+Rational form(const Sym2<double>& M, const Rational& x1, const Rational& y1, const Rational& x2, const Rational& y2) {
+  return Rational(M.m11) * x1 * x2 + Rational(M.m12) * (x1 * y2 + y1 * x2) + Rational(M.m22) * y1 * y2;
+}
+
+Integer floor_of(const Rational& q) {
+  Integer n = numerator(q), d = denominator(q);  // d > 0
+  Integer f = n / d;                               // truncated
+  if (f * d > n) f -= 1;
+  return f;
+}
+
+}  // namespace
+
+std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
+                                       const std::vector<std::pair<int, Point2<double>>>& sites) {
+  const Rational dx = Rational(b.x) - Rational(a.x), dy = Rational(b.y) - Rational(a.y);
+  struct Line {
+    Rational alpha, beta;  // ℓ(t) = α + β t
+  };
+  std::vector<Line> lines;
+  lines.reserve(sites.size());
+  for (const auto& [id, u] : sites) {
+    const Rational ux = Rational(u.x) - Rational(a.x), uy = Rational(u.y) - Rational(a.y);
+    lines.push_back({form(M, ux, uy, ux, uy), -2 * form(M, dx, dy, ux, uy)});
+  }
+  std::vector<CellOnSegment> cells;
+  for (std::size_t u = 0; u < sites.size(); ++u) {
+    Rational lo = 0, hi = 1;
+    bool empty = false;
+    for (std::size_t x = 0; x < sites.size() && !empty; ++x) {
+      if (x == u) continue;
+      // ℓ_u(t) <= ℓ_x(t) ⇔ (β_u − β_x) t <= α_x − α_u.
+      const Rational slope = lines[u].beta - lines[x].beta, rhs = lines[x].alpha - lines[u].alpha;
+      if (slope > 0) {
+        hi = std::min(hi, rhs / slope);
+      } else if (slope < 0) {
+        lo = std::max(lo, rhs / slope);
+      } else {
+        empty = rhs < 0;
+      }
+      empty = empty || lo >= hi;
+    }
+    if (!empty) cells.push_back({sites[u].first, lo, hi});
+  }
+  return cells;
+}
+
+Box2d near_segment(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double length2 = M.m11 * dx * dx + 2 * M.m12 * dx * dy + M.m22 * dy * dy;  // |s|²_M
+  // λ_min(M) >= det M / trace M, so a point at M-distance r from s is within r / √(det/trace)
+  // of it in the plane.
+  const double det = M.m11 * M.m22 - M.m12 * M.m12, trace = M.m11 + M.m22;
+  const double r = 1.01 * std::sqrt(length2 / 4 * trace / det) + 1e-300;
+  return {std::min(a.x, b.x) - r, std::max(a.x, b.x) + r, std::min(a.y, b.y) - r, std::max(a.y, b.y) + r};
+}
+
+std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi) {
+  const Rational half(1, 2);
+  if (lo <= half && half <= hi)
+    if (const auto m = common::exact_midpoint(a, b)) return m;
+  const int k = std::min(common::exact_halvings(a, b), 60);
+  if (k < 1) return std::nullopt;
+  const Integer scale = Integer(1) << k;
+  const Rational target = std::clamp(half, lo, hi);
+  // The grid points of [lo, hi] ∩ (0, 1): j from max(⌈lo 2ᵏ⌉, 1) to min(⌊hi 2ᵏ⌋, 2ᵏ − 1).
+  const Integer first = std::max(Integer(-floor_of(-lo * scale)), Integer(1));
+  const Integer last = std::min(floor_of(hi * scale), Integer(scale - 1));
+  if (first > last) return std::nullopt;
+  const Integer nearest = std::clamp(floor_of(target * scale + half), first, last);
+  const Rational t(nearest, scale);
+  const Rational x = Rational(a.x) + t * (Rational(b.x) - Rational(a.x)), y = Rational(a.y) + t * (Rational(b.y) - Rational(a.y));
+  const Point2<double> z{x.convert_to<double>(), y.convert_to<double>()};
+  if (Rational(z.x) != x || Rational(z.y) != y) return std::nullopt;  // not a double (exact_halvings is a lower bound)
+  return z;
+}
+
+}  // namespace anisocert::refiners::ls

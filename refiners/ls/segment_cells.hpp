@@ -1,0 +1,44 @@
+#pragma once
+// The cells a constrained subsegment s = ab meets (LS §9: s is encroached "if it intersects a
+// Voronoi cell belonging to any site w other than a and b"), for sites that share one metric M,
+// exactly. Along s, z(t) = a + t(b − a), every d_u(z)² − d_a(z)² is linear in t:
+//   ℓ_u(t) = |u − a|²_M − 2t (b − a)ᵀM(u − a),
+// so the part of s in u's closed cell is the closed range of t where ℓ_u is least: rational ends.
+// A cell that meets s in a single point (s through a Voronoi vertex or along no arc) does not
+// count: the subsegment is still an edge of the dual there (LS Theorem 7's preconditions hold).
+#include "numbers/rational.hpp"
+#include "predicates/point.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace anisocert::refiners::ls {
+
+using predicates::Point2;
+using predicates::Sym2;
+
+struct CellOnSegment {
+  int site;
+  Rational lo, hi;  // 0 <= lo < hi <= 1: s ∩ Vor(site) = z([lo, hi])
+};
+
+// The cells among `sites` (a and b among them, each with its id) that meet s in more than a
+// point. Sites outside every disc centred on s through its nearer endpoint (see near_segment)
+// never do, so the caller may leave them out.
+std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
+                                       const std::vector<std::pair<int, Point2<double>>>& sites);
+
+// A box holding every point p whose M-distance to s is at most |s|_M / 2, the only sites that
+// can be nearer to a point of s than both a and b; in doubles, widened by 1% (rounding).
+struct Box2d {
+  double x0, x1, y0, y1;
+  bool contains(const Point2<double>& p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
+};
+Box2d near_segment(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M);
+
+// LS §9's split point: the point of z([lo, hi]) nearest the "midpoint" t = ½ (d_a(z) = d_b(z) for
+// one metric), as a double exactly on s: a + j 2⁻ᵏ (b − a) with k the exact halvings of ab (at
+// most 60) and 0 < j < 2ᵏ; nothing when [lo, hi] holds no such point.
+std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi);
+
+}  // namespace anisocert::refiners::ls
