@@ -4,6 +4,7 @@
 #include "numbers/excerpt.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -50,6 +51,22 @@ Box Domain::bounding_box() const {
   Box b{inf, -inf, inf, -inf};
   for (const auto& q : corners_) b.x0 = std::min(b.x0, q.x), b.y0 = std::min(b.y0, q.y), b.x1 = std::max(b.x1, q.x), b.y1 = std::max(b.y1, q.y);
   return b;
+}
+
+std::optional<bool> Domain::contains(const Box& b) const {
+  if (!(std::isfinite(b.x0) && std::isfinite(b.x1) && std::isfinite(b.y0) && std::isfinite(b.y1)) || b.x0 > b.x1 || b.y0 > b.y1)
+    return std::nullopt;
+  const std::array<Point2<double>, 4> corner{Point2<double>{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}};
+  const std::size_t m = corners_.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    const Point2<double>&p = corners_[k], &q = corners_[(k + 1) % m];
+    if (std::max(p.x, q.x) < b.x0 || std::min(p.x, q.x) > b.x1 || std::max(p.y, q.y) < b.y0 || std::min(p.y, q.y) > b.y1) continue;
+    const Sign side = predicates::orientation(p, q, corner[0]);
+    if (side == Sign::zero) return std::nullopt;
+    for (std::size_t i = 1; i < 4; ++i)
+      if (predicates::orientation(p, q, corner[i]) != side) return std::nullopt;
+  }
+  return contains(corner[0]);
 }
 
 bool Domain::crosses_no_edge(const Point2<double>& a, const Point2<double>& b) const {

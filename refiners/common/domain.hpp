@@ -7,6 +7,7 @@
 #include "numbers/shortest_decimal.hpp"
 #include "refiners/common/errors.hpp"
 
+#include <optional>
 #include <string>
 
 namespace anisocert::refiners::common {
@@ -35,6 +36,11 @@ class Domain {
   bool contains(const Point2<double>& p) const { return geometry::in_closed_polygon(p, corners_); }
   // p (rational, e.g. a centroid of doubles) in the closed polygon, exactly.
   bool contains(const Point2<Rational>& p) const { return geometry::in_closed_polygon(p, exact_); }
+  // The closed box b, a filter for a point known only to lie in it: true when all of b lies in
+  // the closed polygon, false when none of it does, nothing when b may meet the boundary (or is
+  // not finite). Exact: b meets no edge (decided by orientations of its corners), so its corners
+  // share one answer.
+  std::optional<bool> contains(const Box& b) const;
   // The segment ab crosses no edge of Ω properly (always true in a convex Ω, for a, b in Ω).
   bool visible(const Point2<double>& a, const Point2<double>& b) const { return convex_ || crosses_no_edge(a, b); }
   // "corner k (x, y)", with the shortest decimals that read back as the corners' doubles.

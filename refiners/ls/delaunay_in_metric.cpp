@@ -24,11 +24,6 @@ bool DelaunayInMetric::real(int t) const {
   return v[0] >= 0 && v[1] >= 0 && v[2] >= 0;
 }
 
-Point2<Rational> DelaunayInMetric::circumcentre(int t) const {
-  const auto& v = triangles_[t].v;
-  return circumcentre_in(point(v[0]), point(v[1]), point(v[2]), M_);
-}
-
 // The visibility walk: from the last triangle created, across an edge that has p strictly on its
 // other side, until none has (p in the closed triangle). It ends in a Delaunay triangulation (of
 // the mapped points: orientation is invariant under F), whatever edge it tries first; the first
@@ -128,16 +123,6 @@ const std::vector<int>& DelaunayInMetric::insert(int id, const Point2<double>& p
   }
   recent_ = created_.front();
   return created_;
-}
-
-Point2<Rational> circumcentre_in(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
-  const Rational m11(M.m11), m12(M.m12), m22(M.m22), ax(a.x), ay(a.y);
-  const Rational ux = Rational(b.x) - ax, uy = Rational(b.y) - ay, wx = Rational(c.x) - ax, wy = Rational(c.y) - ay;
-  // Rows M u and M w; right-hand sides |u|²_M / 2 and |w|²_M / 2.
-  const Rational r11 = m11 * ux + m12 * uy, r12 = m12 * ux + m22 * uy, r21 = m11 * wx + m12 * wy, r22 = m12 * wx + m22 * wy;
-  const Rational U = (r11 * ux + r12 * uy) / 2, W = (r21 * wx + r22 * wy) / 2;
-  const Rational det = r11 * r22 - r12 * r21;
-  return {ax + (U * r22 - W * r12) / det, ay + (r11 * W - r21 * U) / det};
 }
 
 }  // namespace anisocert::refiners::ls

@@ -9,6 +9,7 @@
 // Three ghost sites far outside the sites' box close the triangulation. A triangle with a ghost
 // is dual to a Voronoi vertex outside the sites' convex hull, so outside Ω (whose corners are
 // sites).
+#include "numbers/filter_interval.hpp"
 #include "numbers/rational.hpp"
 #include "predicates/point.hpp"
 #include "refiners/common/domain.hpp"
@@ -20,6 +21,20 @@ namespace anisocert::refiners::ls {
 
 using predicates::Point2;
 using predicates::Sym2;
+
+// The M-circumcentre p of a, b, c (not collinear): 2 (b − a)ᵀM (p − a) = |b − a|²_M and likewise
+// for c, solved by Cramer's rule in T: exactly (Rational), or a box holding it (FilterInterval;
+// unbounded when the filter cannot tell the determinant from 0).
+template <class T>
+Point2<T> circumcentre_in(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
+  const T m11(M.m11), m12(M.m12), m22(M.m22), ax(a.x), ay(a.y);
+  const T ux = T(b.x) - ax, uy = T(b.y) - ay, wx = T(c.x) - ax, wy = T(c.y) - ay;
+  // Rows M u and M w; right-hand sides |u|²_M / 2 and |w|²_M / 2.
+  const T r11 = m11 * ux + m12 * uy, r12 = m12 * ux + m22 * uy, r21 = m11 * wx + m12 * wy, r22 = m12 * wx + m22 * wy;
+  const T U = (r11 * ux + r12 * uy) * T(0.5), W = (r21 * wx + r22 * wy) * T(0.5);
+  const T det = r11 * r22 - r12 * r21;
+  return {ax + (U * r22 - W * r12) / det, ay + (r11 * W - r21 * U) / det};
+}
 
 class DelaunayInMetric {
  public:
@@ -44,8 +59,12 @@ class DelaunayInMetric {
   // No ghost among its vertices.
   bool real(int t) const;
   const Point2<double>& point(int id) const { return id >= 0 ? points_[id] : ghosts_[-id - 1]; }
-  // The Voronoi vertex dual to triangle t: its circumcentre in M, exactly.
-  Point2<Rational> circumcentre(int t) const;
+  // The Voronoi vertex dual to triangle t: its circumcentre in M (circumcentre_in).
+  template <class T>
+  Point2<T> circumcentre(int t) const {
+    const auto& v = triangles_[t].v;
+    return circumcentre_in<T>(point(v[0]), point(v[1]), point(v[2]), M_);
+  }
 
  private:
   int locate(const Point2<double>& p) const;
@@ -62,9 +81,5 @@ class DelaunayInMetric {
   unsigned generation_ = 0;
   std::vector<std::pair<int, int>> rim_;  // (cavity triangle, edge) on the cavity's boundary
 };
-
-// The M-circumcentre of a, b, c (not collinear), exactly: 2 (b − a)ᵀM (p − a) = |b − a|²_M and
-// likewise for c.
-Point2<Rational> circumcentre_in(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M);
 
 }  // namespace anisocert::refiners::ls

@@ -24,9 +24,10 @@ double sin2_above(double theta_deg) {
   return sqr(theory::ls_t11_sin_theta(rational_from_double(theta_deg), 128)).upper_double();
 }
 
-Rational squared_length(const Sym2<double>& M, const Point2<Rational>& p, const Point2<double>& v) {
-  const Rational dx = p.x - Rational(v.x), dy = p.y - Rational(v.y);
-  return Rational(M.m11) * dx * dx + 2 * Rational(M.m12) * dx * dy + Rational(M.m22) * dy * dy;
+template <class T>
+T squared_length(const Sym2<double>& M, const Point2<T>& p, const Point2<double>& v) {
+  const T dx = p.x - T(v.x), dy = p.y - T(v.y);
+  return T(M.m11) * (dx * dx) + T(M.m12) * (dx * dy) * T(2.0) + T(M.m22) * (dy * dy);
 }
 
 class LsRefinement {
@@ -49,8 +50,7 @@ class LsRefinement {
       diagram_.insert(sites_.add(corners[k], M), corners[k]);
     }
     for (std::size_t k = 0; k < corners.size(); ++k) {
-      subsegments_.push_back({static_cast<int>(k), static_cast<int>((k + 1) % corners.size())});
-      queued_.push_back(false);
+      add_subsegment(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()));
       queue_segment(static_cast<int>(k));
     }
     for (std::size_t t = 0; t < diagram_.slots(); ++t)
@@ -78,7 +78,7 @@ class LsRefinement {
       if (!current(t, v)) continue;
       const Rule rule = violation(t);
       if (rule == Rule::none) continue;
-      const Point2<Rational> c = diagram_.circumcentre(t);
+      const Point2<Rational> c = diagram_.circumcentre<Rational>(t);
       const Point2<double> q{c.x.convert_to<double>(), c.y.convert_to<double>()};
       // LS §9: "A new site is never permitted to encroach upon a segment".
       if (const auto s = encroached_by(q)) {
@@ -104,7 +104,7 @@ class LsRefinement {
     for (std::size_t t = 0; t < diagram_.slots(); ++t) {
       const auto& tri = diagram_.triangle(static_cast<int>(t));
       if (!tri.alive || !diagram_.real(static_cast<int>(t))) continue;
-      if (domain_.contains(diagram_.circumcentre(static_cast<int>(t)))) r.mesh.triangles.push_back(tri.v);
+      if (vertex_in_domain(static_cast<int>(t), diagram_.circumcentre<FilterInterval>(static_cast<int>(t)))) r.mesh.triangles.push_back(tri.v);
       r.violators_left += violation(static_cast<int>(t)) != Rule::none;
     }
     for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
@@ -122,22 +122,40 @@ class LsRefinement {
   }
 
   // Rule 3 or 4 for the Voronoi vertex dual to triangle t, or none (a vertex outside closed Ω is
-  // no violator: LS §9 "q ∈ Ω").
+  // no violator: LS §9 "q ∈ Ω"). The filtered predicates and boxes decide; rationals when they
+  // cannot.
   Rule violation(int t) const {
     if (!diagram_.real(t)) return Rule::none;
-    const Point2<Rational> c = diagram_.circumcentre(t);
-    if (!domain_.contains(c)) return Rule::none;
     const auto& v = diagram_.triangle(t).v;
-    for (int i = 0; i < 3; ++i)
-      if (!predicates::angle_at_least_arcsin(diagram_.point(v[(i + 2) % 3]), diagram_.point(v[i]), diagram_.point(v[(i + 1) % 3]),
-                                             metric_, s2_))
-        return Rule::poor_angle;
-    if (p_.size > 0 && squared_length(metric_, c, diagram_.point(v[0])) > size2_) return Rule::too_large;
-    return Rule::none;
+    bool poor = false;
+    for (int i = 0; i < 3 && !poor; ++i)
+      poor = !predicates::angle_at_least_arcsin(diagram_.point(v[(i + 2) % 3]), diagram_.point(v[i]), diagram_.point(v[(i + 1) % 3]),
+                                                metric_, s2_);
+    const Point2<FilterInterval> c = diagram_.circumcentre<FilterInterval>(t);
+    if (!poor && !too_large(t, c)) return Rule::none;
+    if (!vertex_in_domain(t, c)) return Rule::none;
+    return poor ? Rule::poor_angle : Rule::too_large;
+  }
+  // c: a box holding the vertex.
+  bool too_large(int t, const Point2<FilterInterval>& c) const {
+    if (p_.size <= 0) return false;
+    const Point2<double>& a = diagram_.point(diagram_.triangle(t).v[0]);
+    if (const auto s = (squared_length(metric_, c, a) - FilterInterval(p_.size) * p_.size).sign(); s && *s != Sign::zero)
+      return *s == Sign::positive;
+    return squared_length(metric_, diagram_.circumcentre<Rational>(t), a) > size2_;
+  }
+  bool vertex_in_domain(int t, const Point2<FilterInterval>& c) const {
+    if (const auto in = domain_.contains(common::Box{c.x.lo, c.x.hi, c.y.lo, c.y.hi})) return *in;
+    return domain_.contains(diagram_.circumcentre<Rational>(t));
   }
 
   void queue_if_violator(int t) {
     if (violation(t) != Rule::none) violators_.emplace_back(t, diagram_.triangle(t).v);
+  }
+  void add_subsegment(int a, int b) {
+    subsegments_.emplace_back(a, b);
+    boxes_.push_back(near_segment(sites_.points[a], sites_.points[b], metric_));
+    queued_.push_back(false);
   }
   void queue_segment(int s) {
     if (queued_[s]) return;
@@ -165,9 +183,9 @@ class LsRefinement {
     return std::nullopt;
   }
   std::optional<CellOnSegment> would_meet(int s, const Point2<double>& q) const {
+    if (!boxes_[s].contains(q)) return std::nullopt;
     const auto [a, b] = subsegments_[s];
     const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
-    if (!near_segment(pa, pb, metric_).contains(q)) return std::nullopt;
     for (const CellOnSegment& c : cells_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}))
       if (c.site == -1) return c;
     return std::nullopt;
@@ -191,8 +209,8 @@ class LsRefinement {
     const int k = insert(*z, rule, 0);
     if (k < 0) return;
     subsegments_[s] = {a, k};
-    subsegments_.push_back({k, b});
-    queued_.push_back(false);
+    boxes_[s] = near_segment(sites_.points[a], sites_.points[k], metric_);
+    add_subsegment(k, b);
     queue_segment(s);
     queue_segment(static_cast<int>(subsegments_.size()) - 1);
   }
@@ -225,6 +243,7 @@ class LsRefinement {
   double s2_;
   Rational size2_;
   std::vector<std::pair<int, int>> subsegments_;
+  std::vector<Box2d> boxes_;  // near_segment of each subsegment
   std::vector<bool> queued_;
   std::deque<int> encroached_;
   std::deque<std::pair<int, std::array<int, 3>>> violators_;

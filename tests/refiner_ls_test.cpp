@@ -1,0 +1,180 @@
+// The Labelle–Shewchuk refiner's parts (refiners/ls/) against independent checks: Del_M by brute
+// force (every circumellipse empty of every site, Euler's count), the cells along a subsegment
+// against the nearest sites at exact sample points, split points exactly on their subsegment, and
+// fixed runs against the exact oracle (the random runs are property_tests/ls_refiner_properties).
+#include "fields/registry.hpp"
+#include "geometry/mesh.hpp"
+#include "oracle/diagram/diagram.hpp"
+#include "oracle/diagram/mesh_dual.hpp"
+#include "predicates/incircle.hpp"
+#include "predicates/orientation.hpp"
+#include "refiners/ls/delaunay_in_metric.hpp"
+#include "refiners/ls/ls_refiner.hpp"
+#include "refiners/ls/segment_cells.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+namespace {
+
+using namespace anisocert;
+using predicates::Point2;
+using predicates::Sym2;
+using refiners::ls::DelaunayInMetric;
+
+Sym2<double> random_metric(std::mt19937& rng) {
+  std::uniform_real_distribution<double> eig(0.5, 50), turn(0, M_PI);
+  const double l1 = eig(rng), l2 = eig(rng), a = turn(rng), c = std::cos(a), s = std::sin(a);
+  return {l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c};
+}
+
+Rational q2(const Sym2<double>& M, const Point2<Rational>& p, const Point2<double>& v) {
+  const Rational x = p.x - Rational(v.x), y = p.y - Rational(v.y);
+  return Rational(M.m11) * x * x + 2 * Rational(M.m12) * x * y + Rational(M.m22) * y * y;
+}
+
+// Random points, or points of a coarse grid (many M-cocircular quadruples when M is diagonal).
+std::vector<Point2<double>> random_points(std::mt19937& rng, bool grid, int n) {
+  std::uniform_int_distribution<int> coordinate(0, grid ? 6 : 1 << 20);
+  std::set<std::pair<double, double>> seen;
+  std::vector<Point2<double>> p;
+  while (static_cast<int>(p.size()) < n) {
+    const double x = coordinate(rng) / (grid ? 6.0 : double(1 << 20)), y = coordinate(rng) / (grid ? 6.0 : double(1 << 20));
+    if (seen.insert({x, y}).second) p.push_back({x, y});
+    if (grid && seen.size() == 49) break;
+  }
+  return p;
+}
+
+TEST(DelaunayInMetric, EveryCircumellipseIsEmptyAndTheCountsAreEuler) {
+  std::mt19937 rng(7);
+  for (int round = 0; round < 60; ++round) {
+    const bool grid = round % 3 == 0;
+    const Sym2<double> M = grid && round % 2 == 0 ? Sym2<double>{1, 0, 4} : random_metric(rng);
+    const auto points = random_points(rng, grid, 40);
+    DelaunayInMetric d(M, {0, 1, 0, 1});
+    for (std::size_t i = 0; i < points.size(); ++i) d.insert(static_cast<int>(i), points[i]);
+    std::size_t alive = 0;
+    for (std::size_t t = 0; t < d.slots(); ++t) {
+      const auto& tri = d.triangle(static_cast<int>(t));
+      if (!tri.alive) continue;
+      ++alive;
+      const auto &a = d.point(tri.v[0]), &b = d.point(tri.v[1]), &c = d.point(tri.v[2]);
+      ASSERT_EQ(predicates::orientation(a, b, c), Sign::positive);
+      for (int i = 0; i < 3; ++i) {  // neighbours agree
+        const int n = tri.across[i];
+        if (n < 0) continue;
+        const auto& o = d.triangle(n);
+        ASSERT_TRUE(o.alive);
+        ASSERT_EQ(std::count(o.across.begin(), o.across.end(), static_cast<int>(t)), 1);
+      }
+      for (const auto& p : points) ASSERT_NE(predicates::incircle(a, b, c, p, M), Sign::positive);
+      if (d.real(static_cast<int>(t))) {  // the Voronoi vertex is M-equidistant from the three sites
+        const Point2<Rational> v = d.circumcentre<Rational>(static_cast<int>(t));
+        ASSERT_EQ(q2(M, v, a), q2(M, v, b));
+        ASSERT_EQ(q2(M, v, a), q2(M, v, c));
+        // The filter's box holds it.
+        const Point2<FilterInterval> box = d.circumcentre<FilterInterval>(static_cast<int>(t));
+        ASSERT_TRUE(Rational(box.x.lo) <= v.x && v.x <= Rational(box.x.hi));
+        ASSERT_TRUE(Rational(box.y.lo) <= v.y && v.y <= Rational(box.y.hi));
+      }
+    }
+    // n sites and 3 ghosts whose triangle is the hull: 2(n + 3) − 3 − 2 triangles.
+    EXPECT_EQ(alive, 2 * points.size() + 1);
+  }
+}
+
+TEST(DelaunayInMetric, RefusesASiteTwice) {
+  DelaunayInMetric d({1, 0, 1}, {0, 1, 0, 1});
+  d.insert(0, {0.5, 0.5});
+  EXPECT_THROW(d.insert(1, {0.5, 0.5}), std::invalid_argument);
+}
+
+// At every sample t = j/64 of the segment, exactly: a site strictly nearest there has a cell
+// containing t, and every cell's open range holds only points where its site is among the nearest.
+TEST(SegmentCells, AgreeWithTheNearestSitesAtExactSamples) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> coordinate(-64, 64);
+  for (int round = 0; round < 300; ++round) {
+    const Sym2<double> M = round % 4 == 0 ? Sym2<double>{1, 0, 1} : random_metric(rng);
+    std::vector<std::pair<int, Point2<double>>> sites;
+    const Point2<double> a{coordinate(rng) / 64.0, coordinate(rng) / 64.0};
+    Point2<double> b{coordinate(rng) / 64.0, coordinate(rng) / 64.0};
+    if (a.x == b.x && a.y == b.y) b.x += 1;
+    sites.emplace_back(0, a), sites.emplace_back(1, b);
+    for (int k = 2; k < 8; ++k) sites.emplace_back(k, Point2<double>{coordinate(rng) / 64.0, coordinate(rng) / 64.0});
+    const auto cells = refiners::ls::cells_along(a, b, M, sites);
+    for (int j = 0; j <= 64; ++j) {
+      const Rational t(j, 64);
+      const Point2<Rational> z{Rational(a.x) + t * (Rational(b.x) - Rational(a.x)), Rational(a.y) + t * (Rational(b.y) - Rational(a.y))};
+      std::vector<Rational> d;
+      for (const auto& s : sites) d.push_back(q2(M, z, s.second));
+      const Rational least = *std::min_element(d.begin(), d.end());
+      for (std::size_t u = 0; u < sites.size(); ++u) {
+        const bool in_cell = std::any_of(cells.begin(), cells.end(), [&](const auto& c) { return c.site == sites[u].first && c.lo <= t && t <= c.hi; });
+        const bool strictly_nearest = std::count(d.begin(), d.end(), least) == 1 && d[u] == least;
+        if (strictly_nearest) {
+          ASSERT_TRUE(in_cell) << "round " << round << " t " << t;
+        }
+        const bool inside_open = std::any_of(cells.begin(), cells.end(), [&](const auto& c) { return c.site == sites[u].first && c.lo < t && t < c.hi; });
+        if (inside_open) {
+          ASSERT_EQ(d[u], least) << "round " << round << " t " << t;
+        }
+      }
+    }
+  }
+}
+
+TEST(SplitPoint, IsADoubleExactlyOnTheSegmentInsideTheRange) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> coordinate(-1 << 20, 1 << 20), end(0, 1000);
+  for (int round = 0; round < 2000; ++round) {
+    const Point2<double> a{coordinate(rng) / 1024.0, coordinate(rng) / 1024.0}, b{coordinate(rng) / 1024.0, coordinate(rng) / 1024.0};
+    if (a.x == b.x && a.y == b.y) continue;
+    Rational lo(end(rng), 1000), hi(end(rng), 1000);
+    if (lo > hi) std::swap(lo, hi);
+    if (lo == hi) continue;
+    const auto z = refiners::ls::split_point(a, b, lo, hi);
+    ASSERT_TRUE(z.has_value());
+    ASSERT_EQ(predicates::orientation(a, b, *z), Sign::zero);
+    const Rational t = std::abs(b.x - a.x) > 0 ? (Rational(z->x) - Rational(a.x)) / (Rational(b.x) - Rational(a.x))
+                                               : (Rational(z->y) - Rational(a.y)) / (Rational(b.y) - Rational(a.y));
+    ASSERT_GE(t, lo);
+    ASSERT_LE(t, hi);
+    ASSERT_GT(t, 0);
+    ASSERT_LT(t, 1);
+    if (lo <= Rational(1, 2) && Rational(1, 2) <= hi) {
+      ASSERT_EQ(t, Rational(1, 2));  // the midpoint when allowed
+    }
+  }
+}
+
+// M ≡ I on the unit square with size 0.05: a 17 × 17 grid whose Voronoi vertices all have four
+// owners (the oracle reports every triangle as a tie), the dual of the exact diagram.
+TEST(LsRefiner, IsotropicSquareIsTheDualWithTies) {
+  refiners::ls::LsParameters p;
+  p.size = 0.05;
+  const auto r = refiners::ls::refine_ls(refiners::common::Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), fields::make_field("constant", {}), p);
+  ASSERT_TRUE(r.consistent) << r.stop_reason;
+  EXPECT_EQ(r.mesh.sites.size(), 289u);
+  const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
+  const oracle::MeshDual dual = oracle::compare_with_dual(d, r.mesh.triangles, 3);
+  EXPECT_TRUE(dual.is_dual());
+  EXPECT_EQ(dual.ties, r.mesh.triangles.size());
+  EXPECT_TRUE(d.theorem7.preconditions_hold);
+}
+
+TEST(LsRefiner, FieldsWithSeveralMetricsAreRefusedByName) {
+  try {
+    refiners::ls::refine_ls(refiners::common::Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), fields::make_field("shock", {}), {});
+    FAIL() << "no error";
+  } catch (const fields::FieldError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs one metric at every site"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("corner 1"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
