@@ -171,7 +171,8 @@ class LsRefinement {
     std::vector<std::pair<int, Point2<double>>> near;
     for (int u : sites_.in({box.x0, box.x1, box.y0, box.y1})) near.emplace_back(u, sites_.points[u]);
     std::vector<CellOnSegment> by = cells_along(pa, pb, metric_, near);
-    std::erase_if(by, [&](const CellOnSegment& c) { return c.site == a || c.site == b; });
+    const auto ends = subsegments_[s];
+    std::erase_if(by, [&ends](const CellOnSegment& c) { return c.site == ends.first || c.site == ends.second; });
     return by;
   }
 
