@@ -1,6 +1,15 @@
 // The Labelle–Shewchuk refiner (refiners/ls/) certified by the exact oracle on every finished run
 // (issue 16). Constant fields only so far: the refiner keeps the diagram of one metric.
 //
+// LS.T11 (the T part, constant fields): with θ_bound < arcsin(1/(2√2)), no size rule and every
+// pair of adjoining segments at least 2 arcsin(γ²/2) apart in the metric (decided here exactly),
+// the run finishes, and every two sites are at least μ = lfs_min/γ apart (bdr = ∞ for one metric).
+// lfs_min from below: with τ ≡ 1 every two adjacent edges of Ω are intertwined (LS Definition 5),
+// so non-intertwined feature points lie on non-adjacent edges, and a disc touching both has a
+// diameter of at least their M-distance: lfs_min ≥ δ/2, δ the least M-distance between two
+// non-adjacent edges (a rational; the assertion d² ≥ δ²/(4γ_hi²) is the theorem's, weakened only
+// by γ's enclosure and this bound). The sites then also obey the packing count of LS's proof.
+//
 // LS.S9: a finished run (no encroached subsegment, no violator) is the dual of the exact diagram:
 // the oracle's D|Ω of the final sites has no orphans, every arc and vertex wedged, Theorem 7's
 // preconditions, a dual that is a triangulation of Ω and equals the mesh triangle for triangle;
@@ -21,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 using namespace anisocert;
@@ -69,7 +79,86 @@ Rational d2(const predicates::Sym2<Rational>& M, const predicates::Point2<Ration
   return M.m11 * x * x + 2 * M.m12 * x * y + M.m22 * y * y;
 }
 
+// The squared M-distance from p to the segment ab (exact: the clamped projection).
+Rational d2_to_segment(const predicates::Sym2<Rational>& M, const predicates::Point2<Rational>& p, const predicates::Point2<Rational>& a,
+                       const predicates::Point2<Rational>& b) {
+  const auto dot = [&](const Rational& x1, const Rational& y1, const Rational& x2, const Rational& y2) {
+    return M.m11 * x1 * x2 + M.m12 * (x1 * y2 + y1 * x2) + M.m22 * y1 * y2;
+  };
+  const Rational ux = b.x - a.x, uy = b.y - a.y;
+  const Rational t = std::clamp(dot(p.x - a.x, p.y - a.y, ux, uy) / dot(ux, uy, ux, uy), Rational(0), Rational(1));
+  return d2(M, p, {a.x + t * ux, a.y + t * uy});
+}
+
+// cos∠(u, v) <= k in M, exactly (u, v non-zero).
+bool cos_at_most(const predicates::Sym2<Rational>& M, const Rational& ux, const Rational& uy, const Rational& vx, const Rational& vy,
+                 const Rational& k) {
+  const Rational uv = M.m11 * ux * vx + M.m12 * (ux * vy + uy * vx) + M.m22 * uy * vy;
+  const Rational uu = M.m11 * ux * ux + 2 * M.m12 * ux * uy + M.m22 * uy * uy, vv = M.m11 * vx * vx + 2 * M.m12 * vx * vy + M.m22 * vy * vy;
+  if (k >= 0) return uv <= 0 || uv * uv <= k * k * uu * vv;
+  return uv < 0 && uv * uv >= k * k * uu * vv;
+}
+
 }  // namespace
+
+RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
+  refiners::ls::LsParameters p;
+  p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20, 20.5});
+  p.size = 0;
+  p.max_vertices = 20000, p.max_seconds = 20;
+  // A comb (narrow slots, right angles) in a diagonal metric, which keeps its corners right, or a
+  // random polygon in any metric.
+  const int kind = *rc::gen::inRange(0, 3);
+  const auto corners = kind == 0 ? gen::random_comb() : gen::random_domain(kind == 2, true);
+  const double l1 = *rc::gen::inRange(1, 101), l2 = *rc::gen::inRange(1, 101);
+  const double angle = kind == 0 ? 0 : *rc::gen::inRange(0, 180) * M_PI / 180;
+  const double c = std::cos(angle), s = std::sin(angle);
+  const predicates::Sym2<double> Md{l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c};
+  const predicates::Sym2<Rational> M{Rational(Md.m11), Rational(Md.m12), Rational(Md.m22)};
+  const Interval gamma = theory::ls_t11_gamma(rational_from_double(p.theta_bound), 256);
+  const Rational gamma_hi = rational_from_double(gamma.upper_double());
+  // Theorem 11's separation at every corner, from above: cos(angle) <= 1 − γ_hi⁴/2 <= cos 2 arcsin(γ²/2).
+  const std::size_t n = corners.size();
+  std::vector<predicates::Point2<Rational>> q;
+  for (const auto& v : corners) q.push_back({Rational(v.x), Rational(v.y)});
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto &before = q[(k + n - 1) % n], &at = q[k], &after = q[(k + 1) % n];
+    RC_PRE(cos_at_most(M, before.x - at.x, before.y - at.y, after.x - at.x, after.y - at.y, 1 - gamma_hi * gamma_hi * gamma_hi * gamma_hi / 2));
+  }
+  RC_TAG(kind == 0 ? "comb" : kind == 2 ? "non-convex" : "convex", "theta_bound " + std::to_string(static_cast<int>(p.theta_bound)));
+  const auto r = refiners::ls::refine_ls(refiners::common::Domain(corners), fields::make_field("constant", {{"m11", Md.m11}, {"m12", Md.m12}, {"m22", Md.m22}}), p);
+  RC_LOG() << r.stop_reason;
+  RC_ASSERT(r.consistent);
+
+  // δ² between non-adjacent edges (the closest points of two disjoint segments include an endpoint).
+  std::optional<Rational> delta2;
+  for (std::size_t e = 0; e < n; ++e)
+    for (std::size_t f = e + 2; f < n; ++f) {
+      if ((f + 1) % n == e) continue;  // adjacent through corner e
+      const auto &a = q[e], &b = q[(e + 1) % n], &c2 = q[f], &d = q[(f + 1) % n];
+      for (const Rational& x : {d2_to_segment(M, a, c2, d), d2_to_segment(M, b, c2, d), d2_to_segment(M, c2, a, b), d2_to_segment(M, d, a, b)})
+        if (!delta2 || x < *delta2) delta2 = x;
+    }
+  RC_PRE(delta2.has_value());  // a triangle: every pair intertwined, no bound
+  const Rational mu2 = *delta2 / (4 * gamma_hi * gamma_hi);
+  const double mu2d = mu2.convert_to<double>();
+  const auto& sites = r.mesh.sites;
+  std::size_t pairs_checked_exactly = 0;
+  double least2 = std::numeric_limits<double>::infinity();
+  for (std::size_t u = 0; u < sites.size(); ++u)
+    for (std::size_t v = u + 1; v < sites.size(); ++v) {
+      const double dx = sites[u].x - sites[v].x, dy = sites[u].y - sites[v].y;
+      const double dist2 = Md.m11 * dx * dx + 2 * Md.m12 * dx * dy + Md.m22 * dy * dy;
+      least2 = std::min(least2, dist2);
+      if (dist2 > 1.01 * mu2d + 1e-300) continue;  // far apart
+      ++pairs_checked_exactly;
+      RC_ASSERT(d2(M, {Rational(sites[u].x), Rational(sites[u].y)}, {Rational(sites[v].x), Rational(sites[v].y)}) >= mu2);
+    }
+  RC_CLASSIFY(pairs_checked_exactly > 0, "pairs near mu checked exactly");
+  const double ratio = std::sqrt(least2 / mu2d);  // how much room the bound leaves
+  RC_TAG(ratio < 1.5 ? "closest pair under 1.5 mu" : ratio < 2 ? "closest pair 1.5 to 2 mu" : "closest pair 2 mu or more");
+  RC_TAG(sites.size() < 20 ? "under 20 sites" : sites.size() < 500 ? "20 to 499 sites" : "500 sites or more");
+}
 
 RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
   const Run run = random_run();

@@ -29,4 +29,27 @@ std::vector<predicates::Point2<double>> random_domain(bool reflex, bool obtuse_c
   return p;
 }
 
+std::vector<predicates::Point2<double>> random_comb() {
+  const int teeth = *rc::gen::inRange(1, 5);
+  const double base = 4 / 32.0;
+  std::vector<double> x, w, h;  // left end, width, height of each tooth
+  double at = 0;
+  for (int i = 0; i < teeth; ++i) {
+    if (i > 0) at += *rc::gen::elementOf(std::vector<int>{1, 2, 4}) / 32.0;  // the gap
+    x.push_back(at);
+    w.push_back(*rc::gen::elementOf(std::vector<int>{1, 2, 4}) / 32.0);
+    h.push_back(*rc::gen::inRange(4, 17) / 32.0);
+    at += w.back();
+  }
+  // Counter-clockwise: the base, then the teeth from right to left along the top.
+  std::vector<predicates::Point2<double>> p{{0, 0}, {at, 0}};
+  for (int i = teeth - 1; i >= 0; --i) {
+    if (i < teeth - 1) p.push_back({x[i] + w[i], base});
+    p.push_back({x[i] + w[i], base + h[i]});
+    p.push_back({x[i], base + h[i]});
+    if (i > 0) p.push_back({x[i], base});
+  }
+  return p;
+}
+
 }  // namespace anisocert::gen

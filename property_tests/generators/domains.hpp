@@ -15,4 +15,9 @@ namespace anisocert::gen {
 // then discarded.)
 std::vector<predicates::Point2<double>> random_domain(bool reflex, bool obtuse_corners = true);
 
+// A comb on the 1/32 grid: a base of height 1/8 with 1 to 4 rectangular teeth (widths and the gaps
+// between them 1/32 to 1/8, heights 1/8 to 1/2), so that non-adjacent edges come close (narrow
+// slots) while every corner is a right angle, also in any diagonal metric.
+std::vector<predicates::Point2<double>> random_comb();
+
 }  // namespace anisocert::gen
