@@ -29,6 +29,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -158,6 +159,76 @@ RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
   const double ratio = std::sqrt(least2 / mu2d);  // how much room the bound leaves
   RC_TAG(ratio < 1.5 ? "closest pair under 1.5 mu" : ratio < 2 ? "closest pair 1.5 to 2 mu" : "closest pair 2 mu or more");
   RC_TAG(sites.size() < 20 ? "under 20 sites" : sites.size() < 500 ? "20 to 499 sites" : "500 sites or more");
+}
+
+// LS Lemmas 17, 21 and 23 on the traces of the runs above (constant fields: bdr = ∞, τ ≡ 1 ≤ γ,
+// size rule off, Theorem 11's conditions decided in the test). With m the least distance between
+// two sites before an insertion and w any earlier site:
+//   rule 1, a split of an encroached subsegment (Lemma 17): d(z, w) ≥ min{m, lfs_min/γ}; the
+//     lemma's m (the encroacher's distance to an endpoint) is at least this m;
+//   rule 2, a split because a violator would encroach (Lemma 23): d(z, w) ≥ m;
+//   rule 3, a site at a poor-angle Voronoi vertex (Lemma 21): d(q, w) ≥ γ√(γ²+1)·m, at the exact
+//     vertex q; the site is q rounded to doubles, so the assertion allows √λ_max times the
+//     rounding (2 ulps per coordinate).
+// Lemma 21's γ√(γ²+1) is taken at γ's lower end and lfs_min/γ at its upper one (both weaker).
+// Distances are compared in long double with a relative allowance of 10⁻¹².
+RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
+  refiners::ls::LsParameters p;
+  p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20, 20.5});
+  p.size = 0;
+  p.max_vertices = 20000, p.max_seconds = 20;
+  const auto corners = gen::random_comb();
+  const double l1 = *rc::gen::inRange(1, 101), l2 = *rc::gen::inRange(1, 101);
+  const predicates::Sym2<double> Md{l1, 0, l2};  // diagonal: the comb's corners stay right
+  const predicates::Sym2<Rational> M{Rational(Md.m11), Rational(Md.m12), Rational(Md.m22)};
+  const Interval gamma = theory::ls_t11_gamma(rational_from_double(p.theta_bound), 256);
+  const long double g_lo = gamma.lower_double(), g_hi = gamma.upper_double();
+  const auto r = refiners::ls::refine_ls(refiners::common::Domain(corners), fields::make_field("constant", {{"m11", l1}, {"m12", 0.0}, {"m22", l2}}), p);
+  RC_ASSERT(r.consistent);
+  const std::size_t n = corners.size();
+  // lfs_min ≥ δ/2 (as in LS_T11), δ² exact.
+  std::vector<predicates::Point2<Rational>> q;
+  for (const auto& v : corners) q.push_back({Rational(v.x), Rational(v.y)});
+  std::optional<Rational> delta2;
+  for (std::size_t e = 0; e < n; ++e)
+    for (std::size_t f = e + 2; f < n; ++f) {
+      if ((f + 1) % n == e) continue;
+      const auto &a = q[e], &b = q[(e + 1) % n], &c = q[f], &d = q[(f + 1) % n];
+      for (const Rational& x : {d2_to_segment(M, a, c, d), d2_to_segment(M, b, c, d), d2_to_segment(M, c, a, b), d2_to_segment(M, d, a, b)})
+        if (!delta2 || x < *delta2) delta2 = x;
+    }
+  const long double lfs_over_gamma = delta2 ? std::sqrt(static_cast<long double>(delta2->convert_to<double>())) / 2 / g_hi : INFINITY;
+  const auto dist = [&](const predicates::Point2<double>& u, const predicates::Point2<double>& v) {
+    const long double dx = static_cast<long double>(u.x) - v.x, dy = static_cast<long double>(u.y) - v.y;
+    return std::sqrt(l1 * dx * dx + l2 * dy * dy);
+  };
+  const auto& sites = r.mesh.sites;
+  const std::size_t first = sites.size() - r.trace.size();  // the corners come first, untraced
+  long double m = INFINITY;
+  for (std::size_t u = 0; u < first; ++u)
+    for (std::size_t v = u + 1; v < first; ++v) m = std::min(m, dist(sites[u], sites[v]));
+  const long double lmax = std::max(l1, l2);
+  std::array<int, 4> checked{};
+  for (std::size_t k = 0; k < r.trace.size(); ++k) {
+    const auto& t = r.trace[k];
+    const predicates::Point2<double> z{t.x, t.y};
+    long double bound = 0;
+    if (t.rule == 1) bound = std::min(m, lfs_over_gamma);
+    if (t.rule == 2) bound = m;
+    if (t.rule == 3) {
+      const long double ulp = std::ldexp(1.0L, std::ilogb(std::max(std::abs(t.x), std::abs(t.y))) - 52);
+      bound = g_lo * std::sqrt(g_lo * g_lo + 1) * m - std::sqrt(lmax) * 2 * ulp * std::sqrt(2.0L);
+    }
+    long double nearest = INFINITY;
+    for (std::size_t w = 0; w < first + k; ++w) nearest = std::min(nearest, dist(z, sites[w]));
+    if (!(nearest >= bound * (1 - 1e-12L))) RC_LOG() << "insertion " << k << " rule " << t.rule << ": " << double(nearest) << " < " << double(bound) << "\n";
+    RC_ASSERT(nearest >= bound * (1 - 1e-12L));
+    ++checked[t.rule];
+    m = std::min(m, nearest);
+  }
+  RC_CLASSIFY(checked[1] > 0, "rule 1 checked");
+  RC_CLASSIFY(checked[2] > 0, "rule 2 checked");
+  RC_CLASSIFY(checked[3] > 0, "rule 3 checked");
 }
 
 RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
