@@ -4,7 +4,9 @@
 // certified exactly (oracle/, which shares no code with refiners/):
 //   - every refiner: a valid triangulation of the domain (and of its constrained segments);
 //   - star (BWY locally uniform meshing): locally uniform, radius-edge ratio <= rho0 and
-//     distortion <= gamma0, as it claims.
+//     distortion <= gamma0, as it claims;
+//   - ls (Labelle–Shewchuk Voronoi refinement): the dual of the exact anisotropic Voronoi diagram
+//     of its sites, which has no orphans and meets LS Theorem 7's preconditions.
 // Documented refusals are not findings: a parameter out of range (ParameterError), a field
 // parameter out of range (std::invalid_argument from make_field), a field that is not a metric
 // where it is sampled (FieldError). A run that is not consistent must say why (its stop reason).
@@ -15,6 +17,8 @@
 #include "fuzz/support/finding.hpp"
 #include "geometry/mesh.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
+#include "oracle/diagram/diagram.hpp"
+#include "oracle/diagram/mesh_dual.hpp"
 #include "refiners/registry.hpp"
 
 #include <cmath>
@@ -92,5 +96,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   require(report.valid_holds(), entry.name + " called its run consistent, but the mesh is not a valid triangulation of the domain");
   require(report.holds(o), entry.name + " called its run consistent, but the certifier refutes what it claims (" +
                                field_entry.name + " field)");
+  if (entry.name == "ls") {
+    const anisocert::oracle::Diagram d = anisocert::oracle::compute_diagram(anisocert::geometry::exact(run.result.mesh));
+    bool orphans = false;
+    for (const auto& f : d.faces) orphans = orphans || f.orphan;
+    require(!orphans && d.theorem7.preconditions_hold && anisocert::oracle::compare_with_dual(d, run.result.mesh.triangles, 1).is_dual(),
+            "ls called its run finished, but the mesh is not the dual of the exact diagram of its sites, or that diagram has orphans "
+            "or fails Theorem 7's preconditions");
+  }
   return 0;
 }
