@@ -45,20 +45,24 @@ struct Run {
   std::string domain, separation;
 };
 
-// A random constant metric (eigenvalues 1 to 100, any orientation), a random domain (convex or
-// not, with or without acute corners), θ_bound from 5° to 30° (above 20.7° Theorem 11 gives no
-// guarantee) and a size bound or none.
+// A random constant metric (eigenvalues 1 to 100, or with a ratio up to 10², any orientation; a
+// diagonal one on combs), a random domain (convex or not, with or without acute corners, or a comb
+// with narrow slots), θ_bound from 5° to 30° (above 20.7° Theorem 11 gives no guarantee) and a size
+// bound or none.
 Run random_run() {
   Run run;
-  const bool reflex = *rc::gen::arbitrary<bool>(), obtuse = *rc::gen::arbitrary<bool>();
-  const auto corners = gen::random_domain(reflex, obtuse);
-  run.domain = std::string(reflex ? "non-convex" : "convex") + (obtuse ? "" : ", acute corners allowed");
-  const double l1 = *rc::gen::inRange(1, 101), l2 = *rc::gen::inRange(1, 101), angle = *rc::gen::inRange(0, 180) * M_PI / 180;
+  const int kind = *rc::gen::inRange(0, 5);
+  const bool reflex = kind % 2 == 1, obtuse = kind < 2;
+  const auto corners = kind == 4 ? gen::random_comb() : gen::random_domain(reflex, obtuse);
+  run.domain = kind == 4 ? "comb" : std::string(reflex ? "non-convex" : "convex") + (obtuse ? "" : ", acute corners allowed");
+  const double l1 = *rc::gen::inRange(1, 101);
+  const double l2 = *rc::gen::arbitrary<bool>() ? *rc::gen::inRange(1, 101) : l1 * std::pow(10.0, *rc::gen::inRange(1, 3));
+  const double angle = kind == 4 ? 0 : *rc::gen::inRange(0, 180) * M_PI / 180;
   const double c = std::cos(angle), s = std::sin(angle);
   run.M = {l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c};
   run.p.theta_bound = *rc::gen::elementOf(std::vector<double>{5, 10, 15, 20, 20.5, 25, 30});
-  run.p.size = *rc::gen::elementOf(std::vector<double>{0, 0.5, 1, 2});
-  run.p.max_vertices = 600, run.p.max_seconds = 3;
+  run.p.size = *rc::gen::elementOf(std::vector<double>{0, 0, 0.5, 1, 2});
+  run.p.max_vertices = 400, run.p.max_seconds = 1e9;
   const refiners::common::Domain domain(corners);
   const auto field = fields::make_field("constant", {{"m11", run.M.m11}, {"m12", run.M.m12}, {"m22", run.M.m22}});
   run.r = refiners::ls::refine_ls(domain, field, run.p);
@@ -106,7 +110,7 @@ RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
   refiners::ls::LsParameters p;
   p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20, 20.5});
   p.size = 0;
-  p.max_vertices = 20000, p.max_seconds = 20;
+  p.max_vertices = 20000, p.max_seconds = 1e9;  // no time budget: the vertex budget ends every run
   // A comb (narrow slots, right angles) in a diagonal metric, which keeps its corners right, or a
   // random polygon in any metric.
   const int kind = *rc::gen::inRange(0, 3);
@@ -171,12 +175,13 @@ RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
 //     vertex q; the site is q rounded to doubles, so the assertion allows √λ_max times the
 //     rounding (2 ulps per coordinate).
 // Lemma 21's γ√(γ²+1) is taken at γ's lower end and lfs_min/γ at its upper one (both weaker).
-// Distances are compared in long double with a relative allowance of 10⁻¹².
+// Rules 1 and 2 are compared exactly (squared, in rationals); rule 3 in long double with a
+// relative allowance of 10⁻¹² besides the rounding's.
 RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
   refiners::ls::LsParameters p;
   p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20, 20.5});
   p.size = 0;
-  p.max_vertices = 20000, p.max_seconds = 20;
+  p.max_vertices = 20000, p.max_seconds = 1e9;  // no time budget: the vertex budget ends every run
   const auto corners = gen::random_comb();
   const double l1 = *rc::gen::inRange(1, 101), l2 = *rc::gen::inRange(1, 101);
   const predicates::Sym2<double> Md{l1, 0, l2};  // diagonal: the comb's corners stay right
@@ -197,7 +202,6 @@ RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
       for (const Rational& x : {d2_to_segment(M, a, c, d), d2_to_segment(M, b, c, d), d2_to_segment(M, c, a, b), d2_to_segment(M, d, a, b)})
         if (!delta2 || x < *delta2) delta2 = x;
     }
-  const long double lfs_over_gamma = delta2 ? std::sqrt(static_cast<long double>(delta2->convert_to<double>())) / 2 / g_hi : INFINITY;
   const auto dist = [&](const predicates::Point2<double>& u, const predicates::Point2<double>& v) {
     const long double dx = static_cast<long double>(u.x) - v.x, dy = static_cast<long double>(u.y) - v.y;
     return std::sqrt(l1 * dx * dx + l2 * dy * dy);
@@ -208,23 +212,34 @@ RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
   for (std::size_t u = 0; u < first; ++u)
     for (std::size_t v = u + 1; v < first; ++v) m = std::min(m, dist(sites[u], sites[v]));
   const long double lmax = std::max(l1, l2);
+  const auto exact2 = [&](const predicates::Point2<double>& u, const predicates::Point2<double>& v) {
+    return d2(M, {Rational(u.x), Rational(u.y)}, {Rational(v.x), Rational(v.y)});
+  };
+  std::optional<Rational> m2;  // m², exactly
+  for (std::size_t u = 0; u < first; ++u)
+    for (std::size_t v = u + 1; v < first; ++v)
+      if (const Rational x = exact2(sites[u], sites[v]); !m2 || x < *m2) m2 = x;
+  const std::optional<Rational> lfs_over_gamma2 = delta2 ? std::optional<Rational>(*delta2 / (4 * Rational(g_hi) * Rational(g_hi))) : std::nullopt;
   std::array<int, 4> checked{};
   for (std::size_t k = 0; k < r.trace.size(); ++k) {
     const auto& t = r.trace[k];
     const predicates::Point2<double> z{t.x, t.y};
-    long double bound = 0;
-    if (t.rule == 1) bound = std::min(m, lfs_over_gamma);
-    if (t.rule == 2) bound = m;
-    if (t.rule == 3) {
-      const long double ulp = std::ldexp(1.0L, std::ilogb(std::max(std::abs(t.x), std::abs(t.y))) - 52);
-      bound = g_lo * std::sqrt(g_lo * g_lo + 1) * m - std::sqrt(lmax) * 2 * ulp * std::sqrt(2.0L);
-    }
+    std::optional<Rational> nearest2;
     long double nearest = INFINITY;
-    for (std::size_t w = 0; w < first + k; ++w) nearest = std::min(nearest, dist(z, sites[w]));
-    if (!(nearest >= bound * (1 - 1e-12L))) RC_LOG() << "insertion " << k << " rule " << t.rule << ": " << double(nearest) << " < " << double(bound) << "\n";
-    RC_ASSERT(nearest >= bound * (1 - 1e-12L));
+    for (std::size_t w = 0; w < first + k; ++w) {
+      nearest = std::min(nearest, dist(z, sites[w]));
+      if (const Rational x = exact2(z, sites[w]); !nearest2 || x < *nearest2) nearest2 = x;
+    }
+    if (t.rule == 1) RC_ASSERT(*nearest2 >= (lfs_over_gamma2 ? std::min(*m2, *lfs_over_gamma2) : *m2));  // Lemma 17
+    if (t.rule == 2) RC_ASSERT(*nearest2 >= *m2);                                                       // Lemma 23
+    if (t.rule == 3) {                                                                                   // Lemma 21
+      const long double ulp = std::ldexp(1.0L, std::ilogb(std::max(std::abs(t.x), std::abs(t.y))) - 52);
+      const long double bound = g_lo * std::sqrt(g_lo * g_lo + 1) * m - std::sqrt(lmax) * 2 * ulp * std::sqrt(2.0L);
+      RC_ASSERT(nearest >= bound * (1 - 1e-12L));
+    }
     ++checked[t.rule];
     m = std::min(m, nearest);
+    m2 = std::min(*m2, *nearest2);
   }
   RC_CLASSIFY(checked[1] > 0, "rule 1 checked");
   RC_CLASSIFY(checked[2] > 0, "rule 2 checked");
@@ -237,8 +252,8 @@ RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
   const std::size_t n = r.mesh.sites.size();
   RC_TAG(run.domain, run.separation, r.consistent ? "finished" : "stopped", n < 50 ? "under 50 sites" : n < 200 ? "50 to 199 sites" : "200 sites or more");
   if (!r.consistent) {
-    // A stop names a budget, or, where Theorem 11's conditions fail (refinement near acute
-    // corners or above 20.7° need not end), the resolution of doubles.
+    // A stop names the vertex budget, or, where Theorem 11's conditions fail (refinement near
+    // acute corners or above 20.7° need not end), the resolution of doubles.
     RC_LOG() << run.separation << ": " << r.stop_reason;
     RC_ASSERT(r.stop_reason.find("budget") != std::string::npos ||
               (run.separation != "separation holds" && r.stop_reason.find("no double point") != std::string::npos));

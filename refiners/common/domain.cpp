@@ -10,11 +10,7 @@
 
 namespace anisocert::refiners::common {
 
-namespace {
-
 std::string point_text(const Point2<double>& p) { return "(" + shortest_decimal(p.x) + ", " + shortest_decimal(p.y) + ")"; }
-
-}  // namespace
 
 Domain::Domain(const Polygon<double>& corners) : corners_(corners) {
   for (const auto& q : corners_) exact_.push_back({Rational(q.x), Rational(q.y)});

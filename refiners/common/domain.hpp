@@ -21,6 +21,9 @@ struct Box {
   bool contains(const Point2<double>& p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
 };
 
+// "(x, y)" with the shortest decimals that read back as the doubles (for messages).
+std::string point_text(const Point2<double>& p);
+
 class Domain {
  public:
   // Throws DomainError.

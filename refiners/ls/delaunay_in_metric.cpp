@@ -4,6 +4,7 @@
 #include "predicates/orientation.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace anisocert::refiners::ls {
@@ -14,7 +15,12 @@ DelaunayInMetric::DelaunayInMetric(const Sym2<double>& M, const common::Box& ext
   const double cx = (extent.x0 + extent.x1) / 2, cy = (extent.y0 + extent.y1) / 2;
   double size = std::max(extent.x1 - extent.x0, extent.y1 - extent.y0);
   if (!(size > 0)) size = std::max({std::abs(cx), std::abs(cy), 1.0});
-  const double r = 1024 * size;
+  // A triangle dual to a vertex c in the box has its M-circumradius at most the box's M-diameter,
+  // √λmax·√2·size, and a ghost lies at M-distance at least √λmin·(r − √2·size) from c. So
+  // r > √2·size·(1 + √(λmax/λmin)) keeps every ghost outside those discs; trace/√det bounds
+  // √(λmax/λmin) from above, and 1024 leaves room for rounding.
+  const double stretch = (M.m11 + M.m22) / std::sqrt(M.m11 * M.m22 - M.m12 * M.m12);
+  const double r = 1024 * size * (1 + stretch);
   ghosts_ = {Point2<double>{cx, cy + 2 * r}, Point2<double>{cx - 1.8 * r, cy - r}, Point2<double>{cx + 1.8 * r, cy - r}};
   triangles_.push_back({{-1, -2, -3}, {-1, -1, -1}, true});
 }

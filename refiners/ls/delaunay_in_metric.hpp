@@ -6,9 +6,10 @@
 // Definition 2.1) by Bowyer–Watson insertion with the exact in-circle predicate in M; its Voronoi
 // vertices are the M-circumcentres of the triangles, rational points.
 //
-// Three ghost sites far outside the sites' box close the triangulation. A triangle with a ghost
-// is dual to a Voronoi vertex outside the sites' convex hull, so outside Ω (whose corners are
-// sites).
+// Three ghost sites far outside the sites' box, farther the more anisotropic M is, close the
+// triangulation. No ghost lies in the M-circumdisc of a triangle of sites whose Voronoi vertex is
+// in the box, so those triangles are exactly Del_M's; a triangle with a ghost is dual to a vertex
+// whose disc would hold every site of the box, so it is no vertex in the box.
 #include "numbers/filter_interval.hpp"
 #include "numbers/rational.hpp"
 #include "predicates/point.hpp"

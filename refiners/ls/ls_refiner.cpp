@@ -1,6 +1,7 @@
 #include "refiners/ls/ls_refiner.hpp"
 
 #include "predicates/angle.hpp"
+#include "predicates/orientation.hpp"
 #include "refiners/common/sites.hpp"
 #include "refiners/ls/delaunay_in_metric.hpp"
 #include "refiners/ls/rules.hpp"
@@ -13,21 +14,24 @@
 namespace anisocert::refiners::ls {
 namespace {
 
-std::string point_text(const Point2<double>& p) { return "(" + shortest_decimal(p.x) + ", " + shortest_decimal(p.y) + ")"; }
+using common::point_text;
 std::string metric_text(const Sym2<double>& M) {
   return "[" + shortest_decimal(M.m11) + ", " + shortest_decimal(M.m12) + ", " + shortest_decimal(M.m22) + "]";
 }
 bool same(const Sym2<double>& a, const Sym2<double>& b) { return a.m11 == b.m11 && a.m12 == b.m12 && a.m22 == b.m22; }
 
-// The double just above sin²θ_bound: "angle ≥ arcsin √s2" then implies "angle ≥ θ_bound" exactly.
+// sin²θ_bound, or the double just above it: "angle ≥ arcsin √s2" then implies "angle ≥ θ_bound"
+// exactly. At 30° and 45° it is the rational itself (1/4, 1/2), so that an angle of exactly
+// θ_bound is no violator (LS §9: "an angle less than θ_bound").
 double sin2_above(double theta_deg) {
+  if (theta_deg == 30) return 0.25;
+  if (theta_deg == 45) return 0.5;
   return sqr(theory::ls_t11_sin_theta(rational_from_double(theta_deg), 128)).upper_double();
 }
 
 template <class T>
 T squared_length(const Sym2<double>& M, const Point2<T>& p, const Point2<double>& v) {
-  const T dx = p.x - T(v.x), dy = p.y - T(v.y);
-  return T(M.m11) * (dx * dx) + T(M.m12) * (dx * dy) * T(2.0) + T(M.m22) * (dy * dy);
+  return predicates::quadratic_form(T(M.m11), T(M.m12), T(M.m22), T(p.x - T(v.x)), T(p.y - T(v.y)));
 }
 
 class LsRefinement {
@@ -78,8 +82,7 @@ class LsRefinement {
       if (!current(t, v)) continue;
       const Rule rule = violation(t);
       if (rule == Rule::none) continue;
-      const Point2<Rational> c = diagram_.circumcentre<Rational>(t);
-      const Point2<double> q{c.x.convert_to<double>(), c.y.convert_to<double>()};
+      const Point2<double> q = rounded_vertex(t);
       // LS §9: "A new site is never permitted to encroach upon a segment".
       if (const auto s = encroached_by(q)) {
         split(s->first, {s->second}, Rule::violator_encroaches);
@@ -91,7 +94,7 @@ class LsRefinement {
                    " rounds to " + point_text(q) + ", outside Ω, and encroaches no subsegment";
         return true;
       }
-      insert(q, rule, std::sqrt(squared_length(metric_, c, diagram_.point(v[0])).convert_to<double>()));
+      insert(q, rule, std::sqrt(squared_length(metric_, q, diagram_.point(v[0]))));
       return true;
     }
     return false;
@@ -136,6 +139,17 @@ class LsRefinement {
     if (!vertex_in_domain(t, c)) return Rule::none;
     return poor ? Rule::poor_angle : Rule::too_large;
   }
+  // The Voronoi vertex of t as a double within two ulps of it per coordinate: a corner of its
+  // FilterInterval box when that is so tight, else the exact vertex truncated (within one ulp).
+  Point2<double> rounded_vertex(int t) const {
+    const Point2<FilterInterval> c = diagram_.circumcentre<FilterInterval>(t);
+    const auto tight = [](const FilterInterval& i) {
+      return std::isfinite(i.lo) && i.hi <= FilterInterval::next_up(FilterInterval::next_up(i.lo));
+    };
+    if (tight(c.x) && tight(c.y)) return {c.x.lo, c.y.lo};
+    const Point2<Rational> e = diagram_.circumcentre<Rational>(t);
+    return {e.x.convert_to<double>(), e.y.convert_to<double>()};
+  }
   // c: a box holding the vertex.
   bool too_large(int t, const Point2<FilterInterval>& c) const {
     if (p_.size <= 0) return false;
@@ -163,16 +177,23 @@ class LsRefinement {
     encroached_.push_back(s);
   }
 
-  // The cells other than its endpoints' that subsegment s meets.
+  // The cells other than its endpoints' that subsegment s meets. A cell that meets s in a single
+  // point (s passes through its Voronoi vertex with a and b) counts only when its site lies
+  // strictly outside Ω's side of s: the triangle of a, b and that site, dual to a vertex on s,
+  // would lie outside Ω. On Ω's side it is harmless (s stays a dual edge, the triangle lies in Ω),
+  // and splitting there would need the vertex's own parameter, which need not be a double point.
   std::vector<CellOnSegment> encroachers(int s) const {
-    const auto [a, b] = subsegments_[s];
-    const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
-    const Box2d box = near_segment(pa, pb, metric_);
-    std::vector<std::pair<int, Point2<double>>> near;
-    for (int u : sites_.in({box.x0, box.x1, box.y0, box.y1})) near.emplace_back(u, sites_.points[u]);
-    std::vector<CellOnSegment> by = cells_along(pa, pb, metric_, near);
     const auto ends = subsegments_[s];
-    std::erase_if(by, [&ends](const CellOnSegment& c) { return c.site == ends.first || c.site == ends.second; });
+    const Point2<double>&pa = sites_.points[ends.first], &pb = sites_.points[ends.second];
+    const common::Box box = near_segment(pa, pb, metric_);
+    std::vector<std::pair<int, Point2<double>>> near;
+    for (int u : sites_.in(box))
+      if (!beyond_reach(pa, pb, metric_, sites_.points[u])) near.emplace_back(u, sites_.points[u]);
+    std::vector<CellOnSegment> by = cells_along(pa, pb, metric_, near);
+    std::erase_if(by, [&](const CellOnSegment& c) {
+      return c.site == ends.first || c.site == ends.second ||
+             (c.point() && predicates::orientation(pa, pb, sites_.points[c.site]) != Sign::negative);
+    });
     return by;
   }
 
@@ -187,19 +208,23 @@ class LsRefinement {
     if (!boxes_[s].contains(q)) return std::nullopt;
     const auto [a, b] = subsegments_[s];
     const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
+    if (beyond_reach(pa, pb, metric_, q)) return std::nullopt;
     for (const CellOnSegment& c : cells_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}))
-      if (c.site == -1) return c;
+      if (c.site == -1 && !c.point()) return c;  // a violator lies in Ω: a single contact is on Ω's side
     return std::nullopt;
   }
 
-  // LS §9: s is split in one of the cells `in`, the one nearest its midpoint, as near the
-  // midpoint as a double exactly on s allows.
+  // LS §9: s is split in one of the cells `in`, the one nearest its midpoint (one that meets s in
+  // more than a point when there is one), as near the midpoint as a double exactly on s allows.
   void split(int s, const std::vector<CellOnSegment>& in, Rule rule) {
     const Rational half(1, 2);
     const auto gap = [&](const CellOnSegment& c) { return c.lo > half ? c.lo - half : c.hi < half ? half - c.hi : Rational(0); };
+    const auto better = [&](const CellOnSegment& c, const CellOnSegment& d) {
+      return c.point() != d.point() ? !c.point() : gap(c) < gap(d);
+    };
     const CellOnSegment* best = &in.front();
     for (const CellOnSegment& c : in)
-      if (gap(c) < gap(*best)) best = &c;
+      if (better(c, *best)) best = &c;
     const auto [a, b] = subsegments_[s];
     const auto z = split_point(sites_.points[a], sites_.points[b], best->lo, best->hi);
     if (!z) {
@@ -232,7 +257,7 @@ class LsRefinement {
     sites_.grow_grid();
     for (int t : diagram_.insert(k, q)) queue_if_violator(t);
     for (std::size_t s = 0; s < subsegments_.size(); ++s)
-      if (subsegments_[s].first != k && subsegments_[s].second != k && would_meet(static_cast<int>(s), q)) queue_segment(static_cast<int>(s));
+      if (would_meet(static_cast<int>(s), q)) queue_segment(static_cast<int>(s));
     return k;
   }
 
@@ -244,7 +269,7 @@ class LsRefinement {
   double s2_;
   Rational size2_;
   std::vector<std::pair<int, int>> subsegments_;
-  std::vector<Box2d> boxes_;  // near_segment of each subsegment
+  std::vector<common::Box> boxes_;  // near_segment of each subsegment
   std::vector<bool> queued_;
   std::deque<int> encroached_;
   std::deque<std::pair<int, std::array<int, 3>>> violators_;

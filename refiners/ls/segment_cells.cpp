@@ -1,9 +1,11 @@
 #include "refiners/ls/segment_cells.hpp"
 
+#include "numbers/filter_interval.hpp"
 #include "refiners/common/exact_split.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace anisocert::refiners::ls {
 
@@ -49,21 +51,35 @@ std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<dou
       } else {
         empty = rhs < 0;
       }
-      empty = empty || lo >= hi;
+      empty = empty || lo > hi;
     }
     if (!empty) cells.push_back({sites[u].first, lo, hi});
   }
   return cells;
 }
 
-Box2d near_segment(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double length2 = M.m11 * dx * dx + 2 * M.m12 * dx * dy + M.m22 * dy * dy;  // |s|²_M
-  // λ_min(M) >= det M / trace M, so a point at M-distance r from s is within r / √(det/trace)
-  // of it in the plane.
-  const double det = M.m11 * M.m22 - M.m12 * M.m12, trace = M.m11 + M.m22;
-  const double r = 1.01 * std::sqrt(length2 / 4 * trace / det) + 1e-300;
-  return {std::min(a.x, b.x) - r, std::max(a.x, b.x) + r, std::min(a.y, b.y) - r, std::max(a.y, b.y) + r};
+common::Box near_segment(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M) {
+  const FilterInterval dx = FilterInterval(b.x) - a.x, dy = FilterInterval(b.y) - a.y;
+  const FilterInterval length2 = predicates::quadratic_form(FilterInterval(M.m11), FilterInterval(M.m12), FilterInterval(M.m22), dx, dy);
+  const FilterInterval det = FilterInterval(M.m11) * M.m22 - FilterInterval(M.m12) * M.m12, trace = FilterInterval(M.m11) + M.m22;
+  const double r = sqrt(length2 * 0.25 * trace / det).hi;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (!std::isfinite(r)) return {-inf, inf, -inf, inf};
+  const auto down = [](double x) { return FilterInterval::next_down(x); };
+  const auto up = [](double x) { return FilterInterval::next_up(x); };
+  return {down(std::min(a.x, b.x) - r), up(std::max(a.x, b.x) + r), down(std::min(a.y, b.y) - r), up(std::max(a.y, b.y) + r)};
+}
+
+bool beyond_reach(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M, const Point2<double>& p) {
+  const FilterInterval dx = FilterInterval(b.x) - a.x, dy = FilterInterval(b.y) - a.y;
+  const FilterInterval ex = FilterInterval(p.x) - a.x, ey = FilterInterval(p.y) - a.y;
+  const auto form = [&](const FilterInterval& x1, const FilterInterval& y1, const FilterInterval& x2, const FilterInterval& y2) {
+    return x1 * x2 * M.m11 + (x1 * y2 + y1 * x2) * M.m12 + y1 * y2 * M.m22;
+  };
+  const FilterInterval length2 = form(dx, dy, dx, dy);
+  // The squared M-distance from p to the line: |e|² − (eᵀMd)²/|d|² (at most its distance to s).
+  const FilterInterval to_line2 = form(ex, ey, ex, ey) - sqr(form(ex, ey, dx, dy)) / length2;
+  return to_line2.lo > (length2 * 0.25).hi;
 }
 
 std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi) {

@@ -4,10 +4,9 @@
 // exactly. Along s, z(t) = a + t(b − a), every d_u(z)² − d_a(z)² is linear in t:
 //   ℓ_u(t) = |u − a|²_M − 2t (b − a)ᵀM(u − a),
 // so the part of s in u's closed cell is the closed range of t where ℓ_u is least: rational ends.
-// A cell that meets s in a single point (s through a Voronoi vertex or along no arc) does not
-// count: the subsegment is still an edge of the dual there (LS Theorem 7's preconditions hold).
 #include "numbers/rational.hpp"
 #include "predicates/point.hpp"
+#include "refiners/common/domain.hpp"
 
 #include <optional>
 #include <vector>
@@ -19,22 +18,25 @@ using predicates::Sym2;
 
 struct CellOnSegment {
   int site;
-  Rational lo, hi;  // 0 <= lo < hi <= 1: s ∩ Vor(site) = z([lo, hi])
+  Rational lo, hi;  // 0 <= lo <= hi <= 1: s ∩ Vor(site) = z([lo, hi]); lo = hi: a single point
+  bool point() const { return lo == hi; }
 };
 
-// The cells among `sites` (a and b among them, each with its id) that meet s in more than a
-// point. Sites outside every disc centred on s through its nearer endpoint (see near_segment)
-// never do, so the caller may leave them out.
+// The closed cells among `sites` (a and b among them, each with its id) that meet s. Sites
+// farther from s than |s|_M/2 (near_segment, beyond_reach) never do: the caller may leave them out.
 std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
                                        const std::vector<std::pair<int, Point2<double>>>& sites);
 
 // A box holding every point p whose M-distance to s is at most |s|_M / 2, the only sites that
-// can be nearer to a point of s than both a and b; in doubles, widened by 1% (rounding).
-struct Box2d {
-  double x0, x1, y0, y1;
-  bool contains(const Point2<double>& p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
-};
-Box2d near_segment(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M);
+// can be nearer to a point of s than both a and b (min(d_a, d_b)(z) <= |s|_M/2 on s): s widened
+// by |s|_M/(2√λmin) ≤ √(|s|²_M/4 · trace/det), bounded above in FilterInterval; the whole plane
+// when that bound is not finite.
+common::Box near_segment(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M);
+
+// A filter for the same: p is certainly (FilterInterval) farther in M from the line through a and
+// b than |s|_M/2, so nowhere on s is p nearer than both a and b (min(d_a, d_b)(z) ≤ |s|_M/2).
+// False when the filter cannot tell.
+bool beyond_reach(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M, const Point2<double>& p);
 
 // LS §9's split point: the point of z([lo, hi]) nearest the "midpoint" t = ½ (d_a(z) = d_b(z) for
 // one metric), as a double exactly on s: a + j 2⁻ᵏ (b − a) with k the exact halvings of ab (at
