@@ -246,6 +246,35 @@ RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
   RC_CLASSIFY(checked[3] > 0, "rule 3 checked");
 }
 
+// The filters (FilterInterval boxes of Voronoi vertices for containment in Ω and the size rule,
+// the diametral-ellipse test that discards sites before the cells along a subsegment are
+// computed) only speed the refiner up: with them off, every decision in rationals, a run makes
+// the same insertions and ends with the same mesh, double for double.
+RC_GTEST_PROP(LS_Filters, FilteredRunIsTheExactRun, ()) {
+  const bool reflex = *rc::gen::arbitrary<bool>();
+  const auto corners = *rc::gen::arbitrary<bool>() ? gen::random_comb() : gen::random_domain(reflex, false);
+  const double l1 = *rc::gen::inRange(1, 101), l2 = *rc::gen::inRange(1, 101), angle = *rc::gen::inRange(0, 180) * M_PI / 180;
+  const double c = std::cos(angle), s = std::sin(angle);
+  const auto field = fields::make_field("constant", {{"m11", l1 * c * c + l2 * s * s}, {"m12", (l1 - l2) * c * s}, {"m22", l1 * s * s + l2 * c * c}});
+  refiners::ls::LsParameters p;
+  p.theta_bound = *rc::gen::elementOf(std::vector<double>{5, 15, 20, 25});
+  p.size = *rc::gen::elementOf(std::vector<double>{0, 0.5, 1, 2});
+  p.max_vertices = 300, p.max_seconds = 1e9;
+  const refiners::common::Domain domain(corners);
+  const auto filtered = refiners::ls::refine_ls(domain, field, p);
+  p.filters = false;
+  const auto exact = refiners::ls::refine_ls(domain, field, p);
+  RC_TAG(filtered.mesh.sites.size() < 50 ? "under 50 sites" : "50 sites or more");
+  RC_ASSERT(filtered.stop_reason == exact.stop_reason);
+  RC_ASSERT(filtered.mesh.sites.size() == exact.mesh.sites.size());
+  for (std::size_t k = 0; k < filtered.mesh.sites.size(); ++k) {
+    RC_ASSERT(filtered.mesh.sites[k].x == exact.mesh.sites[k].x);
+    RC_ASSERT(filtered.mesh.sites[k].y == exact.mesh.sites[k].y);
+  }
+  RC_ASSERT(filtered.mesh.triangles == exact.mesh.triangles);
+  RC_ASSERT(filtered.mesh.segments == exact.mesh.segments);
+}
+
 RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
   const Run run = random_run();
   const auto& r = run.r;

@@ -154,12 +154,14 @@ class LsRefinement {
   bool too_large(int t, const Point2<FilterInterval>& c) const {
     if (p_.size <= 0) return false;
     const Point2<double>& a = diagram_.point(diagram_.triangle(t).v[0]);
-    if (const auto s = (squared_length(metric_, c, a) - FilterInterval(p_.size) * p_.size).sign(); s && *s != Sign::zero)
-      return *s == Sign::positive;
+    if (p_.filters)
+      if (const auto s = (squared_length(metric_, c, a) - FilterInterval(p_.size) * p_.size).sign(); s && *s != Sign::zero)
+        return *s == Sign::positive;
     return squared_length(metric_, diagram_.circumcentre<Rational>(t), a) > size2_;
   }
   bool vertex_in_domain(int t, const Point2<FilterInterval>& c) const {
-    if (const auto in = domain_.contains(common::Box{c.x.lo, c.x.hi, c.y.lo, c.y.hi})) return *in;
+    if (p_.filters)
+      if (const auto in = domain_.contains(common::Box{c.x.lo, c.x.hi, c.y.lo, c.y.hi})) return *in;
     return domain_.contains(diagram_.circumcentre<Rational>(t));
   }
 
@@ -188,7 +190,8 @@ class LsRefinement {
     const common::Box box = near_segment(pa, pb, metric_);
     std::vector<std::pair<int, Point2<double>>> near;
     for (int u : sites_.in(box))
-      if (!beyond_reach(pa, pb, metric_, sites_.points[u])) near.emplace_back(u, sites_.points[u]);
+      if (!p_.filters || !outside_diametral_ellipse(pa, pb, metric_, sites_.points[u])) near.emplace_back(u, sites_.points[u]);
+    if (near.size() <= 2) return {};  // a and b only
     std::vector<CellOnSegment> by = cells_along(pa, pb, metric_, near);
     std::erase_if(by, [&](const CellOnSegment& c) {
       return c.site == ends.first || c.site == ends.second ||
@@ -208,7 +211,7 @@ class LsRefinement {
     if (!boxes_[s].contains(q)) return std::nullopt;
     const auto [a, b] = subsegments_[s];
     const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
-    if (beyond_reach(pa, pb, metric_, q)) return std::nullopt;
+    if (p_.filters && outside_diametral_ellipse(pa, pb, metric_, q)) return std::nullopt;
     for (const CellOnSegment& c : cells_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}))
       if (c.site == -1 && !c.point()) return c;  // a violator lies in Ω: a single contact is on Ω's side
     return std::nullopt;

@@ -8,6 +8,7 @@ namespace anisocert::refiners::ls {
 struct LsParameters : common::Budget {
   double theta_bound = 20;  // degrees; LS Theorem 11 needs θ_bound < arcsin(1/(2√2)) ≈ 20.7°
   double size = 1;          // largest circumradius in the metric; 0: no size rule (LS Theorem 11's setting)
+  bool filters = true;      // false: every decision the filters take is taken in rationals (tests compare the two)
 };
 
 }  // namespace anisocert::refiners::ls

@@ -70,16 +70,11 @@ common::Box near_segment(const Point2<double>& a, const Point2<double>& b, const
   return {down(std::min(a.x, b.x) - r), up(std::max(a.x, b.x) + r), down(std::min(a.y, b.y) - r), up(std::max(a.y, b.y) + r)};
 }
 
-bool beyond_reach(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M, const Point2<double>& p) {
+bool outside_diametral_ellipse(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M, const Point2<double>& p) {
+  const FilterInterval m11(M.m11), m12(M.m12), m22(M.m22);
   const FilterInterval dx = FilterInterval(b.x) - a.x, dy = FilterInterval(b.y) - a.y;
-  const FilterInterval ex = FilterInterval(p.x) - a.x, ey = FilterInterval(p.y) - a.y;
-  const auto form = [&](const FilterInterval& x1, const FilterInterval& y1, const FilterInterval& x2, const FilterInterval& y2) {
-    return x1 * x2 * M.m11 + (x1 * y2 + y1 * x2) * M.m12 + y1 * y2 * M.m22;
-  };
-  const FilterInterval length2 = form(dx, dy, dx, dy);
-  // The squared M-distance from p to the line: |e|² − (eᵀMd)²/|d|² (at most its distance to s).
-  const FilterInterval to_line2 = form(ex, ey, ex, ey) - sqr(form(ex, ey, dx, dy)) / length2;
-  return to_line2.lo > (length2 * 0.25).hi;
+  const FilterInterval ex = FilterInterval(p.x) - (FilterInterval(a.x) + b.x) * 0.5, ey = FilterInterval(p.y) - (FilterInterval(a.y) + b.y) * 0.5;
+  return (predicates::quadratic_form(m11, m12, m22, ex, ey) - predicates::quadratic_form(m11, m12, m22, dx, dy) * 0.25).lo > 0;
 }
 
 std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi) {

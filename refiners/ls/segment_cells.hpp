@@ -23,7 +23,8 @@ struct CellOnSegment {
 };
 
 // The closed cells among `sites` (a and b among them, each with its id) that meet s. Sites
-// farther from s than |s|_M/2 (near_segment, beyond_reach) never do: the caller may leave them out.
+// farther from s than |s|_M/2 (near_segment) or outside its diametral ellipse
+// (outside_diametral_ellipse) never do: the caller may leave them out.
 std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
                                        const std::vector<std::pair<int, Point2<double>>>& sites);
 
@@ -33,10 +34,13 @@ std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<dou
 // when that bound is not finite.
 common::Box near_segment(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M);
 
-// A filter for the same: p is certainly (FilterInterval) farther in M from the line through a and
-// b than |s|_M/2, so nowhere on s is p nearer than both a and b (min(d_a, d_b)(z) ≤ |s|_M/2).
-// False when the filter cannot tell.
-bool beyond_reach(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M, const Point2<double>& p);
+// A filter for the same: p lies certainly (FilterInterval) strictly outside s's diametral
+// M-ellipse, d_p(m)² > |s|²_M/4 at the midpoint m. Then p is nowhere on s as near as the nearer of
+// a and b: ℓ_p − min(ℓ_a, ℓ_b) is convex and piecewise linear on [0, 1], least at t = 0, ½ or 1,
+// where it is |p − a|²_M, d_p(m)² − |s|²_M/4 and |p − b|²_M. False when the filter cannot tell.
+// (With one metric this is Ruppert's diametral-circle test: LS encroachment in a Gabriel-protected
+// subsegment.)
+bool outside_diametral_ellipse(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M, const Point2<double>& p);
 
 // LS §9's split point: the point of z([lo, hi]) nearest the "midpoint" t = ½ (d_a(z) = d_b(z) for
 // one metric), as a double exactly on s: a + j 2⁻ᵏ (b − a) with k the exact halvings of ab (at
