@@ -230,6 +230,17 @@ TEST(LsRefiner, StronglyStretchedMetricKeepsTheTriangles) {
   EXPECT_TRUE(oracle::certify_mesh(geometry::exact(r.mesh), o).valid_holds());
 }
 
+// A 14° corner (LS Theorem 11 needs about 60.5° at θ_bound = 20°): splits run into it, and the run
+// stops by name before they reach the resolution of doubles.
+TEST(LsRefiner, RunningIntoASharpCornerStopsByName) {
+  const auto r = refiners::ls::refine_ls(refiners::common::Domain({{0, 0}, {1, 0}, {0.96875, 0.25}}), fields::make_field("constant", {}), {});
+  EXPECT_FALSE(r.consistent);
+  EXPECT_NE(r.stop_reason.find("below 2⁻³⁰ of its length; refinement is running into corner 0 (0, 0), where LS Theorem 11's separation"),
+            std::string::npos)
+      << r.stop_reason;
+  EXPECT_LT(r.mesh.sites.size(), 1000u);
+}
+
 TEST(LsRefiner, FieldsWithSeveralMetricsAreRefusedByName) {
   try {
     refiners::ls::refine_ls(refiners::common::Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), fields::make_field("shock", {}), {});

@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include <memory>
+#include <map>
 #include <sstream>
 
 namespace anisocert::cli {
@@ -85,7 +86,10 @@ int run_refine(const RefineOptions& o) {
     files.push_back({o.svg, io::mesh_svg(m, entry->name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices")});
   write_files_atomically(files);
   std::string text = "refine: domain " + o.domain + ", field " + o.field + "\n" + report_text(run);
-  if (!o.output.empty()) text += "  mesh: " + written + " (check it with anisocert certify)\n";
+  if (!o.output.empty())
+    text += "  mesh: " + written +
+            (run.result.consistent ? " (check it with anisocert certify)\n"
+                                   : " (the run stopped early: the mesh as it stood, not necessarily a triangulation of the domain)\n");
   emit(text);
   return run.result.consistent ? 0 : 1;
 }
@@ -117,16 +121,23 @@ void add_refine(CLI::App& app, int& exit_code) {
   c->add_option("--domain", o->domain, "square, or a JSON file with a \"domain\" polygon")->capture_default_str();
   c->add_option("--field", o->field, "the metric field: " + names_of(fields::field_names()) + " or background:MESH[:METRIC]")->capture_default_str();
   c->add_option("--param", o->params, "a field parameter name=value (repeatable)");
+  // A parameter several refiners share (e.g. --size) is one option: the first refiner's help and
+  // default, the refiners that have it, and another's own help where it differs.
+  std::map<std::string, std::pair<std::string, std::string>> help;  // name → (first help, the option's text)
   for (const auto& entry : refiners::registered_refiners())
-    for (const auto& spec : entry.parameters)
-      if (!o->values.count(spec.name)) {
+    for (const auto& spec : entry.parameters) {
+      auto& [first, text] = help[spec.name];
+      if (text.empty()) {
         o->values[spec.name] = spec.value;
-        o->options[spec.name] = c->add_option("--" + spec.name, o->values[spec.name], spec.help + " (--algo " + entry.name + ")")
-                                     ->capture_default_str();
+        first = spec.help, text = spec.help + " (--algo " + entry.name;
+      } else {
+        text += ", " + entry.name + (spec.help == first ? "" : ": " + spec.help);
       }
+    }
+  for (const auto& [name, h] : help) o->options[name] = c->add_option("--" + name, o->values[name], h.second + ")")->capture_default_str();
   c->add_option("--max-vertices", o->budget.max_vertices, "vertex budget")->capture_default_str();
   c->add_option("--max-seconds", o->budget.max_seconds, "time budget")->capture_default_str();
-  c->add_option("--seed", o->seed, "random seed of the picking regions")->capture_default_str();
+  c->add_option("--seed", o->seed, "random seed of the picking regions (--algo star)")->capture_default_str();
   c->add_option("-o,--output", o->output,
                 "write the mesh with its metrics, in the format of its extension (.json, .mesh/.meshb with .sol/.solb,\n"
                 ".msh Gmsh, .node/.ele/.poly; see certify --help)");

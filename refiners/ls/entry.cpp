@@ -39,13 +39,14 @@ std::vector<std::string> report(const LsResult& r, const LsParameters& p, const 
   if (!c.theta_admissible) {
     o << "θ_bound = " << p.theta_bound << "° is not below arcsin(1/(2√2)) ≈ 20.7°: no termination guarantee";
   } else {
+    o.precision(10);
+    o << "θ_bound admissible, γ ∈ [" << c.gamma_lo << ", " << c.gamma_hi << "]; adjoining segments need ";
     o.precision(6);
-    o << "θ_bound admissible, γ ∈ [" << c.gamma_lo << ", " << c.gamma_hi << "]; adjoining segments need "
-      << c.separation_hi << "° (2 arcsin(γ²/2)) in the corner's metric: ";
+    o << c.separation_hi << "° (2 arcsin(γ²/2)) in the corner's metric: ";
     if (c.corners_failing.empty() && c.corners_undecided.empty()) o << "holds at every corner";
     if (!c.corners_failing.empty()) o << "fails at corner(s)" << corner_list(c.corners_failing);
     if (!c.corners_undecided.empty()) o << (c.corners_failing.empty() ? "" : "; ") << "undecided at corner(s)" << corner_list(c.corners_undecided);
-    if (p.size > 0) o << "; the theorem is stated without the size rule (--size 0)";
+    if (p.size > 0) o << "; the theorem assumes no size rule (it applies with --size 0)";
   }
   lines.push_back(o.str());
   lines.push_back(common::rule_counts_line(r));
@@ -63,8 +64,8 @@ RefinerEntry entry() {
   return {"ls",
           "Labelle–Shewchuk Voronoi refinement (LS §9: encroached segments, then Voronoi vertices whose dual triangle has an "
           "angle below θ_bound or is too large); constant fields only so far",
-          {{"theta-bound", "LS: smallest angle θ_bound in degrees (Theorem 11 needs < 20.7)", d.theta_bound},
-           {"size", "largest circumradius in the metric", d.size}},
+          {{"theta-bound", "smallest angle θ_bound in degrees (LS Theorem 11 needs θ_bound < arcsin(1/(2√2)) ≈ 20.7048°)", d.theta_bound},
+           {"size", "largest circumradius in the metric, 0 for none", d.size}},
           [](const common::Domain& domain, const fields::MetricField& field, const ParameterValues& values,
              const common::Budget& budget, unsigned, const common::Progress& progress) {
             const LsParameters p = parameters(values, budget);

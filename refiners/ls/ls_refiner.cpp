@@ -2,12 +2,15 @@
 
 #include "predicates/angle.hpp"
 #include "predicates/orientation.hpp"
+#include "refiners/common/exact_split.hpp"
 #include "refiners/common/sites.hpp"
 #include "refiners/ls/delaunay_in_metric.hpp"
 #include "refiners/ls/rules.hpp"
 #include "refiners/ls/segment_cells.hpp"
+#include "refiners/ls/theorem11_conditions.hpp"
 #include "theory/ls_theorem11.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 
@@ -43,18 +46,19 @@ class LsRefinement {
         metric_(field.at(domain.corners()[0].x, domain.corners()[0].y)),
         diagram_(metric_, domain.bounding_box()),
         s2_(sin2_above(p.theta_bound)),
+        t11_(theorem11_conditions(domain, std::vector(domain.size(), metric_), p.theta_bound)),
         size2_(Rational(p.size) * Rational(p.size)) {
     const auto& corners = domain.corners();
     for (std::size_t k = 0; k < corners.size(); ++k) {
       const Sym2<double> M = field.at(corners[k].x, corners[k].y);
       if (!same(M, metric_))
-        throw common::FieldError("--algo ls needs one metric at every site so far (LS §8's loose diagram of bisector conics is not built yet): the field " +
+        throw common::FieldError("--algo ls needs one metric at every site so far, a constant field (LS §8's loose diagram of bisector conics is not built yet): the field " +
                                  field.name + " gives " + metric_text(metric_) + " at " + domain.corner_text(0) + " and " +
                                  metric_text(M) + " at " + domain.corner_text(k));
       diagram_.insert(sites_.add(corners[k], M), corners[k]);
     }
     for (std::size_t k = 0; k < corners.size(); ++k) {
-      add_subsegment(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()));
+      add_subsegment(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()), static_cast<int>(k));
       queue_segment(static_cast<int>(k));
     }
     for (std::size_t t = 0; t < diagram_.slots(); ++t)
@@ -168,8 +172,9 @@ class LsRefinement {
   void queue_if_violator(int t) {
     if (violation(t) != Rule::none) violators_.emplace_back(t, diagram_.triangle(t).v);
   }
-  void add_subsegment(int a, int b) {
+  void add_subsegment(int a, int b, int edge) {
     subsegments_.emplace_back(a, b);
+    edge_of_.push_back(edge);
     boxes_.push_back(near_segment(sites_.points[a], sites_.points[b], metric_));
     queued_.push_back(false);
   }
@@ -232,16 +237,41 @@ class LsRefinement {
     const auto z = split_point(sites_.points[a], sites_.points[b], best->lo, best->hi);
     if (!z) {
       stalled_ = "subsegment " + point_text(sites_.points[a]) + " – " + point_text(sites_.points[b]) +
-                 " is to be split in a cell that holds no double point exactly on it";
+                 " is to be split in a cell that holds no double point exactly on it" + near_corner(a, b);
+      return;
+    }
+    // Splits that run into a corner (LS Theorem 11's separation failing there) would go on down to
+    // the resolution of doubles; no run within its budgets splits an edge 2³⁰ times.
+    const int e = edge_of_[s];
+    const auto& corners = domain_.corners();
+    const double whole = std::hypot(corners[(e + 1) % corners.size()].x - corners[e].x, corners[(e + 1) % corners.size()].y - corners[e].y);
+    const double piece = std::min(std::hypot(z->x - sites_.points[a].x, z->y - sites_.points[a].y),
+                                  std::hypot(sites_.points[b].x - z->x, sites_.points[b].y - z->y));
+    if (piece < std::ldexp(whole, -common::min_halvings)) {
+      stalled_ = "a split of edge " + std::to_string(e) + " would leave a piece below 2⁻³⁰ of its length" + near_corner(a, b);
       return;
     }
     const int k = insert(*z, rule, 0);
     if (k < 0) return;
     subsegments_[s] = {a, k};
     boxes_[s] = near_segment(sites_.points[a], sites_.points[k], metric_);
-    add_subsegment(k, b);
+    add_subsegment(k, b, edge_of_[s]);
     queue_segment(s);
     queue_segment(static_cast<int>(subsegments_.size()) - 1);
+  }
+
+  // ": refinement is running into corner k, where LS Theorem 11's separation fails" (or holds), for
+  // a subsegment ending at a corner.
+  std::string near_corner(int a, int b) const {
+    const int m = static_cast<int>(domain_.size());
+    const int k = a < m ? a : b < m ? b : -1;
+    if (k < 0) return "";
+    const auto has = [k](const std::vector<int>& v) { return std::find(v.begin(), v.end(), k) != v.end(); };
+    const std::string where = "; refinement is running into " + domain_.corner_text(static_cast<std::size_t>(k));
+    if (!t11_.theta_admissible) return where + " (θ_bound is above LS Theorem 11's limit)";
+    if (has(t11_.corners_failing)) return where + ", where LS Theorem 11's separation of adjoining segments fails";
+    if (has(t11_.corners_undecided)) return where + ", where LS Theorem 11's separation is undecided";
+    return where + ", where LS Theorem 11's separation holds";
   }
 
   // Inserts q as a site; its index, or −1 when the run stalls.
@@ -270,9 +300,11 @@ class LsRefinement {
   Sym2<double> metric_;
   DelaunayInMetric diagram_;
   double s2_;
+  Theorem11Conditions t11_;
   Rational size2_;
   std::vector<std::pair<int, int>> subsegments_;
   std::vector<common::Box> boxes_;  // near_segment of each subsegment
+  std::vector<int> edge_of_;        // the edge of Ω each subsegment lies on
   std::vector<bool> queued_;
   std::deque<int> encroached_;
   std::deque<std::pair<int, std::array<int, 3>>> violators_;
