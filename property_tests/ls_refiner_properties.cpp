@@ -21,6 +21,7 @@
 #include "oracle/diagram/mesh_dual.hpp"
 #include "predicates/angle.hpp"
 #include "property_tests/generators/domains.hpp"
+#include "property_tests/generators/metrics.hpp"
 #include "refiners/ls/ls_refiner.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
 #include "theory/ls_theorem11.hpp"
@@ -79,10 +80,7 @@ Rational sin2_above(double theta) {
   return rational_from_double(sqr(s).upper_double());
 }
 
-Rational d2(const predicates::Sym2<Rational>& M, const predicates::Point2<Rational>& a, const predicates::Point2<Rational>& b) {
-  const Rational x = a.x - b.x, y = a.y - b.y;
-  return M.m11 * x * x + 2 * M.m12 * x * y + M.m22 * y * y;
-}
+using gen::d2;
 
 // The squared M-distance from p to the segment ab (exact: the clamped projection).
 Rational d2_to_segment(const predicates::Sym2<Rational>& M, const predicates::Point2<Rational>& p, const predicates::Point2<Rational>& a,
@@ -93,6 +91,21 @@ Rational d2_to_segment(const predicates::Sym2<Rational>& M, const predicates::Po
   const Rational ux = b.x - a.x, uy = b.y - a.y;
   const Rational t = std::clamp(dot(p.x - a.x, p.y - a.y, ux, uy) / dot(ux, uy, ux, uy), Rational(0), Rational(1));
   return d2(M, p, {a.x + t * ux, a.y + t * uy});
+}
+
+// δ², the least squared M-distance between two non-adjacent edges of the polygon q (the closest
+// points of two disjoint segments include an endpoint); nothing for a triangle.
+std::optional<Rational> nonadjacent_edges_distance2(const predicates::Sym2<Rational>& M, const std::vector<predicates::Point2<Rational>>& q) {
+  const std::size_t n = q.size();
+  std::optional<Rational> delta2;
+  for (std::size_t e = 0; e < n; ++e)
+    for (std::size_t f = e + 2; f < n; ++f) {
+      if ((f + 1) % n == e) continue;  // adjacent through corner e
+      const auto &a = q[e], &b = q[(e + 1) % n], &c = q[f], &d = q[(f + 1) % n];
+      for (const Rational& x : {d2_to_segment(M, a, c, d), d2_to_segment(M, b, c, d), d2_to_segment(M, c, a, b), d2_to_segment(M, d, a, b)})
+        if (!delta2 || x < *delta2) delta2 = x;
+    }
+  return delta2;
 }
 
 // cos∠(u, v) <= k in M, exactly (u, v non-zero).
@@ -135,15 +148,7 @@ RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
   RC_LOG() << r.stop_reason;
   RC_ASSERT(r.consistent);
 
-  // δ² between non-adjacent edges (the closest points of two disjoint segments include an endpoint).
-  std::optional<Rational> delta2;
-  for (std::size_t e = 0; e < n; ++e)
-    for (std::size_t f = e + 2; f < n; ++f) {
-      if ((f + 1) % n == e) continue;  // adjacent through corner e
-      const auto &a = q[e], &b = q[(e + 1) % n], &c2 = q[f], &d = q[(f + 1) % n];
-      for (const Rational& x : {d2_to_segment(M, a, c2, d), d2_to_segment(M, b, c2, d), d2_to_segment(M, c2, a, b), d2_to_segment(M, d, a, b)})
-        if (!delta2 || x < *delta2) delta2 = x;
-    }
+  const std::optional<Rational> delta2 = nonadjacent_edges_distance2(M, q);
   RC_PRE(delta2.has_value());  // a triangle: every pair intertwined, no bound
   const Rational mu2 = *delta2 / (4 * gamma_hi * gamma_hi);
   const double mu2d = mu2.convert_to<double>();
@@ -190,18 +195,10 @@ RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
   const long double g_lo = gamma.lower_double(), g_hi = gamma.upper_double();
   const auto r = refiners::ls::refine_ls(refiners::common::Domain(corners), fields::make_field("constant", {{"m11", l1}, {"m12", 0.0}, {"m22", l2}}), p);
   RC_ASSERT(r.consistent);
-  const std::size_t n = corners.size();
   // lfs_min ≥ δ/2 (as in LS_T11), δ² exact.
   std::vector<predicates::Point2<Rational>> q;
   for (const auto& v : corners) q.push_back({Rational(v.x), Rational(v.y)});
-  std::optional<Rational> delta2;
-  for (std::size_t e = 0; e < n; ++e)
-    for (std::size_t f = e + 2; f < n; ++f) {
-      if ((f + 1) % n == e) continue;
-      const auto &a = q[e], &b = q[(e + 1) % n], &c = q[f], &d = q[(f + 1) % n];
-      for (const Rational& x : {d2_to_segment(M, a, c, d), d2_to_segment(M, b, c, d), d2_to_segment(M, c, a, b), d2_to_segment(M, d, a, b)})
-        if (!delta2 || x < *delta2) delta2 = x;
-    }
+  const std::optional<Rational> delta2 = nonadjacent_edges_distance2(M, q);
   const auto dist = [&](const predicates::Point2<double>& u, const predicates::Point2<double>& v) {
     const long double dx = static_cast<long double>(u.x) - v.x, dy = static_cast<long double>(u.y) - v.y;
     return std::sqrt(l1 * dx * dx + l2 * dy * dy);

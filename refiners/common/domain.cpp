@@ -11,6 +11,9 @@
 namespace anisocert::refiners::common {
 
 std::string point_text(const Point2<double>& p) { return "(" + shortest_decimal(p.x) + ", " + shortest_decimal(p.y) + ")"; }
+std::string metric_text(const predicates::Sym2<double>& M) {
+  return "[" + shortest_decimal(M.m11) + ", " + shortest_decimal(M.m12) + ", " + shortest_decimal(M.m22) + "]";
+}
 
 Domain::Domain(const Polygon<double>& corners) : corners_(corners) {
   for (const auto& q : corners_) exact_.push_back({Rational(q.x), Rational(q.y)});

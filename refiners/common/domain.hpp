@@ -23,6 +23,8 @@ struct Box {
 
 // "(x, y)" with the shortest decimals that read back as the doubles (for messages).
 std::string point_text(const Point2<double>& p);
+// "[m11, m12, m22]" likewise.
+std::string metric_text(const predicates::Sym2<double>& M);
 
 class Domain {
  public:

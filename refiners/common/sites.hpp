@@ -19,9 +19,8 @@ struct Sites {
   int add(const Point2<double>& q, const Sym2<double>& M) {
     if (!(std::isfinite(M.m11) && std::isfinite(M.m12) && std::isfinite(M.m22) && M.m11 > 0 &&
           predicates::orientation<double>({0, 0}, {M.m11, M.m12}, {M.m12, M.m22}) == Sign::positive))
-      throw FieldError("the metric field " + field.name + " is not finite and positive definite at (" + shortest_decimal(q.x) +
-                       ", " + shortest_decimal(q.y) + "): [" + shortest_decimal(M.m11) + ", " + shortest_decimal(M.m12) +
-                       ", " + shortest_decimal(M.m22) + "]");
+      throw FieldError("the metric field " + field.name + " is not finite and positive definite at " + point_text(q) + ": " +
+                       metric_text(M));
     const int k = static_cast<int>(points.size());
     points.push_back(q);
     metrics.push_back(M);

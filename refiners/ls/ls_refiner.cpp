@@ -17,10 +17,8 @@
 namespace anisocert::refiners::ls {
 namespace {
 
+using common::metric_text;
 using common::point_text;
-std::string metric_text(const Sym2<double>& M) {
-  return "[" + shortest_decimal(M.m11) + ", " + shortest_decimal(M.m12) + ", " + shortest_decimal(M.m22) + "]";
-}
 bool same(const Sym2<double>& a, const Sym2<double>& b) { return a.m11 == b.m11 && a.m12 == b.m12 && a.m22 == b.m22; }
 
 // sin²θ_bound, or the double just above it: "angle ≥ arcsin √s2" then implies "angle ≥ θ_bound"
