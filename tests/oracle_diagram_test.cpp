@@ -111,6 +111,24 @@ TEST(OracleDiagram, AnisotropicInputsAgreeWithBruteForce) {
 // Degenerate: four cocircular sites (identity metric) at the corners of a diamond domain: one
 // vertex of degree 4 at the centre, its dual a convex quadrilateral, which polygonalizes Ω
 // (LS Theorem 7 with its preconditions met: corners are sites, each cut arc is owned by its edge).
+// LS Theorem 7 assumes the sites lie in Ω. Regression: `anisocert dual` on a stopped LS run (six
+// corners of an L, one triangle) took Ω as that triangle; the three sites outside it owned arcs
+// across its edges, the dual was no triangulation, and the preconditions were reported to hold
+// ("conclusion CONTRADICTED").
+TEST(OracleDiagram, SitesOutsideOmegaFailTheorem7sPreconditions) {
+  Mesh<Rational> in;
+  in.domain = {{Rational(1, 2), Rational(1, 2)}, {Rational(1, 2), 1}, {0, 1}};
+  add_site(in, Rational(1, 2), Rational(1, 2), 1, 0, 1);
+  add_site(in, Rational(1, 2), 1, 1, 0, 1);
+  add_site(in, 0, 1, 1, 0, 1);
+  add_site(in, 0, 0, 1, 0, 1);  // outside the triangle
+  const Diagram d = compute_diagram(in);
+  EXPECT_FALSE(d.theorem7.preconditions_hold);
+  EXPECT_FALSE(d.theorem7.disagreement);
+  EXPECT_TRUE(std::any_of(d.theorem7.reasons.begin(), d.theorem7.reasons.end(),
+                          [](const std::string& r) { return r == "site 3 lies outside Ω"; }));
+}
+
 TEST(OracleDiagram, CocircularSitesGiveOneVertexOfDegreeFour) {
   Mesh<Rational> in;
   in.domain = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};

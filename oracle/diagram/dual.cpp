@@ -54,6 +54,12 @@ void Builder::check_theorem7() {
   const auto& corner_site = d_.corner_site;
   for (std::size_t k = 0; k < dom.size(); ++k)
     if (corner_site[k] < 0) th.reasons.push_back("corner " + std::to_string(k) + " of Ω is not a site");
+  // "Let V be a set of sites in Ω": a site outside Ω can own arcs across ∂Ω that no edge's
+  // endpoints own, and its dual triangles reach outside Ω (found when `dual` took Ω as the boundary
+  // of a stopped run's one triangle while the other sites lay outside it).
+  for (std::size_t v = 0; v < d_.input.sites.size(); ++v)
+    if (!geometry::in_closed_polygon(d_.input.sites[v], d_.input.domain))
+      th.reasons.push_back("site " + std::to_string(v) + " lies outside Ω");
   for (std::size_t a = 0; a < d_.arcs.size(); ++a)
     for (int k : d_.arcs[a].cut_by_edges) {
       const int p = corner_site[k], q = corner_site[(k + 1) % dom.size()];
