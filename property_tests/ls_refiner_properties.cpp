@@ -22,6 +22,7 @@
 #include "predicates/angle.hpp"
 #include "property_tests/generators/domains.hpp"
 #include "property_tests/generators/metrics.hpp"
+#include "property_tests/oracle_certified.hpp"
 #include "refiners/ls/ls_refiner.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
 #include "theory/ls_theorem11.hpp"
@@ -287,16 +288,7 @@ RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
                                                         r.stop_reason.find("below 2⁻³⁰ of its length") != std::string::npos)));
     return;
   }
-  const geometry::Mesh<Rational> m = geometry::exact(r.mesh);
-  const oracle::Diagram d = oracle::compute_diagram(m);
-  for (const auto& f : d.faces) RC_ASSERT(!f.orphan);
-  for (const auto& n : d.nodes) RC_ASSERT(n.wedged);
-  for (const auto& a : d.arcs) RC_ASSERT(a.wedged);
-  RC_ASSERT(d.theorem7.preconditions_hold);
-  RC_ASSERT(d.dual_check.is_triangulation);
-  const oracle::MeshDual dual = oracle::compare_with_dual(d, r.mesh.triangles, 3);
-  for (const auto& w : dual.not_dual_witnesses) RC_LOG() << w.why << "\n";
-  RC_ASSERT(dual.is_dual());
+  const geometry::Mesh<Rational> m = gen::assert_dual_of_exact_diagram(r.mesh);
 
   const auto& M = m.metrics[0];
   const Rational s2 = sin2_above(run.p.theta_bound), size2 = rational_from_double(run.p.size) * rational_from_double(run.p.size);

@@ -241,14 +241,24 @@ TEST(LsRefiner, RunningIntoASharpCornerStopsByName) {
   EXPECT_LT(r.mesh.sites.size(), 1000u);
 }
 
-TEST(LsRefiner, FieldsWithSeveralMetricsAreRefusedByName) {
-  try {
-    refiners::ls::refine_ls(refiners::common::Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), fields::make_field("shock", {}), {});
-    FAIL() << "no error";
-  } catch (const fields::FieldError& e) {
-    EXPECT_NE(std::string(e.what()).find("needs one metric at every site"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("corner 1"), std::string::npos) << e.what();
-  }
+// A field that gives the sites different metrics takes the true-diagram path (ls_varying.hpp). The
+// linear field depends on y alone and this pentagon is symmetric about x = 1/2, so its corners'
+// diagram has a vertex of degree 4 (rule 8, "tie", breaks it). The finished run is certified by the
+// exact oracle (the independent engine): the dual of D|Ω, no orphans, everything wedged.
+TEST(LsRefiner, VaryingFieldRunIsTheDualOfTheExactDiagram) {
+  refiners::ls::LsParameters p;
+  p.theta_bound = 20, p.size = 2;
+  const refiners::common::Domain domain({{0, 0}, {1, 0}, {1.25, 0.75}, {0.5, 1.25}, {-0.25, 0.75}});
+  const auto r = refiners::ls::refine_ls(domain, fields::make_field("linear", {{"hx", 0.3}, {"h0", 0.05}}), p);
+  ASSERT_TRUE(r.consistent) << r.stop_reason;
+  const auto tie = std::find_if(r.rule_counts.begin(), r.rule_counts.end(), [](const auto& c) { return c.first == "tie"; });
+  ASSERT_NE(tie, r.rule_counts.end());
+  EXPECT_GE(tie->second, 1u);
+  const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
+  for (const auto& f : d.faces) EXPECT_FALSE(f.orphan);
+  EXPECT_TRUE(d.theorem7.preconditions_hold);
+  EXPECT_TRUE(d.dual_check.is_triangulation);
+  EXPECT_TRUE(oracle::compare_with_dual(d, r.mesh.triangles, 3).is_dual());
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace anisocert::refiners::common {
 
@@ -49,6 +50,18 @@ std::string refine_until_done(Refinement& r, const Budget& budget, const Stopwat
     if (!r.stalled().empty()) return r.stalled();
     if (!r.step()) return r.done();
   }
+}
+
+// A whole run: the Refinement built from `args`, run until done or stopped, its result (with the
+// stop reason, whether it finished, and the time taken).
+template <class Refinement, class... Args>
+auto run_refinement(const Budget& budget, const Progress& progress, Args&&... args) {
+  const Stopwatch clock;
+  Refinement r(std::forward<Args>(args)...);
+  const std::string stop = refine_until_done(r, budget, clock, progress);
+  auto result = r.result(stop, stop == r.done());
+  result.seconds = clock.seconds();
+  return result;
 }
 
 }  // namespace anisocert::refiners::common

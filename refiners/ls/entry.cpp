@@ -27,7 +27,7 @@ std::string corner_list(const std::vector<int>& corners) {
   return s;
 }
 
-std::vector<std::string> report(const LsResult& r, const LsParameters& p, const common::Domain& domain) {
+std::vector<std::string> report(const LsResult& r, const LsParameters& p, const common::Domain& domain, bool one_metric) {
   std::vector<std::string> lines{
       common::size_line(r, "LS refiner"),
       common::stop_line(r, "encroached subsegments: " + std::to_string(r.encroached_left) +
@@ -50,7 +50,9 @@ std::vector<std::string> report(const LsResult& r, const LsParameters& p, const 
   }
   lines.push_back(o.str());
   lines.push_back(common::rule_counts_line(r));
-  lines.push_back("  angles checked in the metric of the triangle's vertices and of its Voronoi vertex (one metric: LS checks every point of the triangle)");
+  lines.push_back(!one_metric ? "  angles checked in the metrics of the triangle's three vertices and of the field at its Voronoi vertex rounded to doubles "
+                                   "(LS: every point of the triangle)"
+                                 : "  angles checked in the metric of the triangle's vertices and of its Voronoi vertex (one metric: LS checks every point of the triangle)");
   o.str("");
   o << "  parameters: θ_bound = " << p.theta_bound << "°, size = " << p.size << (p.size > 0 ? "" : " (no size rule)");
   lines.push_back(o.str());
@@ -63,14 +65,15 @@ RefinerEntry entry() {
   const LsParameters d;
   return {"ls",
           "Labelle–Shewchuk Voronoi refinement (LS §9: encroached segments, then Voronoi vertices whose dual triangle has an "
-          "angle below θ_bound or is too large); constant fields only so far",
+          "angle below θ_bound or is too large, inverted or unwedged); the constant field on Del_M, other fields on the true "
+          "diagram of sites with different metrics",
           {{"theta-bound", "smallest angle θ_bound in degrees (LS Theorem 11 needs θ_bound < arcsin(1/(2√2)) ≈ 20.7048°)", d.theta_bound},
            {"size", "largest circumradius in the metric, 0 for none", d.size}},
           [](const common::Domain& domain, const fields::MetricField& field, const ParameterValues& values,
              const common::Budget& budget, unsigned, const common::Progress& progress) {
             const LsParameters p = parameters(values, budget);
             LsResult r = refine_ls(domain, field, p, progress);
-            std::vector<std::string> lines = report(r, p, domain);
+            std::vector<std::string> lines = report(r, p, domain, field.name == "constant");
             return Run{std::move(r), std::move(lines)};
           }};
 }

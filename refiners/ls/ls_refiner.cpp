@@ -5,10 +5,10 @@
 #include "refiners/common/exact_split.hpp"
 #include "refiners/common/sites.hpp"
 #include "refiners/ls/delaunay_in_metric.hpp"
+#include "refiners/ls/ls_varying.hpp"
 #include "refiners/ls/rules.hpp"
 #include "refiners/ls/segment_cells.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
-#include "theory/ls_theorem11.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,15 +20,6 @@ namespace {
 using common::metric_text;
 using common::point_text;
 bool same(const Sym2<double>& a, const Sym2<double>& b) { return a.m11 == b.m11 && a.m12 == b.m12 && a.m22 == b.m22; }
-
-// sin²θ_bound, or the double just above it: "angle ≥ arcsin √s2" then implies "angle ≥ θ_bound"
-// exactly. At 30° and 45° it is the rational itself (1/4, 1/2), so that an angle of exactly
-// θ_bound is no violator (LS §9: "an angle less than θ_bound").
-double sin2_above(double theta_deg) {
-  if (theta_deg == 30) return 0.25;
-  if (theta_deg == 45) return 0.5;
-  return sqr(theory::ls_t11_sin_theta(rational_from_double(theta_deg), 128)).upper_double();
-}
 
 template <class T>
 T squared_length(const Sym2<double>& M, const Point2<T>& p, const Point2<double>& v) {
@@ -50,8 +41,8 @@ class LsRefinement {
     for (std::size_t k = 0; k < corners.size(); ++k) {
       const Sym2<double> M = field.at(corners[k].x, corners[k].y);
       if (!same(M, metric_))
-        throw common::FieldError("--algo ls needs one metric at every site so far, a constant field (LS §8's loose diagram of bisector conics is not built yet): the field " +
-                                 field.name + " gives " + metric_text(metric_) + " at " + domain.corner_text(0) + " and " +
+        throw common::FieldError("--algo ls on the field " + field.name + ", taken as constant (one metric, Del_M), gives " +
+                                 metric_text(metric_) + " at " + domain.corner_text(0) + " and " +
                                  metric_text(M) + " at " + domain.corner_text(k));
       diagram_.insert(sites_.add(corners[k], M), corners[k]);
     }
@@ -258,26 +249,14 @@ class LsRefinement {
     queue_segment(static_cast<int>(subsegments_.size()) - 1);
   }
 
-  // ": refinement is running into corner k, where LS Theorem 11's separation fails" (or holds), for
-  // a subsegment ending at a corner.
-  std::string near_corner(int a, int b) const {
-    const int m = static_cast<int>(domain_.size());
-    const int k = a < m ? a : b < m ? b : -1;
-    if (k < 0) return "";
-    const auto has = [k](const std::vector<int>& v) { return std::find(v.begin(), v.end(), k) != v.end(); };
-    const std::string where = "; refinement is running into " + domain_.corner_text(static_cast<std::size_t>(k));
-    if (!t11_.theta_admissible) return where + " (θ_bound is above LS Theorem 11's limit)";
-    if (has(t11_.corners_failing)) return where + ", where LS Theorem 11's separation of adjoining segments fails";
-    if (has(t11_.corners_undecided)) return where + ", where LS Theorem 11's separation is undecided";
-    return where + ", where LS Theorem 11's separation holds";
-  }
+  std::string near_corner(int a, int b) const { return corner_note(domain_, t11_, a, b); }
 
   // Inserts q as a site; its index, or −1 when the run stalls.
   int insert(const Point2<double>& q, Rule rule, double radius) {
     const Sym2<double> M = sites_.field.at(q.x, q.y);
     if (!same(M, metric_)) {
-      stalled_ = "the field " + sites_.field.name + " gives " + metric_text(M) + " at " + point_text(q) + ", not the corners' " +
-                 metric_text(metric_) + ": --algo ls needs one metric at every site so far (LS §8's loose diagram of bisector conics is not built yet)";
+      stalled_ = "the field " + sites_.field.name + ", taken as constant (one metric, Del_M), gives " + metric_text(M) + " at " +
+                 point_text(q) + ", not the corners' " + metric_text(metric_);
       return -1;
     }
     const double nearest = sites_.grid.nearest_site2(q, M, sites_.points);
@@ -307,7 +286,7 @@ class LsRefinement {
   std::deque<int> encroached_;
   std::deque<std::pair<int, std::array<int, 3>>> violators_;
   std::string stalled_;
-  std::array<std::size_t, 5> counts_{};
+  std::array<std::size_t, 9> counts_{};
   Rule last_rule_ = Rule::none;
   std::vector<common::Insertion> trace_;
 };
@@ -315,12 +294,8 @@ class LsRefinement {
 }  // namespace
 
 LsResult refine_ls(const common::Domain& domain, const fields::MetricField& field, const LsParameters& p, const common::Progress& progress) {
-  const common::Stopwatch clock;
-  LsRefinement r(domain, field, p);
-  const std::string stop = common::refine_until_done(r, p, clock, progress);
-  LsResult result = r.result(stop, stop == r.done());
-  result.seconds = clock.seconds();
-  return result;
+  if (field.name != "constant") return refine_ls_varying(domain, field, p, progress);
+  return common::run_refinement<LsRefinement>(p, progress, domain, field, p);
 }
 
 }  // namespace anisocert::refiners::ls

@@ -6,13 +6,14 @@
 // encroach a subsegment, which is then split instead (rules.hpp). The output is the dual of the
 // final diagram restricted to Ω (LS Theorem 7): a triangle per Voronoi vertex in closed Ω.
 //
-// The diagram is kept for sites that share one metric (a constant field), where it is exact and
-// every loose diagram equals the true one (delaunay_in_metric.hpp); a field that gives two sites
-// different metrics stops the run by name: the loose diagram of LS §8 for bisector conics is not
-// built yet (issue 16). Every decision that shapes the output is exact: in-circle and orientation
-// in the filtered predicates, Voronoi vertices and the cells along subsegments in rationals, and
-// every split point a double exactly on its subsegment. The refiners never include the oracle
-// (DESIGN.md § Layers); the tests certify every finished run with it.
+// The constant field's sites share one metric: the diagram is then kept as its dual Del_M, exact,
+// with the ties (vertices of degree 4 and more) that grids give kept as ties
+// (delaunay_in_metric.hpp). Every other field takes ls_varying.hpp's path, on the true diagram of
+// sites with different metrics. Every decision that shapes the output is exact: in-circle and
+// orientation in the filtered predicates, Voronoi vertices (rational, or certified boxes refined
+// on demand) and the cells along subsegments exactly, and every split point a double exactly on its
+// subsegment. The refiners never include the oracle (DESIGN.md § Layers); the tests certify every
+// finished run with it.
 #include "fields/metric_field.hpp"
 #include "refiners/common/domain.hpp"
 #include "refiners/common/refinement_loop.hpp"

@@ -8,17 +8,34 @@
 //     to encroach upon a segment");
 //   3 poor angle: a Voronoi vertex in Ω whose dual triangle has an angle below θ_bound in the
 //     metric gets a site;
-//   4 too large: likewise when the triangle's circumradius in the metric exceeds `size`.
-// LS's other violators, wedge violators and vertices with inverted dual triangles, cannot occur
-// while every site has one metric (delaunay_in_metric.hpp): every arc lies in its wedge, and the
-// dual of every Voronoi vertex is a counter-clockwise triangle.
+//   4 too large: likewise when the triangle's circumradius in the metric exceeds `size`;
+//   5 inverted: a Voronoi vertex in Ω whose dual triangle is inverted (its sites' order around the
+//     vertex the reverse of their order around the triangle) gets a site (before rules 3 and 4);
+//   6 island: a site whose cell holds no Voronoi vertex (its cell, or part of it, is bounded by an
+//     ellipse, LS §9's "arcs that are ellipses") gets a site on that bisector (last);
+//   7 unwedged: a Voronoi vertex in Ω outside wedge(v, w) of two of its sites (LS Definitions 2–3:
+//     a wedge violator, since the vertex lies on the arc of v and w) gets a site (after rule 5);
+//   8 tie: where the diagram is unresolved in Ω (a vertex of degree 4 or more, which symmetric
+//     fields give: its dual is no triangle), a site, before the other violators.
+// Rules 5 to 8 cannot fire while every site has one metric (delaunay_in_metric.hpp): every arc
+// lies in its wedge, and the dual of every Voronoi vertex is a counter-clockwise triangle.
 #include <array>
 
 namespace anisocert::refiners::ls {
 
-enum class Rule { none = 0, encroached_segment = 1, violator_encroaches = 2, poor_angle = 3, too_large = 4 };
-inline constexpr std::array<Rule, 4> rules_by_priority{Rule::encroached_segment, Rule::violator_encroaches, Rule::poor_angle,
-                                                       Rule::too_large};
+enum class Rule {
+  none = 0,
+  encroached_segment = 1,
+  violator_encroaches = 2,
+  poor_angle = 3,
+  too_large = 4,
+  inverted = 5,
+  island = 6,
+  unwedged = 7,
+  tie = 8
+};
+inline constexpr std::array<Rule, 8> rules_by_priority{Rule::encroached_segment, Rule::violator_encroaches, Rule::tie, Rule::inverted,
+                                                       Rule::unwedged, Rule::poor_angle, Rule::too_large, Rule::island};
 
 inline const char* rule_name(Rule rule) {
   switch (rule) {
@@ -26,6 +43,10 @@ inline const char* rule_name(Rule rule) {
     case Rule::violator_encroaches: return "violator encroaches";
     case Rule::poor_angle: return "poor angle";
     case Rule::too_large: return "too large";
+    case Rule::inverted: return "inverted";
+    case Rule::island: return "island";
+    case Rule::unwedged: return "unwedged";
+    case Rule::tie: return "tie";
     case Rule::none: break;
   }
   return "none";

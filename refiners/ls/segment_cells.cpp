@@ -77,14 +77,15 @@ bool outside_diametral_ellipse(const Point2<double>& a, const Point2<double>& b,
   return (predicates::quadratic_form(m11, m12, m22, ex, ey) - predicates::quadratic_form(m11, m12, m22, dx, dy) * 0.25).lo > 0;
 }
 
-std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi) {
+std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
+                                          const Rational& wanted) {
   const Rational half(1, 2);
-  if (lo <= half && half <= hi)
+  if (wanted == half && lo <= half && half <= hi)
     if (const auto m = common::exact_midpoint(a, b)) return m;
   const int k = std::min(common::exact_halvings(a, b), 60);
   if (k < 1) return std::nullopt;
   const Integer scale = Integer(1) << k;
-  const Rational target = std::clamp(half, lo, hi);
+  const Rational target = std::clamp(wanted, lo, hi);
   // The grid points of [lo, hi] ∩ (0, 1): j from max(⌈lo 2ᵏ⌉, 1) to min(⌊hi 2ᵏ⌋, 2ᵏ − 1).
   const Integer first = std::max(Integer(-floor_of(-lo * scale)), Integer(1));
   const Integer last = std::min(floor_of(hi * scale), Integer(scale - 1));
@@ -95,6 +96,19 @@ std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<
   const Point2<double> z{x.convert_to<double>(), y.convert_to<double>()};
   if (Rational(z.x) != x || Rational(z.y) != y) return std::nullopt;  // not a double (exact_halvings is a lower bound)
   return z;
+}
+
+std::optional<Point2<double>> coarse_split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
+                                                 const Rational& target, const Rational& slack) {
+  const int most = std::min(common::exact_halvings(a, b), 60);
+  const Rational from = std::max(lo, target - slack), to = std::min(hi, target + slack);
+  for (int k = 1; k <= most; ++k) {
+    const Integer scale = Integer(1) << k;
+    const Rational t(floor_of(std::clamp(target, from, to) * scale + Rational(1, 2)), scale);
+    if (t < from || t > to || t <= 0 || t >= 1) continue;
+    if (const auto z = split_point(a, b, t, t, t)) return z;
+  }
+  return std::nullopt;
 }
 
 }  // namespace anisocert::refiners::ls

@@ -42,9 +42,16 @@ common::Box near_segment(const Point2<double>& a, const Point2<double>& b, const
 // subsegment.)
 bool outside_diametral_ellipse(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M, const Point2<double>& p);
 
-// LS §9's split point: the point of z([lo, hi]) nearest the "midpoint" t = ½ (d_a(z) = d_b(z) for
-// one metric), as a double exactly on s: a + j 2⁻ᵏ (b − a) with k the exact halvings of ab (at
-// most 60) and 0 < j < 2ᵏ; nothing when [lo, hi] holds no such point.
-std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi);
+// LS §9's split point: the point of z([lo, hi]) nearest the "midpoint" t = `target` (d_a(z) =
+// d_b(z): ½ for one metric), as a double exactly on s: a + j 2⁻ᵏ (b − a) with k the exact halvings
+// of ab (at most 60) and 0 < j < 2ᵏ; nothing when [lo, hi] holds no such point.
+std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
+                                          const Rational& target = Rational(1, 2));
+
+// The same with the fewest bits: of the points a + j 2⁻ᵏ (b − a) in z([lo, hi]) within `slack` of
+// `target`, one with the least k. A split far from ½ then leaves subsegments that can be split
+// again exactly (each split at 2⁻ᵏ spends k of the halvings a double allows).
+std::optional<Point2<double>> coarse_split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
+                                                 const Rational& target, const Rational& slack);
 
 }  // namespace anisocert::refiners::ls

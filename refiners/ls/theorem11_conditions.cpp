@@ -3,6 +3,8 @@
 #include "predicates/angle.hpp"
 #include "theory/ls_theorem11.hpp"
 
+#include <algorithm>
+
 namespace anisocert::refiners::ls {
 
 Theorem11Conditions theorem11_conditions(const common::Domain& domain, const std::vector<predicates::Sym2<double>>& metrics,
@@ -30,6 +32,24 @@ Theorem11Conditions theorem11_conditions(const common::Domain& domain, const std
       c.corners_undecided.push_back(static_cast<int>(k));
   }
   return c;
+}
+
+std::string corner_note(const common::Domain& domain, const Theorem11Conditions& c, int a, int b) {
+  const int m = static_cast<int>(domain.size());
+  const int k = a < m ? a : b < m ? b : -1;
+  if (k < 0) return "";
+  const auto has = [k](const std::vector<int>& v) { return std::find(v.begin(), v.end(), k) != v.end(); };
+  const std::string where = "; refinement is running into " + domain.corner_text(static_cast<std::size_t>(k));
+  if (!c.theta_admissible) return where + " (θ_bound is above LS Theorem 11's limit)";
+  if (has(c.corners_failing)) return where + ", where LS Theorem 11's separation of adjoining segments fails";
+  if (has(c.corners_undecided)) return where + ", where LS Theorem 11's separation is undecided";
+  return where + ", where LS Theorem 11's separation holds";
+}
+
+double sin2_above(double theta_deg) {
+  if (theta_deg == 30) return 0.25;
+  if (theta_deg == 45) return 0.5;
+  return sqr(theory::ls_t11_sin_theta(rational_from_double(theta_deg), 128)).upper_double();
 }
 
 }  // namespace anisocert::refiners::ls

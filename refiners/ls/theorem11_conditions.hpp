@@ -22,4 +22,14 @@ struct Theorem11Conditions {
 Theorem11Conditions theorem11_conditions(const common::Domain& domain, const std::vector<predicates::Sym2<double>>& metrics,
                                          double theta_bound);
 
+// For a stop near a corner: "; refinement is running into corner k (x, y), where LS Theorem 11's
+// separation fails" (or holds, or is undecided; or θ_bound is beyond the theorem), for a
+// subsegment ab that ends at corner k (sites 0 … n−1 are the corners); empty otherwise.
+std::string corner_note(const common::Domain& domain, const Theorem11Conditions& c, int a, int b);
+
+// sin²θ_bound, or the double just above it: "angle ≥ arcsin √s2" then implies "angle ≥ θ_bound"
+// exactly. At 30° and 45° it is the rational itself (1/4, 1/2), so that an angle of exactly
+// θ_bound is no violator (LS §9: "an angle less than θ_bound").
+double sin2_above(double theta_deg);
+
 }  // namespace anisocert::refiners::ls

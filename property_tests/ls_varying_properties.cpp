@@ -1,0 +1,73 @@
+// The Labelle–Shewchuk refiner on fields whose sites have different metrics (refiners/ls/ls_varying)
+// certified by the exact oracle on every finished run (issue 16).
+//
+// LS.S9: a finished run (no encroached subsegment, no violator) is the dual of the exact diagram:
+// the oracle's D|Ω of the final sites has no orphans, every arc and vertex wedged, Theorem 7's
+// preconditions, a dual that is a triangulation of Ω and equals the mesh triangle for triangle;
+// every angle is at least θ_bound in the metric of each of the triangle's three vertices, decided
+// here exactly; every subsegment is a mesh edge. Random domains (convex or not), smooth random
+// fields (generators/fields.hpp, mild and strong), θ_bound from 5° to 20°, a size bound or none.
+// A stopped run names its budget or a stall the refiner documents.
+#include "geometry/mesh.hpp"
+#include "predicates/angle.hpp"
+#include "property_tests/oracle_certified.hpp"
+#include "property_tests/generators/domains.hpp"
+#include "property_tests/generators/fields.hpp"
+#include "refiners/ls/ls_refiner.hpp"
+#include "theory/ls_theorem11.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <set>
+
+using namespace anisocert;
+
+namespace {
+
+// sin²θ_bound from above, as a rational: "angle ≥ arcsin √s2" proves "angle ≥ θ_bound".
+Rational sin2_above(double theta) {
+  const Interval s = theory::ls_t11_sin_theta(rational_from_double(theta), 256);
+  return rational_from_double(sqr(s).upper_double());
+}
+
+// The stalls refiners/ls/ls_varying.hpp and docs/refiners.md name.
+bool named_stall(const std::string& why) {
+  for (const char* known : {"budget", "no double point", "below 2⁻³⁰ of its length", "is undecided", "tangentially", "outside Ω",
+                            "has no double point between them", "where a site is", "bound on boxes"})
+    if (why.find(known) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
+  const gen::SmoothField f = gen::random_smooth_field();
+  const bool reflex = *rc::gen::arbitrary<bool>();
+  const auto corners = gen::random_domain(reflex, false);
+  RC_TAG(reflex ? "non-convex" : "convex");
+  refiners::ls::LsParameters p;
+  p.theta_bound = *rc::gen::elementOf(std::vector<double>{5, 10, 15, 20});
+  p.size = *rc::gen::elementOf(std::vector<double>{0, 1, 2, 4});
+  p.max_vertices = 250, p.max_seconds = 5;
+  const refiners::common::Domain domain(corners);
+  const refiners::ls::LsResult r = refiners::ls::refine_ls(domain, f.field(), p);
+  if (!r.consistent) {
+    RC_LOG() << r.stop_reason << "\n";
+    RC_TAG(r.stop_reason.find("time budget") != std::string::npos ? "stopped: time" : r.stop_reason.find("budget") != std::string::npos ? "stopped: vertices" : "stopped: " + r.stop_reason.substr(0, 40));
+    RC_ASSERT(named_stall(r.stop_reason));
+    return;
+  }
+  RC_TAG("finished");
+  const geometry::Mesh<Rational> m = gen::assert_dual_of_exact_diagram(r.mesh);
+
+  const Rational s2 = sin2_above(p.theta_bound);
+  std::set<std::pair<int, int>> edges;
+  for (const auto& t : r.mesh.triangles)
+    for (int i = 0; i < 3; ++i) {
+      for (int k : t)  // in the metric of each vertex
+        RC_ASSERT(predicates::angle_at_least_arcsin(m.sites[t[(i + 2) % 3]], m.sites[t[i]], m.sites[t[(i + 1) % 3]], m.metrics[k], s2));
+      edges.insert(std::minmax(t[i], t[(i + 1) % 3]));
+    }
+  for (const auto& [u, v] : r.mesh.segments) RC_ASSERT(edges.count(std::minmax(u, v)) == 1u);
+}

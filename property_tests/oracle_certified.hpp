@@ -1,0 +1,28 @@
+#pragma once
+// What "certified by the oracle" means for a refiner's finished run (issue 16): the exact D|Ω of
+// the mesh's sites has no orphans, every arc and vertex wedged, LS Theorem 7's preconditions, and
+// a dual that is a triangulation of Ω and equals the mesh triangle for triangle. Returns the exact
+// mesh for the property's own checks.
+#include "geometry/mesh.hpp"
+#include "oracle/diagram/diagram.hpp"
+#include "oracle/diagram/mesh_dual.hpp"
+
+#include <rapidcheck.h>
+
+namespace anisocert::gen {
+
+inline geometry::Mesh<Rational> assert_dual_of_exact_diagram(const geometry::Mesh<double>& mesh) {
+  geometry::Mesh<Rational> m = geometry::exact(mesh);
+  const oracle::Diagram d = oracle::compute_diagram(m);
+  for (const auto& face : d.faces) RC_ASSERT(!face.orphan);
+  for (const auto& n : d.nodes) RC_ASSERT(n.wedged);
+  for (const auto& a : d.arcs) RC_ASSERT(a.wedged);
+  RC_ASSERT(d.theorem7.preconditions_hold);
+  RC_ASSERT(d.dual_check.is_triangulation);
+  const oracle::MeshDual dual = oracle::compare_with_dual(d, mesh.triangles, 3);
+  for (const auto& w : dual.not_dual_witnesses) RC_LOG() << w.why << "\n";
+  RC_ASSERT(dual.is_dual());
+  return m;
+}
+
+}  // namespace anisocert::gen

@@ -1,0 +1,213 @@
+#include "refiners/common/vertex_subdivision.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace anisocert::refiners::common {
+namespace {
+
+using FI = FilterInterval;
+
+// Holds d_u(p)² for every p in b, in the centred form about b's midpoint m (FilterInterval rounds
+// outward): Q_u(m + δ) = Q_u(m) + 2 (m − u)ᵀM_u δ + δᵀM_u δ. Term by term, the form would be far
+// wider for a nearly degenerate metric, whose terms cancel (a box 10⁻³ wide at 0.07 from a site of
+// anisotropy 100 was bounded by [0.26, 0.50]), and the leaves would split to separate sites
+// that the centred form tells apart at once.
+FI squared_distances(const MetricSite& u, const Box& b) {
+  const FI mx = FI(b.x0, b.x1).midpoint(), my = FI(b.y0, b.y1).midpoint();
+  const FI dx = FI(b.x0, b.x1) - mx, dy = FI(b.y0, b.y1) - my;  // δ
+  const FI ex = mx - u.p.x, ey = my - u.p.y;                       // m − u
+  const FI m11(u.M.m11), m12(u.M.m12), m22(u.M.m22);
+  const FI at_m = ex * (m11 * ex + m12 * ey) + ey * (m12 * ex + m22 * ey);
+  const FI linear = (m11 * ex + m12 * ey) * dx + (m12 * ex + m22 * ey) * dy;
+  const FI quadratic = m11 * sqr(dx) + FI(2 * u.M.m12) * (dx * dy) + m22 * sqr(dy);
+  return at_m + (linear + linear) + quadratic;
+}
+
+// The least upper bound of the candidates' squared distances over b (a NaN bound counts as ∞).
+double least_greatest(const std::vector<MetricSite>& sites, const std::vector<int>& among, const Box& b) {
+  double U = INFINITY;
+  for (int u : among) {
+    const double hi = squared_distances(sites[static_cast<std::size_t>(u)], b).hi;
+    if (hi < U) U = hi;
+  }
+  return U;
+}
+
+Box2<FI> interval_box(const Box& b) { return {FI(b.x0, b.x1), FI(b.y0, b.y1)}; }
+
+// Whether the vertex lies in the closed box b (a search may certify a point just beyond its box,
+// where other sites can be nearer); nothing when undecided.
+std::optional<bool> in_closed_box(const Trio& t, const VertexBox& v, const Box& b) {
+  const auto& x = v.box.x;
+  const auto& y = v.box.y;
+  if (x.lo >= b.x0 && x.hi <= b.x1 && y.lo >= b.y0 && y.hi <= b.y1) return true;
+  if (x.hi < b.x0 || x.lo > b.x1 || y.hi < b.y0 || y.lo > b.y1) return false;
+  const CertifiedPoint p(t, v);
+  for (int side = 0; side < 4; ++side) {
+    const auto s = sign_at<1>({&p}, [&](const auto& P, auto of) {
+      switch (side) {
+        case 0: return P[0].x - of(b.x0);
+        case 1: return of(b.x1) - P[0].x;
+        case 2: return P[0].y - of(b.y0);
+        default: return of(b.y1) - P[0].y;
+      }
+    });
+    if (!s) return std::nullopt;
+    if (*s == Sign::negative) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+VertexSubdivision::VertexSubdivision(const Box& R, double min_width) : min_width_(min_width) {
+  if (!(R.x0 < R.x1 && R.y0 < R.y1 && min_width > 0)) throw std::invalid_argument("VertexSubdivision: an empty box or min_width <= 0");
+  nodes_.push_back({R, {}, INFINITY, -1, {}, false});
+}
+
+std::vector<int> VertexSubdivision::candidates_in(const Box& b, const std::vector<int>& from, int extra) const {
+  std::vector<int> all = from;
+  if (extra >= 0) all.push_back(extra);
+  const double U = least_greatest(sites_, all, b);
+  std::vector<int> kept;
+  for (int u : all)
+    if (!(squared_distances(sites_[static_cast<std::size_t>(u)], b).lo > U)) kept.push_back(u);
+  return kept;
+}
+
+int VertexSubdivision::intern(const std::array<int, 3>& trio, const VertexBox& box) {
+  std::vector<int>& same_trio = by_trio_[trio];
+  for (int id : same_trio) {
+    const auto same = same_vertex(vertices_[static_cast<std::size_t>(id)].box, box);
+    if (!same) return -1;
+    if (*same) {
+      ++vertices_[static_cast<std::size_t>(id)].holders;
+      return id;
+    }
+  }
+  const int id = static_cast<int>(vertices_.size());
+  vertices_.push_back({trio, box, 1});
+  same_trio.push_back(id);
+  created_.push_back(id);
+  return id;
+}
+
+void VertexSubdivision::settle(int n) {
+  const std::size_t k = nodes_[static_cast<std::size_t>(n)].candidates.size();
+  if (k < 3) return;
+  const Box b = nodes_[static_cast<std::size_t>(n)].box;
+  if (k == 3) {
+    std::array<int, 3> t;
+    std::copy_n(nodes_[static_cast<std::size_t>(n)].candidates.begin(), 3, t.begin());
+    std::sort(t.begin(), t.end());
+    const Trio trio{sites_[static_cast<std::size_t>(t[0])], sites_[static_cast<std::size_t>(t[1])], sites_[static_cast<std::size_t>(t[2])]};
+    const VertexSearch found = vertices_in(trio, interval_box(b));
+    if (found.complete) {
+      bool decided = true;
+      std::vector<int> held;
+      for (const VertexBox& v : found.vertices) {
+        const auto inside = in_closed_box(trio, v, b);
+        if (!inside) decided = false;
+        if (!inside || !*inside) continue;
+        const int id = intern(t, v);
+        if (id < 0) decided = false;
+        else held.push_back(id);
+      }
+      nodes_[static_cast<std::size_t>(n)].vertices = std::move(held);
+      nodes_[static_cast<std::size_t>(n)].unresolved = !decided;
+      unresolved_leaves_ += !decided;
+      return;
+    }
+  }
+  if (std::max(b.x1 - b.x0, b.y1 - b.y0) <= min_width_ || full()) {
+    nodes_[static_cast<std::size_t>(n)].unresolved = true;
+    ++unresolved_leaves_;
+    return;
+  }
+  const int c = static_cast<int>(nodes_.size());
+  nodes_.resize(nodes_.size() + 4);
+  const double mx = b.x0 + (b.x1 - b.x0) / 2, my = b.y0 + (b.y1 - b.y0) / 2;
+  const std::array<Box, 4> quadrants{Box{b.x0, mx, b.y0, my}, Box{mx, b.x1, b.y0, my}, Box{b.x0, mx, my, b.y1}, Box{mx, b.x1, my, b.y1}};
+  for (int i = 0; i < 4; ++i) {
+    const auto q = quadrants[static_cast<std::size_t>(i)];
+    std::vector<int> kept = candidates_in(q, nodes_[static_cast<std::size_t>(n)].candidates, -1);
+    const double U = least_greatest(sites_, kept, q);
+    nodes_[static_cast<std::size_t>(c + i)] = {q, std::move(kept), U, -1, {}, false};
+  }
+  nodes_[static_cast<std::size_t>(n)].child = c;
+  nodes_[static_cast<std::size_t>(n)].candidates.clear();
+  for (int i = 0; i < 4; ++i) settle(c + i);
+}
+
+void VertexSubdivision::release(int n, std::vector<int>& held) {
+  Node& leaf = nodes_[static_cast<std::size_t>(n)];
+  held.insert(held.end(), leaf.vertices.begin(), leaf.vertices.end());
+  leaf.vertices.clear();
+  unresolved_leaves_ -= leaf.unresolved;
+  leaf.unresolved = false;
+}
+
+void VertexSubdivision::update(int n, int v) {
+  const Box b = nodes_[static_cast<std::size_t>(n)].box;
+  const FI range = squared_distances(sites_[static_cast<std::size_t>(v)], b);
+  if (range.lo > nodes_[static_cast<std::size_t>(n)].least_greatest) return;  // v is nowhere nearest in b: nothing below changes
+  if (range.hi < nodes_[static_cast<std::size_t>(n)].least_greatest) nodes_[static_cast<std::size_t>(n)].least_greatest = range.hi;
+  if (const int first = nodes_[static_cast<std::size_t>(n)].child; first >= 0) {
+    for (int i = 0; i < 4; ++i) update(first + i, v);
+    return;
+  }
+  std::vector<int> c = candidates_in(b, nodes_[static_cast<std::size_t>(n)].candidates, v);
+  // Found again before the old ones are let go, so that a vertex that stays keeps its id.
+  std::vector<int> held;
+  release(n, held);
+  nodes_[static_cast<std::size_t>(n)].candidates = std::move(c);
+  settle(n);
+  for (int id : held) {
+    Vertex& q = vertices_[static_cast<std::size_t>(id)];
+    if (--q.holders > 0) continue;
+    std::vector<int>& same_trio = by_trio_[q.sites];
+    std::erase(same_trio, id);
+    if (same_trio.empty()) by_trio_.erase(q.sites);
+  }
+}
+
+void VertexSubdivision::insert(const MetricSite& s) {
+  created_.clear();
+  sites_.push_back(s);
+  update(0, static_cast<int>(sites_.size()) - 1);
+}
+
+std::vector<int> VertexSubdivision::candidates_near(const Box& b) const {
+  std::vector<int> out;
+  std::vector<int> stack{0};
+  while (!stack.empty()) {
+    const Node& node = nodes_[static_cast<std::size_t>(stack.back())];
+    stack.pop_back();
+    if (node.box.x1 < b.x0 || node.box.x0 > b.x1 || node.box.y1 < b.y0 || node.box.y0 > b.y1) continue;
+    if (node.child >= 0) {
+      for (int i = 0; i < 4; ++i) stack.push_back(node.child + i);
+      continue;
+    }
+    out.insert(out.end(), node.candidates.begin(), node.candidates.end());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<Box> VertexSubdivision::unresolved() const {
+  std::vector<Box> out;
+  std::vector<int> stack{0};
+  while (!stack.empty()) {
+    const Node& node = nodes_[static_cast<std::size_t>(stack.back())];
+    stack.pop_back();
+    if (node.unresolved) out.push_back(node.box);
+    if (node.child >= 0)
+      for (int i = 0; i < 4; ++i) stack.push_back(node.child + i);
+  }
+  return out;
+}
+
+}  // namespace anisocert::refiners::common

@@ -1,0 +1,88 @@
+#pragma once
+// The Voronoi vertices of the true anisotropic Voronoi diagram D of a set of sites (LS §3: points
+// where three sites are equally near and no site is nearer), in a box R, kept as sites are added.
+// A quadtree over R whose every node lists the sites that can be nearest somewhere in its box
+// (its candidates: a site is left out when its least squared distance over the box, bounded below
+// in FilterInterval, exceeds another site's greatest, bounded above). A leaf with three candidates
+// holds exactly the points equidistant from them (voronoi_vertex.hpp's certified boxes): no other
+// site can be as near anywhere in it, so each is a vertex of D, of degree 3. A node with more is
+// split, down to `min_width`; a leaf that still has four or more is unresolved (a vertex of degree
+// 4 or more, or sites too near to tell apart, lies there), and so is one whose search is undecided.
+//
+// Orphans and islands (LS Definition 1) need no special case: D is found wherever it is. Adding a
+// site touches only the nodes where it is a candidate, which are near its cell. This is what the
+// refiners that keep the true diagram use (LS §9 allows it: "The algorithm works equally well
+// whether D is a true anisotropic Voronoi diagram or a loose anisotropic Voronoi diagram"; BWY
+// keeps "only the Voronoi vertices inside Ω"). It is the refiners' own: the oracle's candidate
+// subdivision (oracle/diagram/) is exact algebra, independent of this, and the tests compare the two.
+#include "refiners/common/domain.hpp"
+#include "refiners/common/certified_point.hpp"
+
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace anisocert::refiners::common {
+
+class VertexSubdivision {
+ public:
+  struct Vertex {
+    std::array<int, 3> sites;  // increasing
+    VertexBox box;
+    int holders = 0;  // leaves whose box found it; 0: no longer a vertex
+  };
+
+  // R: where vertices are kept; leaves are not split below min_width (> 0), nor once the tree
+  // has 2²⁰ + 2¹¹ nodes per site (then the leaf is unresolved: a bound on memory and time, which a
+  // curve of ties, such as two sites at one point with different metrics, would otherwise exhaust;
+  // refinement needs about 180 nodes per site).
+  VertexSubdivision(const Box& R, double min_width);
+
+  // Adds site s as the next id (0, 1, 2, …).
+  void insert(const MetricSite& s);
+
+  const std::vector<MetricSite>& sites() const { return sites_; }
+  // Every vertex ever found; those with holders > 0 are D's vertices in R (and perhaps a little
+  // beyond: a leaf's search may certify a point just outside its box).
+  const std::vector<Vertex>& vertices() const { return vertices_; }
+  // The vertices found by the last insertion.
+  const std::vector<int>& created() const { return created_; }
+  // The sites that can be nearest somewhere in b: the candidates of every leaf that meets b.
+  std::vector<int> candidates_near(const Box& b) const;
+  // The leaves where D could not be resolved (see above); empty when every vertex in R is known.
+  std::vector<Box> unresolved() const;
+  bool resolved() const { return unresolved_leaves_ == 0; }
+  // Whether a leaf was left unsplit because the tree reached max_nodes.
+  bool full() const { return nodes_.size() + 4 > max_nodes(); }
+
+ private:
+  struct Node {
+    Box box;
+    std::vector<int> candidates;  // a leaf's (an inner node keeps none)
+    double least_greatest = INFINITY;  // min over all sites of an upper bound of d_u² on the box
+    int child = -1;  // the first of four consecutive children (quadrants), or −1 for a leaf
+    std::vector<int> vertices;
+    bool unresolved = false;
+  };
+
+  // The sites of `from` (and `extra`, when ≥ 0) that can be nearest somewhere in b.
+  std::vector<int> candidates_in(const Box& b, const std::vector<int>& from, int extra) const;
+  // Makes a node whose candidates are set a leaf with its vertices, or splits it.
+  void settle(int node);
+  void update(int node, int site);
+  // Empties a leaf of vertices, appending the ids it held to `held`.
+  void release(int leaf, std::vector<int>& held);
+  int intern(const std::array<int, 3>& trio, const VertexBox& box);
+
+  std::size_t max_nodes() const { return (std::size_t(1) << 20) + (std::size_t(1) << 11) * sites_.size(); }
+
+  double min_width_;
+  std::vector<MetricSite> sites_;
+  std::vector<Node> nodes_;
+  std::vector<Vertex> vertices_;
+  std::map<std::array<int, 3>, std::vector<int>> by_trio_;  // live vertices
+  std::vector<int> created_;
+  int unresolved_leaves_ = 0;
+};
+
+}  // namespace anisocert::refiners::common

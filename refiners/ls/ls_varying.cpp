@@ -1,0 +1,420 @@
+#include "refiners/ls/ls_varying.hpp"
+
+#include "predicates/angle.hpp"
+#include "predicates/orientation.hpp"
+#include "refiners/common/exact_split.hpp"
+#include "refiners/common/sites.hpp"
+#include "refiners/common/vertex_in_domain.hpp"
+#include "refiners/common/vertex_subdivision.hpp"
+#include "refiners/ls/rules.hpp"
+#include "refiners/ls/segment_cells.hpp"
+#include "refiners/ls/segment_quadratics.hpp"
+#include "refiners/ls/theorem11_conditions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+
+namespace anisocert::refiners::ls {
+namespace {
+
+using common::CertifiedPoint;
+using common::point_text;
+
+std::string trio_text(const std::array<int, 3>& t) {
+  return std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]);
+}
+
+// A lower bound on λ_min and an upper bound on λ_max of M (within a factor 2 of the doubles').
+std::pair<double, double> eigenvalue_bounds(const Sym2<double>& M) {
+  const double m = (M.m11 + M.m22) / 2, r = std::hypot((M.m11 - M.m22) / 2, M.m12);
+  return {(m - r) / 2, (m + r) * 2};
+}
+
+class LsVaryingRefinement {
+ public:
+  LsVaryingRefinement(const common::Domain& domain, const fields::MetricField& field, const LsParameters& p)
+      : domain_(domain),
+        p_(p),
+        sites_(domain, field),
+        diagram_(domain.bounding_box(), std::ldexp(std::max(domain.bounding_box().x1 - domain.bounding_box().x0,
+                                                            domain.bounding_box().y1 - domain.bounding_box().y0), -40)),
+        s2_(sin2_above(p.theta_bound)) {
+    const auto& corners = domain.corners();
+    std::vector<Sym2<double>> metrics;
+    for (const auto& c : corners) metrics.push_back(field.at(c.x, c.y));
+    t11_ = theorem11_conditions(domain, metrics, p.theta_bound);
+    for (std::size_t k = 0; k < corners.size(); ++k) add_site(corners[k], metrics[k]);
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      subsegments_.emplace_back(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()));
+      edge_of_.push_back(static_cast<int>(k));
+      queued_.push_back(false);
+      queue_segment(static_cast<int>(k));
+    }
+    for (std::size_t q = 0; q < diagram_.vertices().size(); ++q)
+      if (diagram_.vertices()[q].holders > 0) violators_.push_back(static_cast<int>(q));
+  }
+
+  std::size_t vertices() const { return sites_.size(); }
+  std::size_t queued() const { return encroached_.size() + ties_.size() + violators_.size(); }
+  const std::string& stalled() const { return stalled_; }
+  std::string done() const { return "no encroached subsegment and no violator"; }
+
+  bool step() {
+    while (!encroached_.empty()) {
+      const int s = encroached_.front();
+      encroached_.pop_front();
+      queued_[static_cast<std::size_t>(s)] = false;
+      const std::vector<int> by = encroachers(s);
+      if (by.empty()) continue;
+      std::vector<MetricSite> in;
+      for (int w : by) in.push_back(site(w));
+      split(s, in, near(s), Rule::encroached_segment);
+      return true;
+    }
+    while (!ties_.empty()) {
+      const Point2<double> c = ties_.front();
+      ties_.pop_front();
+      attack(c, Rule::tie, 0, "the point where the diagram is unresolved (a Voronoi vertex of degree 4 or more)");
+      return true;
+    }
+    while (!violators_.empty()) {
+      const int q = violators_.front();
+      violators_.pop_front();
+      if (diagram_.vertices()[static_cast<std::size_t>(q)].holders == 0) continue;
+      const Rule rule = violation(q);
+      if (!stalled_.empty()) return true;
+      if (rule == Rule::none) continue;
+      const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+      if (!attack(v.box.approx(), rule, std::sqrt(radius2(q)), "the Voronoi vertex of sites " + trio_text(v.sites))) violators_.push_front(q);
+      return true;
+    }
+    return island();
+  }
+
+  LsResult result(std::string stop_reason, bool finished) {
+    LsResult r;
+    r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
+    for (const auto& [a, b] : subsegments_) r.mesh.segments.emplace_back(a, b);
+    const std::string stalled = stalled_;
+    for (std::size_t q = 0; q < diagram_.vertices().size(); ++q) {
+      const auto& v = diagram_.vertices()[q];
+      if (v.holders == 0) continue;
+      const CertifiedPoint P = point(static_cast<int>(q));
+      if (common::in_closed_domain(domain_, P) != std::optional<bool>(true)) continue;
+      const auto order = cell_order(static_cast<int>(q));
+      r.mesh.triangles.push_back(order == Sign::negative ? std::array<int, 3>{v.sites[0], v.sites[2], v.sites[1]} : v.sites);
+      r.violators_left += violation(static_cast<int>(q)) != Rule::none;
+    }
+    for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
+    stalled_ = stalled;
+    r.consistent = finished;
+    r.stop_reason = std::move(stop_reason);
+    for (Rule rule : rules_by_priority) r.rule_counts.emplace_back(rule_name(rule), counts_[static_cast<std::size_t>(rule)]);
+    r.last_rule = rule_name(last_rule_);
+    r.trace = trace_;
+    return r;
+  }
+
+ private:
+  MetricSite site(int k) const { return {sites_.points[static_cast<std::size_t>(k)], sites_.metrics[static_cast<std::size_t>(k)]}; }
+  CertifiedPoint point(int q) const {
+    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+    return CertifiedPoint({site(v.sites[0]), site(v.sites[1]), site(v.sites[2])}, v.box);
+  }
+  common::Box segment_box(int s) const {
+    const auto& a = sites_.points[static_cast<std::size_t>(subsegments_[static_cast<std::size_t>(s)].first)];
+    const auto& b = sites_.points[static_cast<std::size_t>(subsegments_[static_cast<std::size_t>(s)].second)];
+    return {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
+  }
+  // Every site that can be nearest somewhere on subsegment s.
+  std::vector<MetricSite> near(int s) const {
+    std::vector<MetricSite> out;
+    for (int u : diagram_.candidates_near(segment_box(s))) out.push_back(site(u));
+    return out;
+  }
+
+  // The counter-clockwise order of the three cells around vertex q: sign of the orientation of
+  // ½∇d_a², ½∇d_b², ½∇d_c² at q (near q, d_s² ≈ d² + 2 g_s·δ, so s's cell is the normal cone at
+  // −g_s of the triangle of the −g's). Nothing when undecided.
+  std::optional<Sign> cell_order(int q) const {
+    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+    const CertifiedPoint P = point(q);
+    const std::array<MetricSite, 3> t{site(v.sites[0]), site(v.sites[1]), site(v.sites[2])};
+    return common::sign_at<1>({&P}, [&](const auto& X, auto of) {
+      using T = std::decay_t<decltype(X[0].x)>;
+      const auto g = [&](int k) { return common::half_gradient(common::lift<T>(t[static_cast<std::size_t>(k)], of), X[0].x, X[0].y); };
+      const auto g0 = g(0), g1 = g(1), g2 = g(2);
+      return (g1[0] - g0[0]) * (g2[1] - g0[1]) - (g1[1] - g0[1]) * (g2[0] - g0[0]);
+    });
+  }
+  double radius2(int q) const {
+    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+    const Point2<double> c = v.box.approx();
+    const MetricSite s = site(v.sites[0]);
+    const double dx = c.x - s.p.x, dy = c.y - s.p.y;
+    return dx * (s.M.m11 * dx + s.M.m12 * dy) + dy * (s.M.m12 * dx + s.M.m22 * dy);
+  }
+
+  // Rules 5, 3, 4 at vertex q, or none (a vertex outside closed Ω is no violator: LS §9 "q ∈ Ω").
+  // Sets stalled_ when a decision is undecided.
+  Rule violation(int q) {
+    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+    const CertifiedPoint P = point(q);
+    const auto in = common::in_closed_domain(domain_, P);
+    if (!in) {
+      stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " lies in Ω is undecided (it is on ∂Ω or too near)";
+      return Rule::none;
+    }
+    if (!*in) return Rule::none;
+    const auto order = cell_order(q);
+    if (!order || *order == Sign::zero) {
+      stalled_ = "the cells of sites " + trio_text(v.sites) + " meet tangentially at their Voronoi vertex, or too nearly to tell";
+      return Rule::none;
+    }
+    std::array<Point2<double>, 3> t{};
+    for (int k = 0; k < 3; ++k) t[static_cast<std::size_t>(k)] = sites_.points[static_cast<std::size_t>(v.sites[static_cast<std::size_t>(k)])];
+    if (predicates::orientation(t[0], t[1], t[2]) != *order) return Rule::inverted;
+    // LS Definition 2: q ∈ wedge(v, w) ⇔ (q − v)ᵀM_v(w − v) > 0 and (q − w)ᵀM_w(v − w) > 0.
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        if (i == j) continue;
+        const MetricSite vi = site(v.sites[static_cast<std::size_t>(i)]), vj = site(v.sites[static_cast<std::size_t>(j)]);
+        const auto inside = common::sign_at<1>({&P}, [&](const auto& X, auto of) {
+          using T = std::decay_t<decltype(X[0].x)>;
+          const auto g = common::half_gradient(common::lift<T>(vi, of), X[0].x, X[0].y);  // M_v (q − v)
+          return g[0] * (of(vj.p.x) - of(vi.p.x)) + g[1] * (of(vj.p.y) - of(vi.p.y));
+        });
+        if (!inside) {
+          stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is wedged is undecided (it is on a wedge's line or too near)";
+          return Rule::none;
+        }
+        if (*inside != Sign::positive) return Rule::unwedged;
+      }
+    if (*order == Sign::negative) std::swap(t[1], t[2]);  // counter-clockwise
+    const Point2<double> c = v.box.approx();
+    const std::array<Sym2<double>, 4> metrics{sites_.metrics[static_cast<std::size_t>(v.sites[0])], sites_.metrics[static_cast<std::size_t>(v.sites[1])],
+                                              sites_.metrics[static_cast<std::size_t>(v.sites[2])], sites_.field.at(c.x, c.y)};
+    for (const auto& M : metrics)
+      for (int i = 0; i < 3; ++i)
+        if (!predicates::angle_at_least_arcsin(t[static_cast<std::size_t>((i + 2) % 3)], t[static_cast<std::size_t>(i)],
+                                               t[static_cast<std::size_t>((i + 1) % 3)], M, s2_))
+          return Rule::poor_angle;
+    if (p_.size > 0) {
+      const MetricSite a = site(v.sites[0]);
+      const auto large = common::sign_at<1>({&P}, [&](const auto& X, auto of) {
+        using T = std::decay_t<decltype(X[0].x)>;
+        return common::distance2(common::lift<T>(a, of), X[0].x, X[0].y) - of(p_.size) * of(p_.size);
+      });
+      if (!large) {
+        stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is too large is undecided";
+        return Rule::none;
+      }
+      if (*large == Sign::positive) return Rule::too_large;
+    }
+    return Rule::none;
+  }
+
+  // LS §9: a site at q, unless it would encroach a subsegment, which is then split in the cell q
+  // would have. False when q was not inserted (the subsegment was split instead, or the run stalls).
+  bool attack(const Point2<double>& q, Rule rule, double radius, const std::string& what) {
+    const MetricSite Q{q, sites_.field.at(q.x, q.y)};
+    if (const auto s = encroached_by(Q)) {
+      const auto [a, b] = subsegments_[static_cast<std::size_t>(*s)];
+      split(*s, {Q}, {site(a), site(b)}, Rule::violator_encroaches);
+      return false;
+    }
+    if (!domain_.contains(q)) {
+      stalled_ = what + " rounds to " + point_text(q) + ", outside Ω, and encroaches no subsegment";
+      return false;
+    }
+    insert(Q, rule, radius);
+    return true;
+  }
+
+  // A subsegment whose cell Q would meet, were Q inserted (no subsegment is encroached now, so only
+  // its endpoints are nearest along it).
+  std::optional<int> encroached_by(const MetricSite& Q) const {
+    for (std::size_t s = 0; s < subsegments_.size(); ++s)
+      if (reaches(static_cast<int>(s), Q)) return static_cast<int>(s);
+    return std::nullopt;
+  }
+  // Q's closed cell among Q and the ends of subsegment s meets s (segment_quadratics.hpp), after a
+  // filter in doubles: only when λ_min(M_Q) dist(Q, s)² ≤ max λ_max(M_a, M_b) |s|² can Q be as near
+  // as a or b somewhere on s (the bounds are a factor 2 wide, more than rounding can move them).
+  bool reaches(int s, const MetricSite& Q) const {
+    const MetricSite a = site(subsegments_[static_cast<std::size_t>(s)].first), b = site(subsegments_[static_cast<std::size_t>(s)].second);
+    const common::Box box = segment_box(s);
+    const double gx = std::max({box.x0 - Q.p.x, Q.p.x - box.x1, 0.0}), gy = std::max({box.y0 - Q.p.y, Q.p.y - box.y1, 0.0});
+    const double length2 = (b.p.x - a.p.x) * (b.p.x - a.p.x) + (b.p.y - a.p.y) * (b.p.y - a.p.y);
+    if (eigenvalue_bounds(Q.M).first * (gx * gx + gy * gy) > 2 * std::max(eigenvalue_bounds(a.M).second, eigenvalue_bounds(b.M).second) * length2)
+      return false;
+    return ls::reaches(a, b, Q);
+  }
+
+  std::vector<int> encroachers(int s) const {
+    const auto [a, b] = subsegments_[static_cast<std::size_t>(s)];
+    std::vector<int> by;
+    for (int w : diagram_.candidates_near(segment_box(s)))
+      if (w != a && w != b && ls::reaches(site(a), site(b), site(w))) by.push_back(w);
+    return by;
+  }
+
+  // LS §9: s is split at a point z in the closed cell of one of `in` among `near` (every site that
+  // can be nearest on s), as near the "midpoint" d_a(z) = d_b(z) as a double exactly on s allows:
+  // that point itself when it is in such a cell, else the point nearest to it of the range of s
+  // where the first encroacher that has one is nearest. The choice is in doubles; membership is
+  // checked exactly.
+  void split(int s, const std::vector<MetricSite>& in, const std::vector<MetricSite>& near, Rule rule) {
+    const auto [a, b] = subsegments_[static_cast<std::size_t>(s)];
+    const Point2<double>&pa = sites_.points[static_cast<std::size_t>(a)], &pb = sites_.points[static_cast<std::size_t>(b)];
+    const double tm = midpoint_parameter(site(a), site(b));
+    const auto on_s = [&](const Point2<double>& z) {
+      return Point2<Rational>{Rational(z.x), Rational(z.y)};
+    };
+    // Within 1/64 of the subsegment of the wanted point, the coarsest dyadic point (coarse_split_point).
+    const Rational slack(1, 64);
+    std::optional<Point2<double>> z = coarse_split_point(pa, pb, 0, 1, Rational(tm), slack);
+    if (z && !std::any_of(in.begin(), in.end(), [&](const MetricSite& w) { return nearest_at(on_s(*z), w, near); })) z.reset();
+    for (std::size_t i = 0; i < in.size() && !z; ++i) {
+      std::optional<std::pair<double, double>> best;
+      for (const auto& r : nearest_ranges(pa, pb, in[i], near)) {
+        const double gap = tm < r.first ? r.first - tm : tm > r.second ? tm - r.second : 0;
+        if (!best || gap < (tm < best->first ? best->first - tm : tm > best->second ? tm - best->second : 0)) best = r;
+      }
+      if (!best) continue;
+      const double inset = (best->second - best->first) * 0x1p-20;
+      const double lo = best->first + inset, hi = best->second - inset;
+      if (!(lo <= hi)) continue;
+      z = coarse_split_point(pa, pb, Rational(lo), Rational(hi), Rational(std::clamp(tm, lo, hi)), slack);
+      if (z && !nearest_at(on_s(*z), in[i], near)) z.reset();
+    }
+    if (!z) {
+      stalled_ = "subsegment " + point_text(pa) + " – " + point_text(pb) + " is to be split in a cell where no double point exactly on it was found" +
+                 corner_note(domain_, t11_, a, b);
+      return;
+    }
+    const int e = edge_of_[static_cast<std::size_t>(s)];
+    const auto& corners = domain_.corners();
+    const auto& c0 = corners[static_cast<std::size_t>(e)];
+    const auto& c1 = corners[(static_cast<std::size_t>(e) + 1) % corners.size()];
+    const double piece = std::min(std::hypot(z->x - pa.x, z->y - pa.y), std::hypot(pb.x - z->x, pb.y - z->y));
+    if (piece < std::ldexp(std::hypot(c1.x - c0.x, c1.y - c0.y), -common::min_halvings)) {
+      stalled_ = "a split of edge " + std::to_string(e) + " would leave a piece below 2⁻³⁰ of its length" + corner_note(domain_, t11_, a, b);
+      return;
+    }
+    const int k = insert({*z, sites_.field.at(z->x, z->y)}, rule, 0);
+    if (k < 0) return;
+    subsegments_[static_cast<std::size_t>(s)] = {a, k};
+    subsegments_.emplace_back(k, b);
+    edge_of_.push_back(e);
+    queued_.push_back(false);
+    queue_segment(s);
+    queue_segment(static_cast<int>(subsegments_.size()) - 1);
+  }
+
+  // Rule 6, when nothing else applies: a site whose cell holds no Voronoi vertex.
+  bool island() {
+    std::vector<char> has(sites_.size(), 0);
+    for (const auto& v : diagram_.vertices())
+      if (v.holders > 0)
+        for (int k : v.sites) has[static_cast<std::size_t>(k)] = 1;
+    for (std::size_t u = 0; u < has.size(); ++u) {
+      if (has[u]) continue;
+      // On the segment from u to its nearest other site w (in w's metric at u), where d_u = d_w.
+      const MetricSite U = site(static_cast<int>(u));
+      int w = -1;
+      double least = INFINITY;
+      for (int c : diagram_.candidates_near({U.p.x, U.p.x, U.p.y, U.p.y})) {
+        if (c == static_cast<int>(u)) continue;
+        const MetricSite C = site(c);
+        const double dx = U.p.x - C.p.x, dy = U.p.y - C.p.y, d2 = dx * (C.M.m11 * dx + C.M.m12 * dy) + dy * (C.M.m12 * dx + C.M.m22 * dy);
+        if (d2 < least) least = d2, w = c;
+      }
+      if (w < 0) continue;
+      const MetricSite W = site(w);
+      const double t = midpoint_parameter(U, W);
+      const Point2<double> z{U.p.x + t * (W.p.x - U.p.x), U.p.y + t * (W.p.y - U.p.y)};
+      if ((z.x == U.p.x && z.y == U.p.y) || (z.x == W.p.x && z.y == W.p.y)) {
+        stalled_ = "site " + std::to_string(u) + "'s cell holds no Voronoi vertex, and its bisector with site " + std::to_string(w) +
+                   " has no double point between them";
+        return true;
+      }
+      attack(z, Rule::island, 0, "the point between sites " + std::to_string(u) + " and " + std::to_string(w) + " on their bisector");
+      return true;
+    }
+    return false;
+  }
+
+  void add_site(const Point2<double>& q, const Sym2<double>& M) {
+    sites_.add(q, M);
+    sites_.grow_grid();
+    diagram_.insert({q, M});
+    if (diagram_.full()) {
+      stalled_ = "the diagram's subdivision reached its bound on boxes after the site at " + point_text(q) +
+                 " (sites too near to tell apart, or distances that tie along a curve)";
+      return;
+    }
+    // Rule 8's points: the centres of the unresolved leaves that meet Ω, all of them again after
+    // every insertion (an insertion may resolve some).
+    ties_.clear();
+    if (diagram_.resolved()) return;
+    for (const common::Box& b : diagram_.unresolved()) {
+      if (domain_.contains(b) == std::optional<bool>(false)) continue;  // no vertex of the mesh there
+      const Point2<double> c{b.x0 + (b.x1 - b.x0) / 2, b.y0 + (b.y1 - b.y0) / 2};
+      if (std::none_of(ties_.begin(), ties_.end(), [&](const Point2<double>& t) { return t.x == c.x && t.y == c.y; })) ties_.push_back(c);
+    }
+  }
+
+  // Inserts Q as a site; its index, or −1 when the run stalls.
+  int insert(const MetricSite& Q, Rule rule, double radius) {
+    const double nearest = sites_.grid.nearest_site2(Q.p, Q.M, sites_.points);
+    if (nearest == 0) {  // two sites at one point: their distances tie along curves through it
+      stalled_ = "a site by rule \"" + std::string(rule_name(rule)) + "\" would lie at " + point_text(Q.p) + ", where a site is";
+      return -1;
+    }
+    trace_.push_back({static_cast<int>(rule), Q.p.x, Q.p.y, std::sqrt(nearest), -1, radius});
+    ++counts_[static_cast<std::size_t>(rule)];
+    last_rule_ = rule;
+    const int k = static_cast<int>(sites_.size());
+    add_site(Q.p, Q.M);
+    for (int q : diagram_.created()) violators_.push_back(q);
+    for (std::size_t s = 0; s < subsegments_.size(); ++s) {
+      const auto [a, b] = subsegments_[s];
+      if (a != k && b != k && reaches(static_cast<int>(s), Q)) queue_segment(static_cast<int>(s));
+    }
+    return stalled_.empty() ? k : -1;
+  }
+
+  void queue_segment(int s) {
+    if (queued_[static_cast<std::size_t>(s)]) return;
+    queued_[static_cast<std::size_t>(s)] = true;
+    encroached_.push_back(s);
+  }
+
+  const common::Domain& domain_;
+  LsParameters p_;
+  common::Sites sites_;
+  common::VertexSubdivision diagram_;
+  double s2_;
+  Theorem11Conditions t11_;
+  std::vector<std::pair<int, int>> subsegments_;
+  std::vector<int> edge_of_;
+  std::vector<bool> queued_;
+  std::deque<int> encroached_;
+  std::deque<int> violators_;
+  std::deque<Point2<double>> ties_;
+  std::string stalled_;
+  std::array<std::size_t, 9> counts_{};
+  Rule last_rule_ = Rule::none;
+  std::vector<common::Insertion> trace_;
+};
+
+}  // namespace
+
+LsResult refine_ls_varying(const common::Domain& domain, const fields::MetricField& field, const LsParameters& p,
+                           const common::Progress& progress) {
+  return common::run_refinement<LsVaryingRefinement>(p, progress, domain, field, p);
+}
+
+}  // namespace anisocert::refiners::ls
