@@ -25,6 +25,11 @@ std::string trio_text(const std::array<int, 3>& t) {
   return std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]);
 }
 
+// d_s(p)² in doubles (for choices, never for decisions).
+double squared_distance(const MetricSite& s, const Point2<double>& p) {
+  return common::distance2(common::lift<double>(s, [](double x) { return x; }), p.x, p.y);
+}
+
 // A lower bound on λ_min and an upper bound on λ_max of M (within a factor 2 of the doubles').
 std::pair<double, double> eigenvalue_bounds(const Sym2<double>& M) {
   const double m = (M.m11 + M.m22) / 2, r = std::hypot((M.m11 - M.m22) / 2, M.m12);
@@ -45,12 +50,7 @@ class LsVaryingRefinement {
     for (const auto& c : corners) metrics.push_back(field.at(c.x, c.y));
     t11_ = theorem11_conditions(domain, metrics, p.theta_bound);
     for (std::size_t k = 0; k < corners.size(); ++k) add_site(corners[k], metrics[k]);
-    for (std::size_t k = 0; k < corners.size(); ++k) {
-      subsegments_.emplace_back(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()));
-      edge_of_.push_back(static_cast<int>(k));
-      queued_.push_back(false);
-      queue_segment(static_cast<int>(k));
-    }
+    for (std::size_t k = 0; k < corners.size(); ++k) add_subsegment(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()), static_cast<int>(k));
     for (std::size_t q = 0; q < diagram_.vertices().size(); ++q)
       if (diagram_.vertices()[q].holders > 0) violators_.push_back(static_cast<int>(q));
   }
@@ -151,9 +151,7 @@ class LsVaryingRefinement {
   double radius2(int q) const {
     const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
     const Point2<double> c = v.box.approx();
-    const MetricSite s = site(v.sites[0]);
-    const double dx = c.x - s.p.x, dy = c.y - s.p.y;
-    return dx * (s.M.m11 * dx + s.M.m12 * dy) + dy * (s.M.m12 * dx + s.M.m22 * dy);
+    return squared_distance(site(v.sites[0]), c);
   }
 
   // Rules 5, 3, 4 at vertex q, or none (a vertex outside closed Ω is no violator: LS §9 "q ∈ Ω").
@@ -306,11 +304,8 @@ class LsVaryingRefinement {
     const int k = insert({*z, sites_.field.at(z->x, z->y)}, rule, 0);
     if (k < 0) return;
     subsegments_[static_cast<std::size_t>(s)] = {a, k};
-    subsegments_.emplace_back(k, b);
-    edge_of_.push_back(e);
-    queued_.push_back(false);
     queue_segment(s);
-    queue_segment(static_cast<int>(subsegments_.size()) - 1);
+    add_subsegment(k, b, e);
   }
 
   // Rule 6, when nothing else applies: a site whose cell holds no Voronoi vertex.
@@ -328,7 +323,7 @@ class LsVaryingRefinement {
       for (int c : diagram_.candidates_near({U.p.x, U.p.x, U.p.y, U.p.y})) {
         if (c == static_cast<int>(u)) continue;
         const MetricSite C = site(c);
-        const double dx = U.p.x - C.p.x, dy = U.p.y - C.p.y, d2 = dx * (C.M.m11 * dx + C.M.m12 * dy) + dy * (C.M.m12 * dx + C.M.m22 * dy);
+        const double d2 = squared_distance(C, U.p);
         if (d2 < least) least = d2, w = c;
       }
       if (w < 0) continue;
@@ -386,6 +381,13 @@ class LsVaryingRefinement {
     return stalled_.empty() ? k : -1;
   }
 
+  // A subsegment ab of edge `edge` of Ω, queued for the encroachment test.
+  void add_subsegment(int a, int b, int edge) {
+    subsegments_.emplace_back(a, b);
+    edge_of_.push_back(edge);
+    queued_.push_back(false);
+    queue_segment(static_cast<int>(subsegments_.size()) - 1);
+  }
   void queue_segment(int s) {
     if (queued_[static_cast<std::size_t>(s)]) return;
     queued_[static_cast<std::size_t>(s)] = true;
