@@ -13,6 +13,7 @@
 #include "refiners/ls/delaunay_in_metric.hpp"
 #include "refiners/ls/ls_refiner.hpp"
 #include "refiners/ls/segment_cells.hpp"
+#include "refiners/ls/segment_quadratics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -239,6 +240,42 @@ TEST(LsRefiner, RunningIntoASharpCornerStopsByName) {
             std::string::npos)
       << r.stop_reason;
   EXPECT_LT(r.mesh.sites.size(), 1000u);
+}
+
+// reaches(a, b, w), LS encroachment with three metrics, against exact rational samples of s: a
+// sample where w is as near as a and b proves it true; where it says false, no sample may be such.
+// Sites on the 1/16 grid, so that ties and touches (w on s, w mirrored across s, equal metrics)
+// occur; the closed cell counts a touch.
+TEST(LsRefiner, ReachesAgreesWithExactSamplesAlongTheSegment) {
+  std::mt19937 rng(7);
+  const auto grid = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng) / 16.0; };
+  const auto metric = [&]() -> predicates::Sym2<double> {
+    const double a = grid(1, 64), c = grid(1, 64), b = grid(-16, 16);
+    return a * c > b * b ? predicates::Sym2<double>{a, b, c} : predicates::Sym2<double>{a, 0, c};
+  };
+  int sampled_true = 0, said_true = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const refiners::common::MetricSite a{{grid(-16, 16), grid(-16, 16)}, metric()}, b{{grid(-16, 16), grid(-16, 16)}, n % 3 ? metric() : a.M};
+    if (a.p.x == b.p.x && a.p.y == b.p.y) continue;
+    const refiners::common::MetricSite w{{grid(-16, 16), grid(-16, 16)}, n % 5 ? metric() : a.M};
+    const auto d2 = [](const refiners::common::MetricSite& u, const Rational& x, const Rational& y) {
+      const Rational dx = x - Rational(u.p.x), dy = y - Rational(u.p.y);
+      return Rational(u.M.m11) * dx * dx + 2 * Rational(u.M.m12) * dx * dy + Rational(u.M.m22) * dy * dy;
+    };
+    bool sample = false;
+    for (int k = 0; k <= 256 && !sample; ++k) {
+      const Rational t(k, 256), x = Rational(a.p.x) + t * (Rational(b.p.x) - Rational(a.p.x)), y = Rational(a.p.y) + t * (Rational(b.p.y) - Rational(a.p.y));
+      const Rational dw = d2(w, x, y);
+      sample = dw <= d2(a, x, y) && dw <= d2(b, x, y);
+    }
+    const bool reaches = refiners::ls::reaches(a, b, w);
+    if (sample) {
+      EXPECT_TRUE(reaches) << n;
+    }
+    sampled_true += sample, said_true += reaches;
+  }
+  EXPECT_GT(sampled_true, 100);  // the cases are not all far apart
+  EXPECT_GE(said_true, sampled_true);
 }
 
 // A field that gives the sites different metrics takes the true-diagram path (ls_varying.hpp). The
