@@ -7,7 +7,9 @@
 #include "refiners/ls/delaunay_in_metric.hpp"
 #include "refiners/ls/ls_varying.hpp"
 #include "refiners/ls/rules.hpp"
+#include "refiners/ls/run_record.hpp"
 #include "refiners/ls/segment_cells.hpp"
+#include "refiners/ls/subsegments.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
 
 #include <algorithm>
@@ -47,26 +49,24 @@ class LsRefinement {
       diagram_.insert(sites_.add(corners[k], M), corners[k]);
     }
     for (std::size_t k = 0; k < corners.size(); ++k) {
-      add_subsegment(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()), static_cast<int>(k));
-      queue_segment(static_cast<int>(k));
+      const int a = static_cast<int>(k), b = static_cast<int>((k + 1) % corners.size());
+      subsegments_.add(a, b, a);
+      boxes_.push_back(near_segment(corners[k], corners[static_cast<std::size_t>(b)], metric_));
     }
     for (std::size_t t = 0; t < diagram_.slots(); ++t)
       if (diagram_.triangle(static_cast<int>(t)).alive) queue_if_violator(static_cast<int>(t));
   }
 
   std::size_t vertices() const { return sites_.size(); }
-  std::size_t queued() const { return encroached_.size() + violators_.size(); }
+  std::size_t queued() const { return subsegments_.queued() + violators_.size(); }
   const std::string& stalled() const { return stalled_; }
   std::string done() const { return "no encroached subsegment and no violator"; }
 
   bool step() {
-    while (!encroached_.empty()) {
-      const int s = encroached_.front();
-      encroached_.pop_front();
-      queued_[s] = false;
-      const std::vector<CellOnSegment> by = encroachers(s);
+    while (const auto s = subsegments_.pop()) {
+      const std::vector<CellOnSegment> by = encroachers(*s);
       if (by.empty()) continue;
-      split(s, by, Rule::encroached_segment);
+      split(*s, by, Rule::encroached_segment);
       return true;
     }
     while (!violators_.empty()) {
@@ -96,7 +96,7 @@ class LsRefinement {
   LsResult result(std::string stop_reason, bool finished) const {
     LsResult r;
     r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
-    r.mesh.segments = subsegments_;
+    r.mesh.segments = subsegments_.all();
     for (std::size_t t = 0; t < diagram_.slots(); ++t) {
       const auto& tri = diagram_.triangle(static_cast<int>(t));
       if (!tri.alive || !diagram_.real(static_cast<int>(t))) continue;
@@ -104,11 +104,7 @@ class LsRefinement {
       r.violators_left += violation(static_cast<int>(t)) != Rule::none;
     }
     for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
-    r.consistent = finished;
-    r.stop_reason = std::move(stop_reason);
-    for (Rule rule : rules_by_priority) r.rule_counts.emplace_back(rule_name(rule), counts_[static_cast<int>(rule)]);
-    r.last_rule = rule_name(last_rule_);
-    r.trace = trace_;
+    record_.fill(r, std::move(stop_reason), finished);
     return r;
   }
 
@@ -161,17 +157,6 @@ class LsRefinement {
   void queue_if_violator(int t) {
     if (violation(t) != Rule::none) violators_.emplace_back(t, diagram_.triangle(t).v);
   }
-  void add_subsegment(int a, int b, int edge) {
-    subsegments_.emplace_back(a, b);
-    edge_of_.push_back(edge);
-    boxes_.push_back(near_segment(sites_.points[a], sites_.points[b], metric_));
-    queued_.push_back(false);
-  }
-  void queue_segment(int s) {
-    if (queued_[s]) return;
-    queued_[s] = true;
-    encroached_.push_back(s);
-  }
 
   // The cells other than its endpoints' that subsegment s meets. A cell that meets s in a single
   // point (s passes through its Voronoi vertex with a and b) counts only when its site lies
@@ -179,7 +164,7 @@ class LsRefinement {
   // would lie outside Ω. On Ω's side it is harmless (s stays a dual edge, the triangle lies in Ω),
   // and splitting there would need the vertex's own parameter, which need not be a double point.
   std::vector<CellOnSegment> encroachers(int s) const {
-    const auto ends = subsegments_[s];
+    const auto ends = subsegments_.ends(s);
     const Point2<double>&pa = sites_.points[ends.first], &pb = sites_.points[ends.second];
     const common::Box box = near_segment(pa, pb, metric_);
     std::vector<std::pair<int, Point2<double>>> near;
@@ -203,7 +188,7 @@ class LsRefinement {
   }
   std::optional<CellOnSegment> would_meet(int s, const Point2<double>& q) const {
     if (!boxes_[s].contains(q)) return std::nullopt;
-    const auto [a, b] = subsegments_[s];
+    const auto [a, b] = subsegments_.ends(s);
     const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
     if (p_.filters && outside_diametral_ellipse(pa, pb, metric_, q)) return std::nullopt;
     for (const CellOnSegment& c : cells_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}))
@@ -222,34 +207,21 @@ class LsRefinement {
     const CellOnSegment* best = &in.front();
     for (const CellOnSegment& c : in)
       if (better(c, *best)) best = &c;
-    const auto [a, b] = subsegments_[s];
+    const auto [a, b] = subsegments_.ends(s);
     const auto z = split_point(sites_.points[a], sites_.points[b], best->lo, best->hi);
     if (!z) {
       stalled_ = "subsegment " + point_text(sites_.points[a]) + " – " + point_text(sites_.points[b]) +
-                 " is to be split in a cell that holds no double point exactly on it" + near_corner(a, b);
+                 " is to be split in a cell that holds no double point exactly on it" + corner_note(domain_, t11_, a, b);
       return;
     }
-    // Splits that run into a corner (LS Theorem 11's separation failing there) would go on down to
-    // the resolution of doubles; no run within its budgets splits an edge 2³⁰ times.
-    const int e = edge_of_[s];
-    const auto& corners = domain_.corners();
-    const double whole = std::hypot(corners[(e + 1) % corners.size()].x - corners[e].x, corners[(e + 1) % corners.size()].y - corners[e].y);
-    const double piece = std::min(std::hypot(z->x - sites_.points[a].x, z->y - sites_.points[a].y),
-                                  std::hypot(sites_.points[b].x - z->x, sites_.points[b].y - z->y));
-    if (piece < std::ldexp(whole, -common::min_halvings)) {
-      stalled_ = "a split of edge " + std::to_string(e) + " would leave a piece below 2⁻³⁰ of its length" + near_corner(a, b);
-      return;
-    }
+    stalled_ = subsegments_.too_fine(domain_, t11_, s, sites_.points[a], sites_.points[b], *z);
+    if (!stalled_.empty()) return;
     const int k = insert(*z, rule, 0);
     if (k < 0) return;
-    subsegments_[s] = {a, k};
+    subsegments_.split(s, k);
     boxes_[s] = near_segment(sites_.points[a], sites_.points[k], metric_);
-    add_subsegment(k, b, edge_of_[s]);
-    queue_segment(s);
-    queue_segment(static_cast<int>(subsegments_.size()) - 1);
+    boxes_.push_back(near_segment(sites_.points[k], sites_.points[b], metric_));
   }
-
-  std::string near_corner(int a, int b) const { return corner_note(domain_, t11_, a, b); }
 
   // Inserts q as a site; its index, or −1 when the run stalls.
   int insert(const Point2<double>& q, Rule rule, double radius) {
@@ -260,14 +232,12 @@ class LsRefinement {
       return -1;
     }
     const double nearest = sites_.grid.nearest_site2(q, M, sites_.points);
-    trace_.push_back({static_cast<int>(rule), q.x, q.y, std::sqrt(nearest), -1, radius});
-    ++counts_[static_cast<int>(rule)];
-    last_rule_ = rule;
+    record_.insertion(rule, q, nearest, radius);
     const int k = sites_.add(q, M);
     sites_.grow_grid();
     for (int t : diagram_.insert(k, q)) queue_if_violator(t);
     for (std::size_t s = 0; s < subsegments_.size(); ++s)
-      if (would_meet(static_cast<int>(s), q)) queue_segment(static_cast<int>(s));
+      if (would_meet(static_cast<int>(s), q)) subsegments_.queue(static_cast<int>(s));
     return k;
   }
 
@@ -279,16 +249,11 @@ class LsRefinement {
   double s2_;
   Theorem11Conditions t11_;
   Rational size2_;
-  std::vector<std::pair<int, int>> subsegments_;
+  Subsegments subsegments_;
   std::vector<common::Box> boxes_;  // near_segment of each subsegment
-  std::vector<int> edge_of_;        // the edge of Ω each subsegment lies on
-  std::vector<bool> queued_;
-  std::deque<int> encroached_;
   std::deque<std::pair<int, std::array<int, 3>>> violators_;
   std::string stalled_;
-  std::array<std::size_t, 9> counts_{};
-  Rule last_rule_ = Rule::none;
-  std::vector<common::Insertion> trace_;
+  RunRecord record_;
 };
 
 }  // namespace

@@ -7,8 +7,10 @@
 #include "refiners/common/vertex_in_domain.hpp"
 #include "refiners/common/vertex_subdivision.hpp"
 #include "refiners/ls/rules.hpp"
+#include "refiners/ls/run_record.hpp"
 #include "refiners/ls/segment_cells.hpp"
 #include "refiners/ls/segment_quadratics.hpp"
+#include "refiners/ls/subsegments.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
 
 #include <algorithm>
@@ -50,26 +52,23 @@ class LsVaryingRefinement {
     for (const auto& c : corners) metrics.push_back(field.at(c.x, c.y));
     t11_ = theorem11_conditions(domain, metrics, p.theta_bound);
     for (std::size_t k = 0; k < corners.size(); ++k) add_site(corners[k], metrics[k]);
-    for (std::size_t k = 0; k < corners.size(); ++k) add_subsegment(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()), static_cast<int>(k));
+    for (std::size_t k = 0; k < corners.size(); ++k) subsegments_.add(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()), static_cast<int>(k));
     for (std::size_t q = 0; q < diagram_.vertices().size(); ++q)
       if (diagram_.vertices()[q].holders > 0) violators_.push_back(static_cast<int>(q));
   }
 
   std::size_t vertices() const { return sites_.size(); }
-  std::size_t queued() const { return encroached_.size() + ties_.size() + violators_.size(); }
+  std::size_t queued() const { return subsegments_.queued() + ties_.size() + violators_.size(); }
   const std::string& stalled() const { return stalled_; }
   std::string done() const { return "no encroached subsegment and no violator"; }
 
   bool step() {
-    while (!encroached_.empty()) {
-      const int s = encroached_.front();
-      encroached_.pop_front();
-      queued_[static_cast<std::size_t>(s)] = false;
-      const std::vector<int> by = encroachers(s);
+    while (const auto s = subsegments_.pop()) {
+      const std::vector<int> by = encroachers(*s);
       if (by.empty()) continue;
       std::vector<MetricSite> in;
       for (int w : by) in.push_back(site(w));
-      split(s, in, near(s), Rule::encroached_segment);
+      split(*s, in, near(*s), Rule::encroached_segment);
       return true;
     }
     while (!ties_.empty()) {
@@ -95,7 +94,7 @@ class LsVaryingRefinement {
   LsResult result(std::string stop_reason, bool finished) {
     LsResult r;
     r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
-    for (const auto& [a, b] : subsegments_) r.mesh.segments.emplace_back(a, b);
+    r.mesh.segments = subsegments_.all();
     const std::string stalled = stalled_;
     for (std::size_t q = 0; q < diagram_.vertices().size(); ++q) {
       const auto& v = diagram_.vertices()[q];
@@ -108,11 +107,7 @@ class LsVaryingRefinement {
     }
     for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
     stalled_ = stalled;
-    r.consistent = finished;
-    r.stop_reason = std::move(stop_reason);
-    for (Rule rule : rules_by_priority) r.rule_counts.emplace_back(rule_name(rule), counts_[static_cast<std::size_t>(rule)]);
-    r.last_rule = rule_name(last_rule_);
-    r.trace = trace_;
+    record_.fill(r, std::move(stop_reason), finished);
     return r;
   }
 
@@ -123,8 +118,8 @@ class LsVaryingRefinement {
     return CertifiedPoint({site(v.sites[0]), site(v.sites[1]), site(v.sites[2])}, v.box);
   }
   common::Box segment_box(int s) const {
-    const auto& a = sites_.points[static_cast<std::size_t>(subsegments_[static_cast<std::size_t>(s)].first)];
-    const auto& b = sites_.points[static_cast<std::size_t>(subsegments_[static_cast<std::size_t>(s)].second)];
+    const auto& a = sites_.points[static_cast<std::size_t>(subsegments_.ends(s).first)];
+    const auto& b = sites_.points[static_cast<std::size_t>(subsegments_.ends(s).second)];
     return {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
   }
   // Every site that can be nearest somewhere on subsegment s.
@@ -218,7 +213,7 @@ class LsVaryingRefinement {
   bool attack(const Point2<double>& q, Rule rule, double radius, const std::string& what) {
     const MetricSite Q{q, sites_.field.at(q.x, q.y)};
     if (const auto s = encroached_by(Q)) {
-      const auto [a, b] = subsegments_[static_cast<std::size_t>(*s)];
+      const auto [a, b] = subsegments_.ends(*s);
       split(*s, {Q}, {site(a), site(b)}, Rule::violator_encroaches);
       return false;
     }
@@ -241,7 +236,7 @@ class LsVaryingRefinement {
   // filter in doubles: only when λ_min(M_Q) dist(Q, s)² ≤ max λ_max(M_a, M_b) |s|² can Q be as near
   // as a or b somewhere on s (the bounds are a factor 2 wide, more than rounding can move them).
   bool reaches(int s, const MetricSite& Q) const {
-    const MetricSite a = site(subsegments_[static_cast<std::size_t>(s)].first), b = site(subsegments_[static_cast<std::size_t>(s)].second);
+    const MetricSite a = site(subsegments_.ends(s).first), b = site(subsegments_.ends(s).second);
     const common::Box box = segment_box(s);
     const double gx = std::max({box.x0 - Q.p.x, Q.p.x - box.x1, 0.0}), gy = std::max({box.y0 - Q.p.y, Q.p.y - box.y1, 0.0});
     const double length2 = (b.p.x - a.p.x) * (b.p.x - a.p.x) + (b.p.y - a.p.y) * (b.p.y - a.p.y);
@@ -251,7 +246,7 @@ class LsVaryingRefinement {
   }
 
   std::vector<int> encroachers(int s) const {
-    const auto [a, b] = subsegments_[static_cast<std::size_t>(s)];
+    const auto [a, b] = subsegments_.ends(s);
     std::vector<int> by;
     for (int w : diagram_.candidates_near(segment_box(s)))
       if (w != a && w != b && ls::reaches(site(a), site(b), site(w))) by.push_back(w);
@@ -264,7 +259,7 @@ class LsVaryingRefinement {
   // where the first encroacher that has one is nearest. The choice is in doubles; membership is
   // checked exactly.
   void split(int s, const std::vector<MetricSite>& in, const std::vector<MetricSite>& near, Rule rule) {
-    const auto [a, b] = subsegments_[static_cast<std::size_t>(s)];
+    const auto [a, b] = subsegments_.ends(s);
     const Point2<double>&pa = sites_.points[static_cast<std::size_t>(a)], &pb = sites_.points[static_cast<std::size_t>(b)];
     const double tm = midpoint_parameter(site(a), site(b));
     const auto on_s = [&](const Point2<double>& z) {
@@ -292,20 +287,11 @@ class LsVaryingRefinement {
                  corner_note(domain_, t11_, a, b);
       return;
     }
-    const int e = edge_of_[static_cast<std::size_t>(s)];
-    const auto& corners = domain_.corners();
-    const auto& c0 = corners[static_cast<std::size_t>(e)];
-    const auto& c1 = corners[(static_cast<std::size_t>(e) + 1) % corners.size()];
-    const double piece = std::min(std::hypot(z->x - pa.x, z->y - pa.y), std::hypot(pb.x - z->x, pb.y - z->y));
-    if (piece < std::ldexp(std::hypot(c1.x - c0.x, c1.y - c0.y), -common::min_halvings)) {
-      stalled_ = "a split of edge " + std::to_string(e) + " would leave a piece below 2⁻³⁰ of its length" + corner_note(domain_, t11_, a, b);
-      return;
-    }
+    stalled_ = subsegments_.too_fine(domain_, t11_, s, pa, pb, *z);
+    if (!stalled_.empty()) return;
     const int k = insert({*z, sites_.field.at(z->x, z->y)}, rule, 0);
     if (k < 0) return;
-    subsegments_[static_cast<std::size_t>(s)] = {a, k};
-    queue_segment(s);
-    add_subsegment(k, b, e);
+    subsegments_.split(s, k);
   }
 
   // Rule 6, when nothing else applies: a site whose cell holds no Voronoi vertex.
@@ -368,31 +354,17 @@ class LsVaryingRefinement {
       stalled_ = "a site by rule \"" + std::string(rule_name(rule)) + "\" would lie at " + point_text(Q.p) + ", where a site is";
       return -1;
     }
-    trace_.push_back({static_cast<int>(rule), Q.p.x, Q.p.y, std::sqrt(nearest), -1, radius});
-    ++counts_[static_cast<std::size_t>(rule)];
-    last_rule_ = rule;
+    record_.insertion(rule, Q.p, nearest, radius);
     const int k = static_cast<int>(sites_.size());
     add_site(Q.p, Q.M);
     for (int q : diagram_.created()) violators_.push_back(q);
     for (std::size_t s = 0; s < subsegments_.size(); ++s) {
-      const auto [a, b] = subsegments_[s];
-      if (a != k && b != k && reaches(static_cast<int>(s), Q)) queue_segment(static_cast<int>(s));
+      const auto [a, b] = subsegments_.ends(static_cast<int>(s));
+      if (a != k && b != k && reaches(static_cast<int>(s), Q)) subsegments_.queue(static_cast<int>(s));
     }
     return stalled_.empty() ? k : -1;
   }
 
-  // A subsegment ab of edge `edge` of Ω, queued for the encroachment test.
-  void add_subsegment(int a, int b, int edge) {
-    subsegments_.emplace_back(a, b);
-    edge_of_.push_back(edge);
-    queued_.push_back(false);
-    queue_segment(static_cast<int>(subsegments_.size()) - 1);
-  }
-  void queue_segment(int s) {
-    if (queued_[static_cast<std::size_t>(s)]) return;
-    queued_[static_cast<std::size_t>(s)] = true;
-    encroached_.push_back(s);
-  }
 
   const common::Domain& domain_;
   LsParameters p_;
@@ -400,16 +372,11 @@ class LsVaryingRefinement {
   common::VertexSubdivision diagram_;
   double s2_;
   Theorem11Conditions t11_;
-  std::vector<std::pair<int, int>> subsegments_;
-  std::vector<int> edge_of_;
-  std::vector<bool> queued_;
-  std::deque<int> encroached_;
+  Subsegments subsegments_;
   std::deque<int> violators_;
   std::deque<Point2<double>> ties_;
   std::string stalled_;
-  std::array<std::size_t, 9> counts_{};
-  Rule last_rule_ = Rule::none;
-  std::vector<common::Insertion> trace_;
+  RunRecord record_;
 };
 
 }  // namespace

@@ -1,0 +1,36 @@
+#pragma once
+// What an LS run did, insertion by insertion and rule by rule: the trace (for the properties on
+// traces, LS Theorem 11 and Lemmas 12–23) and the report's counts, in rules.hpp's priority order.
+#include "refiners/ls/ls_refiner.hpp"
+#include "refiners/ls/rules.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace anisocert::refiners::ls {
+
+class RunRecord {
+ public:
+  // A site at q by `rule`, at squared distance nearest2 from the nearest earlier site in its
+  // metric; radius: the violator's circumradius in the metric (0 for splits).
+  void insertion(Rule rule, const predicates::Point2<double>& q, double nearest2, double radius) {
+    trace_.push_back({static_cast<int>(rule), q.x, q.y, std::sqrt(nearest2), -1, radius});
+    ++counts_[static_cast<std::size_t>(rule)];
+    last_ = rule;
+  }
+  // r's stop, counts, last rule and trace.
+  void fill(LsResult& r, std::string stop_reason, bool finished) const {
+    r.consistent = finished;
+    r.stop_reason = std::move(stop_reason);
+    for (Rule rule : rules_by_priority) r.rule_counts.emplace_back(rule_name(rule), counts_[static_cast<std::size_t>(rule)]);
+    r.last_rule = rule_name(last_);
+    r.trace = trace_;
+  }
+
+ private:
+  std::array<std::size_t, rules_by_priority.size() + 1> counts_{};
+  Rule last_ = Rule::none;
+  std::vector<common::Insertion> trace_;
+};
+
+}  // namespace anisocert::refiners::ls

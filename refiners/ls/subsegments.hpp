@@ -1,0 +1,45 @@
+#pragma once
+// LS §9's constrained subsegments: Ω's edges as the refinement splits them, each with the edge it
+// lies on, and the queue of those to test for encroachment (rule 1). Both LS refinements (one
+// metric on Del_M, different metrics on the true diagram) keep them here.
+#include "refiners/common/domain.hpp"
+#include "refiners/ls/theorem11_conditions.hpp"
+
+#include <deque>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace anisocert::refiners::ls {
+
+class Subsegments {
+ public:
+  // Adds the subsegment from site a to site b, a piece of edge `edge` of Ω, and queues it; its index.
+  int add(int a, int b, int edge);
+  // Queues s for the encroachment test unless it is queued.
+  void queue(int s);
+  // The next subsegment to test, taken off the queue.
+  std::optional<int> pop();
+  // Splits s = ab at site k: s becomes ak and kb is added; both are queued. The index of kb.
+  int split(int s, int k);
+
+  std::size_t size() const { return ends_.size(); }
+  std::size_t queued() const { return queue_.size(); }
+  const std::pair<int, int>& ends(int s) const { return ends_[static_cast<std::size_t>(s)]; }
+  const std::vector<std::pair<int, int>>& all() const { return ends_; }
+
+  // Why subsegment s from pa to pb must not be split at z, or empty: a piece would be below 2⁻³⁰ of
+  // its edge. Splits that run into a corner (LS Theorem 11's separation failing there) would go on
+  // down to the resolution of doubles; no run within its budgets splits an edge 2³⁰ times.
+  std::string too_fine(const common::Domain& domain, const Theorem11Conditions& t11, int s, const predicates::Point2<double>& pa,
+                       const predicates::Point2<double>& pb, const predicates::Point2<double>& z) const;
+
+ private:
+  std::vector<std::pair<int, int>> ends_;
+  std::vector<int> edge_;  // the edge of Ω each lies on
+  std::vector<bool> queued_;
+  std::deque<int> queue_;
+};
+
+}  // namespace anisocert::refiners::ls
