@@ -290,7 +290,7 @@ RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
   }
   const auto certified = gen::assert_dual_of_exact_diagram(r.mesh);
   if (!certified) return;
-  const geometry::Mesh<Rational>& m = *certified;
+  const geometry::Mesh<Rational>& m = certified->mesh;
 
   const auto& M = m.metrics[0];
   const Rational s2 = sin2_above(run.p.theta_bound), size2 = rational_from_double(run.p.size) * rational_from_double(run.p.size);

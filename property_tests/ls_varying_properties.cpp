@@ -5,11 +5,16 @@
 // the oracle's D|Ω of the final sites has no orphans, every arc and vertex wedged, Theorem 7's
 // preconditions, a dual that is a triangulation of Ω and equals the mesh triangle for triangle;
 // every angle is at least θ_bound in the metric of each of the triangle's three vertices, decided
-// here exactly; every subsegment is a mesh edge. Random domains (convex or not), smooth random
-// fields (generators/fields.hpp, mild and strong), θ_bound from 5° to 20°, a size bound or none.
-// A stopped run names its budget or a stall the refiner documents.
+// here exactly; every Voronoi vertex of D|Ω is within `size` of each of its three sites in the
+// field's metric at that site, decided exactly at the oracle's vertex; every subsegment is a mesh
+// edge. Random domains (convex or not), smooth random fields (generators/fields.hpp, mild and
+// strong), θ_bound from 5° to 20°, a size bound or none; half the runs in LS §9's variation
+// (--normalized-metric), whose mesh metrics must be M′ = det(M)^(−1/2) M (fields/normalized.hpp) at
+// every site, the field's M elsewhere. A stopped run names its budget or a stall the refiner documents.
+#include "fields/normalized.hpp"
 #include "geometry/mesh.hpp"
 #include "predicates/angle.hpp"
+#include "oracle/diagram/input.hpp"
 #include "property_tests/oracle_certified.hpp"
 #include "property_tests/generators/domains.hpp"
 #include "property_tests/generators/fields.hpp"
@@ -39,6 +44,13 @@ bool named_stall(const std::string& why) {
   return false;
 }
 
+// d_a(x)² − size² in the metric M, as a conic in x.
+oracle::Conic beyond_size(const predicates::Point2<Rational>& a, const predicates::Sym2<double>& metric, double size) {
+  const Rational m11(metric.m11), m12(metric.m12), m22(metric.m22), s(size);
+  return {m11, 2 * m12, m22, -2 * (m11 * a.x + m12 * a.y), -2 * (m12 * a.x + m22 * a.y),
+          m11 * a.x * a.x + 2 * m12 * a.x * a.y + m22 * a.y * a.y - s * s};
+}
+
 }  // namespace
 
 RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
@@ -50,6 +62,8 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
   p.theta_bound = *rc::gen::elementOf(std::vector<double>{5, 10, 15, 20});
   p.size = *rc::gen::elementOf(std::vector<double>{0, 1, 2, 4});
   p.max_vertices = 250, p.max_seconds = 5;
+  p.normalized_metric = *rc::gen::arbitrary<bool>();
+  RC_TAG(p.normalized_metric ? "normalized metric" : "metric");
   const refiners::common::Domain domain(corners);
   const refiners::ls::LsResult r = refiners::ls::refine_ls(domain, f.field(), p);
   if (!r.consistent) {
@@ -61,7 +75,19 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
   RC_TAG("finished");
   const auto certified = gen::assert_dual_of_exact_diagram(r.mesh);
   if (!certified) return;
-  const geometry::Mesh<Rational>& m = *certified;
+  const geometry::Mesh<Rational>& m = certified->mesh;
+
+  for (std::size_t k = 0; k < r.mesh.sites.size(); ++k) {
+    const auto M = f.at(r.mesh.sites[k].x, r.mesh.sites[k].y), written = r.mesh.metrics[k];
+    const auto want = p.normalized_metric ? fields::normalized(M) : M;
+    RC_ASSERT(written.m11 == want.m11 && written.m12 == want.m12 && written.m22 == want.m22);
+  }
+  if (p.size > 0)
+    for (const auto& node : certified->diagram.nodes)
+      if (node.kind == oracle::Node::Kind::voronoi)
+        for (int k : node.sites)  // the oracle's points are in its sheared coordinates x' = x + s·y (oracle/diagram/input.hpp)
+          RC_ASSERT(node.at.sign_of(oracle::shear_conic(beyond_size(m.sites[k], f.at(r.mesh.sites[k].x, r.mesh.sites[k].y), p.size),
+                                                        -certified->diagram.shear)) != Sign::positive);
 
   const Rational s2 = sin2_above(p.theta_bound);
   std::set<std::pair<int, int>> edges;

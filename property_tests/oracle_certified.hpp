@@ -2,7 +2,7 @@
 // What "certified by the oracle" means for a refiner's finished run (issue 16): the exact D|Ω of
 // the mesh's sites has no orphans, every arc and vertex wedged, LS Theorem 7's preconditions, and
 // a dual that is a triangulation of Ω and equals the mesh triangle for triangle. Returns the exact
-// mesh for the property's own checks, or nothing (tagged) when the oracle refuses the input as
+// mesh and diagram for the property's own checks, or nothing (tagged) when the oracle refuses the input as
 // beyond what it supports (std::domain_error: distances that doubles cannot tell apart).
 #include "geometry/mesh.hpp"
 #include "oracle/diagram/diagram.hpp"
@@ -26,9 +26,15 @@ inline std::optional<oracle::Diagram> oracle_diagram(const geometry::Mesh<Ration
   }
 }
 
-inline std::optional<geometry::Mesh<Rational>> assert_dual_of_exact_diagram(const geometry::Mesh<double>& mesh) {
+// The exact mesh and its diagram, for the property's own checks.
+struct Certified {
+  geometry::Mesh<Rational> mesh;
+  oracle::Diagram diagram;
+};
+
+inline std::optional<Certified> assert_dual_of_exact_diagram(const geometry::Mesh<double>& mesh) {
   geometry::Mesh<Rational> m = geometry::exact(mesh);
-  const std::optional<oracle::Diagram> exact = oracle_diagram(m);
+  std::optional<oracle::Diagram> exact = oracle_diagram(m);
   if (!exact) return std::nullopt;
   const oracle::Diagram& d = *exact;
   for (const auto& face : d.faces) RC_ASSERT(!face.orphan);
@@ -39,7 +45,7 @@ inline std::optional<geometry::Mesh<Rational>> assert_dual_of_exact_diagram(cons
   const oracle::MeshDual dual = oracle::compare_with_dual(d, mesh.triangles, 3);
   for (const auto& w : dual.not_dual_witnesses) RC_LOG() << w.why << "\n";
   RC_ASSERT(dual.is_dual());
-  return m;
+  return Certified{std::move(m), std::move(*exact)};
 }
 
 }  // namespace anisocert::gen

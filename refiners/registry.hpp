@@ -24,6 +24,7 @@ struct ParameterSpec {
   std::string name;  // the option --name
   std::string help;
   double value;      // the default
+  bool flag = false;  // an option without a value: given, 1; else 0 (the default)
 };
 using ParameterValues = std::map<std::string, double>;  // a value for every parameter of the entry
 

@@ -141,4 +141,22 @@ TEST(CliMesh, RefineThenCertify) {
   }
 }
 
+// `refine --algo ls --normalized-metric` (LS §9's variation): the report says so, and the mesh's
+// metrics are M′ = det(M)^(−1/2) M, here of M = diag(20, 80): diag(1/2, 2), exact in doubles. A flag
+// of another refiner is refused by name with exit 2.
+TEST(CliMesh, NormalizedMetricWritesMPrime) {
+  const std::string base = ::testing::TempDir() + "anisocert_normalized_" + std::to_string(getpid());
+  const Outcome r = run("refine --algo ls --field constant --param m11=20 --param m22=80 --size 0.5 --normalized-metric --quiet -o " + base + ".json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("normalized metric (LS §9)"), std::string::npos) << r.out;
+  std::ifstream in(base + ".json");
+  const Json mesh = Json::parse(in);
+  ASSERT_FALSE(mesh["sites"].empty());
+  for (const auto& site : mesh["sites"]) EXPECT_EQ(site["metric"].dump(), "[\"0.5\",\"0\",\"2\"]");
+  const Outcome star = run("refine --normalized-metric --quiet -o " + base + "_never.json");
+  EXPECT_EQ(star.exit_code, 2);
+  EXPECT_NE(star.err.find("--normalized-metric is not a parameter of --algo star"), std::string::npos) << star.err;
+  EXPECT_FALSE(std::filesystem::exists(base + "_never.json"));
+}
+
 }  // namespace

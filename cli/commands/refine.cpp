@@ -31,6 +31,7 @@ struct RefineOptions {
   std::string algo = "star", domain = "square", field = "shock", output, output_format, svg;
   std::vector<std::string> params;
   std::map<std::string, double> values;            // every refiner parameter, defaults first
+  std::map<std::string, bool> flags;               // the parameters that are flags (refiners::ParameterSpec::flag)
   std::map<std::string, CLI::Option*> options;    // their options, to tell which were given
   refiners::common::Budget budget;
   unsigned seed = 1;
@@ -41,7 +42,7 @@ int run_refine(const RefineOptions& o) {
   const refiners::RefinerEntry* entry = refiners::find_refiner(o.algo);
   if (!entry) throw UsageError("--algo: unknown refiner " + quoted_excerpt(o.algo) + " (" + names_of(refiners::refiner_names()) + ")");
   refiners::ParameterValues values;
-  for (const auto& spec : entry->parameters) values[spec.name] = o.values.at(spec.name);
+  for (const auto& spec : entry->parameters) values[spec.name] = spec.flag ? double(o.flags.at(spec.name)) : o.values.at(spec.name);
   for (const auto& [name, option] : o.options)
     if (option->count() > 0 && !values.count(name))
       throw UsageError("--" + name + " is not a parameter of --algo " + o.algo);
@@ -128,13 +129,16 @@ void add_refine(CLI::App& app, int& exit_code) {
     for (const auto& spec : entry.parameters) {
       auto& [first, text] = help[spec.name];
       if (text.empty()) {
+        if (spec.flag) o->flags[spec.name] = false;
         o->values[spec.name] = spec.value;
         first = spec.help, text = spec.help + " (--algo " + entry.name;
       } else {
         text += ", " + entry.name + (spec.help == first ? "" : ": " + spec.help);
       }
     }
-  for (const auto& [name, h] : help) o->options[name] = c->add_option("--" + name, o->values[name], h.second + ")")->capture_default_str();
+  for (const auto& [name, h] : help)
+    o->options[name] = o->flags.count(name) ? c->add_flag("--" + name, o->flags[name], h.second + ")")
+                                            : c->add_option("--" + name, o->values[name], h.second + ")")->capture_default_str();
   c->add_option("--max-vertices", o->budget.max_vertices, "vertex budget")->capture_default_str();
   c->add_option("--max-seconds", o->budget.max_seconds, "time budget")->capture_default_str();
   c->add_option("--seed", o->seed, "random seed of the picking regions (--algo star)")->capture_default_str();

@@ -1,5 +1,5 @@
 // Every registered refiner against the exact certifier (docs/fuzzing.md § Differential): a small
-// domain, a built-in field with scaled parameters and the refiner's parameters, all decoded from
+// domain, a built-in field with scaled parameters and the refiner's parameters (scaled, a flag on a byte's parity), all decoded from
 // bytes; budgets of 300 vertices and 3 seconds. A run the refiner calls consistent must be
 // certified exactly (oracle/, which shares no code with refiners/):
 //   - every refiner: a valid triangulation of the domain (and of its constrained segments);
@@ -66,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fields::Parameters fp;
   for (const auto& [name, value] : field_entry.defaults) fp[name] = scaled(value, b.next());
   refiners::ParameterValues rp = entry.defaults();
-  for (auto& [name, value] : rp) value = scaled(value, b.next());
+  for (const auto& spec : entry.parameters) rp[spec.name] = spec.flag ? b.next() % 2 : scaled(spec.value, b.next());
 
   refiners::Run run;
   try {

@@ -14,6 +14,7 @@ LsParameters parameters(const ParameterValues& v, const common::Budget& budget) 
   LsParameters p;
   static_cast<common::Budget&>(p) = budget;
   p.theta_bound = v.at("theta-bound"), p.size = v.at("size");
+  p.normalized_metric = v.at("normalized-metric") != 0;
   if (!(p.theta_bound > 0 && p.theta_bound < 60))
     throw ParameterError("--theta-bound " + shortest_decimal(p.theta_bound) + " is out of range: need 0 < θ_bound < 60 (degrees)");
   if (!(p.size >= 0 && std::isfinite(p.size)))
@@ -56,6 +57,9 @@ std::vector<std::string> report(const LsResult& r, const LsParameters& p, const 
   o.str("");
   o << "  parameters: θ_bound = " << p.theta_bound << "°, size = " << p.size << (p.size > 0 ? "" : " (no size rule)");
   lines.push_back(o.str());
+  if (p.normalized_metric)
+    lines.push_back("  normalized metric (LS §9): the diagram, the angles and the mesh's metrics in M′ = det(M)^(−1/2) M rounded to doubles; "
+                    "sizes in the field's M at each of the triangle's vertices");
   return lines;
 }
 
@@ -68,7 +72,9 @@ RefinerEntry entry() {
           "angle below θ_bound or is too large, inverted or unwedged); the constant field on Del_M, other fields on the true "
           "diagram of sites with different metrics",
           {{"theta-bound", "smallest angle θ_bound in degrees (LS Theorem 11 needs θ_bound < arcsin(1/(2√2)) ≈ 20.7048°)", d.theta_bound},
-           {"size", "largest circumradius in the metric, 0 for none", d.size}},
+           {"size", "largest circumradius in the metric, 0 for none", d.size},
+           {"normalized-metric",
+            "LS §9's variation: the diagram from M′ = det(M)^(−1/2) M, sizes judged with M (the mesh's metrics are then M′)", 0, true}},
           [](const common::Domain& domain, const fields::MetricField& field, const ParameterValues& values,
              const common::Budget& budget, unsigned, const common::Progress& progress) {
             const LsParameters p = parameters(values, budget);

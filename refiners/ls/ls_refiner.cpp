@@ -1,5 +1,6 @@
 #include "refiners/ls/ls_refiner.hpp"
 
+#include "fields/normalized.hpp"
 #include "predicates/angle.hpp"
 #include "predicates/orientation.hpp"
 #include "refiners/common/exact_split.hpp"
@@ -33,15 +34,16 @@ class LsRefinement {
   LsRefinement(const common::Domain& domain, const fields::MetricField& field, const LsParameters& p)
       : domain_(domain),
         p_(p),
-        sites_(domain, field),
-        metric_(field.at(domain.corners()[0].x, domain.corners()[0].y)),
+        sites_(domain, p.normalized_metric ? fields::normalized(field) : field),
+        metric_(sites_.field.at(domain.corners()[0].x, domain.corners()[0].y)),
+        size_metric_(field.at(domain.corners()[0].x, domain.corners()[0].y)),
         diagram_(metric_, domain.bounding_box()),
         s2_(sin2_above(p.theta_bound)),
         t11_(theorem11_conditions(domain, std::vector(domain.size(), metric_), p.theta_bound)),
         size2_(Rational(p.size) * Rational(p.size)) {
     const auto& corners = domain.corners();
     for (std::size_t k = 0; k < corners.size(); ++k) {
-      const Sym2<double> M = field.at(corners[k].x, corners[k].y);
+      const Sym2<double> M = sites_.field.at(corners[k].x, corners[k].y);
       if (!same(M, metric_))
         throw common::FieldError("--algo ls on the field " + field.name + ", taken as constant (one metric, Del_M), gives " +
                                  metric_text(metric_) + " at " + domain.corner_text(0) + " and " +
@@ -144,9 +146,9 @@ class LsRefinement {
     if (p_.size <= 0) return false;
     const Point2<double>& a = diagram_.point(diagram_.triangle(t).v[0]);
     if (p_.filters)
-      if (const auto s = (squared_length(metric_, c, a) - FilterInterval(p_.size) * p_.size).sign(); s && *s != Sign::zero)
+      if (const auto s = (squared_length(size_metric_, c, a) - FilterInterval(p_.size) * p_.size).sign(); s && *s != Sign::zero)
         return *s == Sign::positive;
-    return squared_length(metric_, diagram_.circumcentre<Rational>(t), a) > size2_;
+    return squared_length(size_metric_, diagram_.circumcentre<Rational>(t), a) > size2_;
   }
   bool vertex_in_domain(int t, const Point2<FilterInterval>& c) const {
     if (p_.filters)
@@ -244,7 +246,8 @@ class LsRefinement {
   const common::Domain& domain_;
   LsParameters p_;
   common::Sites sites_;
-  Sym2<double> metric_;
+  Sym2<double> metric_;       // the diagram's (M′ with normalized_metric)
+  Sym2<double> size_metric_;  // the field's, for the size rule
   DelaunayInMetric diagram_;
   double s2_;
   Theorem11Conditions t11_;

@@ -1,5 +1,6 @@
 #include "refiners/ls/ls_varying.hpp"
 
+#include "fields/normalized.hpp"
 #include "predicates/angle.hpp"
 #include "predicates/orientation.hpp"
 #include "refiners/common/exact_split.hpp"
@@ -43,13 +44,14 @@ class LsVaryingRefinement {
   LsVaryingRefinement(const common::Domain& domain, const fields::MetricField& field, const LsParameters& p)
       : domain_(domain),
         p_(p),
-        sites_(domain, field),
+        sites_(domain, p.normalized_metric ? fields::normalized(field) : field),
+        size_field_(field),
         diagram_(domain.bounding_box(), std::ldexp(std::max(domain.bounding_box().x1 - domain.bounding_box().x0,
                                                             domain.bounding_box().y1 - domain.bounding_box().y0), -40)),
         s2_(sin2_above(p.theta_bound)) {
     const auto& corners = domain.corners();
     std::vector<Sym2<double>> metrics;
-    for (const auto& c : corners) metrics.push_back(field.at(c.x, c.y));
+    for (const auto& c : corners) metrics.push_back(sites_.field.at(c.x, c.y));
     t11_ = theorem11_conditions(domain, metrics, p.theta_bound);
     for (std::size_t k = 0; k < corners.size(); ++k) add_site(corners[k], metrics[k]);
     for (std::size_t k = 0; k < corners.size(); ++k) subsegments_.add(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()), static_cast<int>(k));
@@ -193,8 +195,12 @@ class LsVaryingRefinement {
         if (!predicates::angle_at_least_arcsin(t[static_cast<std::size_t>((i + 2) % 3)], t[static_cast<std::size_t>(i)],
                                                t[static_cast<std::size_t>((i + 1) % 3)], M, s2_))
           return Rule::poor_angle;
-    if (p_.size > 0) {
-      const MetricSite a = site(v.sites[0]);
+    // Too large: d_p(q) > size in the field's metric M_p. The three sites' distances are equal in
+    // the diagram's metrics; with M′ they differ in M, and each is judged.
+    const int judged = p_.size <= 0 ? 0 : p_.normalized_metric ? 3 : 1;
+    for (int k = 0; k < judged; ++k) {
+      const std::size_t u = static_cast<std::size_t>(v.sites[static_cast<std::size_t>(k)]);
+      const MetricSite a{sites_.points[u], size_metrics_[u]};
       const auto large = common::sign_at<1>({&P}, [&](const auto& X, auto of) {
         using T = std::decay_t<decltype(X[0].x)>;
         return common::distance2(common::lift<T>(a, of), X[0].x, X[0].y) - of(p_.size) * of(p_.size);
@@ -329,6 +335,7 @@ class LsVaryingRefinement {
 
   void add_site(const Point2<double>& q, const Sym2<double>& M) {
     sites_.add(q, M);
+    size_metrics_.push_back(p_.normalized_metric ? size_field_.at(q.x, q.y) : M);
     sites_.grow_grid();
     diagram_.insert({q, M});
     if (diagram_.full()) {
@@ -368,7 +375,9 @@ class LsVaryingRefinement {
 
   const common::Domain& domain_;
   LsParameters p_;
-  common::Sites sites_;
+  common::Sites sites_;                     // with the diagram's metrics (M′ with normalized_metric)
+  fields::MetricField size_field_;           // the field, for the size rule
+  std::vector<Sym2<double>> size_metrics_;  // the field's metric at each site
   common::VertexSubdivision diagram_;
   double s2_;
   Theorem11Conditions t11_;
