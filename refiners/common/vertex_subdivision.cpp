@@ -25,6 +25,25 @@ FI squared_distances(const MetricSite& u, const Box& b) {
   return at_m + (linear + linear) + quadratic;
 }
 
+// Holds d_u(p)² − d_v(p)² for every p in b, in the centred form about b's midpoint m:
+// D(m + δ) = D(m) + 2 (M_u(m − u) − M_v(m − v))ᵀδ + δᵀ(M_u − M_v)δ. For two sites near each other
+// with nearly equal metrics, seen from afar, its terms in δ are far smaller than each distance's:
+// a cluster of sites (refinement running into a corner) has cells that are long thin wedges away
+// from it, which the distances one by one could only tell apart in boxes as thin as the wedges
+// (a million boxes for 39 sites on the L with M′), the difference in boxes as wide as their length.
+FI squared_distance_difference(const MetricSite& u, const MetricSite& v, const Box& b) {
+  const FI mx = FI(b.x0, b.x1).midpoint(), my = FI(b.y0, b.y1).midpoint();
+  const FI dx = FI(b.x0, b.x1) - mx, dy = FI(b.y0, b.y1) - my;
+  const FI ux = mx - u.p.x, uy = my - u.p.y, vx = mx - v.p.x, vy = my - v.p.y;
+  const FI gux = FI(u.M.m11) * ux + FI(u.M.m12) * uy, guy = FI(u.M.m12) * ux + FI(u.M.m22) * uy;
+  const FI gvx = FI(v.M.m11) * vx + FI(v.M.m12) * vy, gvy = FI(v.M.m12) * vx + FI(v.M.m22) * vy;
+  const FI at_m = (ux * gux + uy * guy) - (vx * gvx + vy * gvy);
+  const FI linear = (gux - gvx) * dx + (guy - gvy) * dy;
+  const FI quadratic = (FI(u.M.m11) - FI(v.M.m11)) * sqr(dx) + (FI(u.M.m12) - FI(v.M.m12)) * (FI(2) * (dx * dy)) +
+                       (FI(u.M.m22) - FI(v.M.m22)) * sqr(dy);
+  return at_m + (linear + linear) + quadratic;
+}
+
 // The least upper bound of the candidates' squared distances over b (a NaN bound counts as ∞).
 double least_greatest(const std::vector<MetricSite>& sites, const std::vector<int>& among, const Box& b) {
   double U = INFINITY;
@@ -70,11 +89,34 @@ VertexSubdivision::VertexSubdivision(const Box& R, double min_width) : min_width
 std::vector<int> VertexSubdivision::candidates_in(const Box& b, const std::vector<int>& from, int extra) const {
   std::vector<int> all = from;
   if (extra >= 0) all.push_back(extra);
-  const double U = least_greatest(sites_, all, b);
+  std::vector<FI> range(all.size());
+  double U = INFINITY;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    range[i] = squared_distances(sites_[static_cast<std::size_t>(all[i])], b);
+    if (range[i].hi < U) U = range[i].hi;  // a NaN bound counts as ∞
+  }
   std::vector<int> kept;
-  for (int u : all)
-    if (!(squared_distances(sites_[static_cast<std::size_t>(u)], b).lo > U)) kept.push_back(u);
-  return kept;
+  std::vector<double> centre;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!(range[i].lo > U)) kept.push_back(all[i]), centre.push_back(range[i].lo / 2 + range[i].hi / 2);
+  if (kept.size() <= 3) return kept;
+  // Then against the two sites likeliest nearest in b (least midpoint of their ranges): u is left
+  // out when one of them is strictly nearer everywhere in b. The nearest site at a point is never
+  // left out, since no site is strictly nearer there.
+  std::array<std::size_t, 2> best{0, 1};
+  if (centre[1] < centre[0]) std::swap(best[0], best[1]);
+  for (std::size_t i = 2; i < kept.size(); ++i)
+    if (centre[i] < centre[best[0]]) best = {i, best[0]};
+    else if (centre[i] < centre[best[1]]) best[1] = i;
+  std::vector<int> left;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    const MetricSite& u = sites_[static_cast<std::size_t>(kept[i])];
+    const bool farther = std::any_of(best.begin(), best.end(), [&](std::size_t j) {
+      return j != i && squared_distance_difference(u, sites_[static_cast<std::size_t>(kept[j])], b).lo > 0;
+    });
+    if (!farther) left.push_back(kept[i]);
+  }
+  return left;
 }
 
 int VertexSubdivision::intern(const std::array<int, 3>& trio, const VertexBox& box) {
@@ -176,6 +218,7 @@ void VertexSubdivision::update(int n, int v) {
 void VertexSubdivision::insert(const MetricSite& s) {
   created_.clear();
   sites_.push_back(s);
+  insertion_start_ = nodes_.size();
   update(0, static_cast<int>(sites_.size()) - 1);
 }
 

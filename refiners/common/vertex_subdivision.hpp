@@ -3,7 +3,9 @@
 // where three sites are equally near and no site is nearer), in a box R, kept as sites are added.
 // A quadtree over R whose every node lists the sites that can be nearest somewhere in its box
 // (its candidates: a site is left out when its least squared distance over the box, bounded below
-// in FilterInterval, exceeds another site's greatest, bounded above). A leaf with three candidates
+// in FilterInterval, exceeds another site's greatest, bounded above, or when the difference of the
+// two squared distances is positive over the box, bounded in the centred form against the two
+// sites likeliest nearest there). A leaf with three candidates
 // holds exactly the points equidistant from them (voronoi_vertex.hpp's certified boxes): no other
 // site can be as near anywhere in it, so each is a vertex of D, of degree 3. A node with more is
 // split, down to `min_width`; a leaf that still has four or more is unresolved (a vertex of degree
@@ -33,9 +35,10 @@ class VertexSubdivision {
   };
 
   // R: where vertices are kept; leaves are not split below min_width (> 0), nor once the tree
-  // has 2²⁰ + 2¹¹ nodes per site (then the leaf is unresolved: a bound on memory and time, which a
-  // curve of ties, such as two sites at one point with different metrics, would otherwise exhaust;
-  // refinement needs about 180 nodes per site).
+  // has 2²⁰ + 2¹¹ nodes per site or an insertion has made 2¹⁶ (then the leaf is unresolved: a
+  // bound on memory and time, which a curve of ties, such as two sites at one point with different
+  // metrics, would otherwise exhaust; refinement needs about 180 nodes per site, and no insertion
+  // of the shock and radial runs of docs/refiners.md made 2,000).
   VertexSubdivision(const Box& R, double min_width);
 
   // Adds site s as the next id (0, 1, 2, …).
@@ -52,8 +55,8 @@ class VertexSubdivision {
   // The leaves where D could not be resolved (see above); empty when every vertex in R is known.
   std::vector<Box> unresolved() const;
   bool resolved() const { return unresolved_leaves_ == 0; }
-  // Whether a leaf was left unsplit because the tree reached max_nodes.
-  bool full() const { return nodes_.size() + 4 > max_nodes(); }
+  // Whether a leaf was left unsplit because the tree reached its bound on nodes (above).
+  bool full() const { return nodes_.size() + 4 > max_nodes() || nodes_.size() + 4 > insertion_start_ + max_nodes_per_insertion; }
 
  private:
   struct Node {
@@ -75,6 +78,7 @@ class VertexSubdivision {
   int intern(const std::array<int, 3>& trio, const VertexBox& box);
 
   std::size_t max_nodes() const { return (std::size_t(1) << 20) + (std::size_t(1) << 11) * sites_.size(); }
+  static constexpr std::size_t max_nodes_per_insertion = std::size_t(1) << 16;
 
   double min_width_;
   std::vector<MetricSite> sites_;
@@ -83,6 +87,7 @@ class VertexSubdivision {
   std::map<std::array<int, 3>, std::vector<int>> by_trio_;  // live vertices
   std::vector<int> created_;
   int unresolved_leaves_ = 0;
+  std::size_t insertion_start_ = 0;  // nodes before the last insertion
 };
 
 }  // namespace anisocert::refiners::common
