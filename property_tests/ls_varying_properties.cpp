@@ -99,3 +99,29 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
     }
   for (const auto& [u, v] : r.mesh.segments) RC_ASSERT(edges.count(std::minmax(u, v)) == 1u);
 }
+
+// The filters only speed up (DESIGN.md): with LsParameters::filters off, encroachment along
+// subsegments (segment_quadratics.hpp's `reaches`) is decided in rationals alone, and the run
+// must make the same insertions and end with the same mesh, double for double.
+RC_GTEST_PROP(LS_Filters, VaryingFieldFilteredRunIsTheExactRun, ()) {
+  const gen::SmoothField f = gen::random_smooth_field();
+  const auto corners = gen::random_domain(*rc::gen::arbitrary<bool>(), false);
+  refiners::ls::LsParameters p;
+  p.theta_bound = *rc::gen::elementOf(std::vector<double>{5, 10, 15, 20});
+  p.size = *rc::gen::elementOf(std::vector<double>{0, 1, 2, 4});
+  p.normalized_metric = *rc::gen::arbitrary<bool>();
+  p.max_vertices = 120, p.max_seconds = 1e9;
+  const refiners::common::Domain domain(corners);
+  const auto filtered = refiners::ls::refine_ls(domain, f.field(), p);
+  p.filters = false;
+  const auto exact = refiners::ls::refine_ls(domain, f.field(), p);
+  RC_TAG(filtered.consistent ? "finished" : "stopped");
+  RC_ASSERT(filtered.stop_reason == exact.stop_reason);
+  RC_ASSERT(filtered.mesh.sites.size() == exact.mesh.sites.size());
+  for (std::size_t k = 0; k < filtered.mesh.sites.size(); ++k) {
+    RC_ASSERT(filtered.mesh.sites[k].x == exact.mesh.sites[k].x);
+    RC_ASSERT(filtered.mesh.sites[k].y == exact.mesh.sites[k].y);
+  }
+  RC_ASSERT(filtered.mesh.triangles == exact.mesh.triangles);
+  RC_ASSERT(filtered.mesh.segments == exact.mesh.segments);
+}

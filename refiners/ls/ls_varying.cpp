@@ -248,14 +248,14 @@ class LsVaryingRefinement {
     const double length2 = (b.p.x - a.p.x) * (b.p.x - a.p.x) + (b.p.y - a.p.y) * (b.p.y - a.p.y);
     if (eigenvalue_bounds(Q.M).first * (gx * gx + gy * gy) > 2 * std::max(eigenvalue_bounds(a.M).second, eigenvalue_bounds(b.M).second) * length2)
       return false;
-    return ls::reaches(a, b, Q);
+    return ls::reaches(a, b, Q, p_.filters);
   }
 
   std::vector<int> encroachers(int s) const {
     const auto [a, b] = subsegments_.ends(s);
     std::vector<int> by;
     for (int w : diagram_.candidates_near(segment_box(s)))
-      if (w != a && w != b && ls::reaches(site(a), site(b), site(w))) by.push_back(w);
+      if (w != a && w != b && ls::reaches(site(a), site(b), site(w), p_.filters)) by.push_back(w);
     return by;
   }
 

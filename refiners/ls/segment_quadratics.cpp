@@ -1,5 +1,6 @@
 #include "refiners/ls/segment_quadratics.hpp"
 
+#include "numbers/filter_interval.hpp"
 #include "predicates/sqrt_sign.hpp"
 
 #include <algorithm>
@@ -8,21 +9,46 @@
 namespace anisocert::refiners::ls {
 namespace {
 
-// a t² + b t + c.
+// a t² + b t + c, in rationals (exact) or FilterInterval (the filter).
+template <class T>
 struct Quadratic {
-  Rational a, b, c;
+  T a, b, c;
   Quadratic operator-(const Quadratic& o) const { return {a - o.a, b - o.b, c - o.c}; }
-  double at(double t) const { return (a.convert_to<double>() * t + b.convert_to<double>()) * t + c.convert_to<double>(); }
+  double at(double t) const { return (a.template convert_to<double>() * t + b.template convert_to<double>()) * t + c.template convert_to<double>(); }
 };
 
 // q_u(t) along ab.
-Quadratic along(const MetricSite& u, const Point2<double>& a, const Point2<double>& b) {
-  const Rational dx = Rational(b.x) - Rational(a.x), dy = Rational(b.y) - Rational(a.y);
-  const Rational ex = Rational(a.x) - Rational(u.p.x), ey = Rational(a.y) - Rational(u.p.y);
-  const Rational m11(u.M.m11), m12(u.M.m12), m22(u.M.m22);
-  const Rational mdx = m11 * dx + m12 * dy, mdy = m12 * dx + m22 * dy;  // M_u (b − a)
-  const Rational mex = m11 * ex + m12 * ey, mey = m12 * ex + m22 * ey;  // M_u (a − u)
-  return {dx * mdx + dy * mdy, 2 * (ex * mdx + ey * mdy), ex * mex + ey * mey};
+template <class T>
+Quadratic<T> along(const MetricSite& u, const Point2<double>& a, const Point2<double>& b) {
+  const T dx = T(b.x) - T(a.x), dy = T(b.y) - T(a.y);
+  const T ex = T(a.x) - T(u.p.x), ey = T(a.y) - T(u.p.y);
+  const T m11(u.M.m11), m12(u.M.m12), m22(u.M.m22);
+  const T mdx = m11 * dx + m12 * dy, mdy = m12 * dx + m22 * dy;  // M_u (b − a)
+  const T mex = m11 * ex + m12 * ey, mey = m12 * ex + m22 * ey;  // M_u (a − u)
+  return {dx * mdx + dy * mdy, T(2) * (ex * mdx + ey * mdy), ex * mex + ey * mey};
+}
+
+// f over [t0, t1] in the centred form about the midpoint m: f(m) + f′(m)δ + aδ², |δ| ≤ h.
+FilterInterval over(const Quadratic<FilterInterval>& f, double t0, double t1) {
+  const FilterInterval m = FilterInterval(t0, t1).midpoint(), delta = FilterInterval(t0, t1) - m;
+  return (f.a * m + f.b) * m + f.c + (FilterInterval(2) * f.a * m + f.b) * delta + f.a * sqr(delta);
+}
+
+// reaches() in FilterInterval: false when on every piece of [0, 1] (up to 64) f₁ > 0 or f₂ > 0;
+// true when both are negative at a piece's midpoint; nothing when that does not decide.
+std::optional<bool> reaches_filtered(const Quadratic<FilterInterval>& f1, const Quadratic<FilterInterval>& f2) {
+  std::vector<std::pair<double, double>> pieces{{0, 1}};
+  for (int visited = 0; !pieces.empty(); ++visited) {
+    if (visited == 64) return std::nullopt;
+    const auto [t0, t1] = pieces.back();
+    pieces.pop_back();
+    if (over(f1, t0, t1).lo > 0 || over(f2, t0, t1).lo > 0) continue;
+    const double m = t0 + (t1 - t0) / 2;
+    if (over(f1, m, m).hi < 0 && over(f2, m, m).hi < 0) return true;
+    pieces.emplace_back(t0, m);
+    pieces.emplace_back(m, t1);
+  }
+  return false;
 }
 
 // t = p + q√D.
@@ -30,13 +56,13 @@ struct Root {
   Rational p, q, D;
 };
 
-Sign sign_at(const Quadratic& f, const Root& t) {
+Sign sign_at(const Quadratic<Rational>& f, const Root& t) {
   const Rational A = f.a * (t.p * t.p + t.q * t.q * t.D) + f.b * t.p + f.c, B = (f.a * 2 * t.p + f.b) * t.q;
   return predicates::sign_of_root_sum(A, B, t.D);
 }
 
 // The real roots of f in [0, 1] (f not identically zero).
-void add_roots_in_unit(const Quadratic& f, std::vector<Root>& out) {
+void add_roots_in_unit(const Quadratic<Rational>& f, std::vector<Root>& out) {
   if (f.a == 0) {
     if (f.b == 0) return;
     const Rational t = -f.c / f.b;
@@ -55,8 +81,13 @@ void add_roots_in_unit(const Quadratic& f, std::vector<Root>& out) {
 
 // The set {t ∈ [0, 1] : f₁(t) ≤ 0, f₂(t) ≤ 0} is a union of closed intervals; each begins at 0 or
 // where f₁ or f₂ vanishes. So it is empty unless one of those points is in it.
-bool reaches(const MetricSite& a, const MetricSite& b, const MetricSite& w) {
-  const Quadratic qw = along(w, a.p, b.p), f1 = qw - along(a, a.p, b.p), f2 = qw - along(b, a.p, b.p);
+bool reaches(const MetricSite& a, const MetricSite& b, const MetricSite& w, bool filter) {
+  if (filter) {
+    using FI = FilterInterval;
+    const Quadratic<FI> qw = along<FI>(w, a.p, b.p);
+    if (const auto decided = reaches_filtered(qw - along<FI>(a, a.p, b.p), qw - along<FI>(b, a.p, b.p))) return *decided;
+  }
+  const Quadratic<Rational> qw = along<Rational>(w, a.p, b.p), f1 = qw - along<Rational>(a, a.p, b.p), f2 = qw - along<Rational>(b, a.p, b.p);
   std::vector<Root> at{{0, 0, 0}, {1, 0, 0}};
   add_roots_in_unit(f1, at);
   add_roots_in_unit(f2, at);
@@ -64,7 +95,7 @@ bool reaches(const MetricSite& a, const MetricSite& b, const MetricSite& w) {
 }
 
 double midpoint_parameter(const MetricSite& a, const MetricSite& b) {
-  const Quadratic g = along(a, a.p, b.p) - along(b, a.p, b.p);  // −|b − a|²_b at 0, |b − a|²_a at 1
+  const Quadratic<Rational> g = along<Rational>(a, a.p, b.p) - along<Rational>(b, a.p, b.p);  // −|b − a|²_b at 0, |b − a|²_a at 1
   double lo = 0, hi = 1;
   for (int i = 0; i < 64 && lo < hi; ++i) {
     const double mid = lo + (hi - lo) / 2;
@@ -76,11 +107,11 @@ double midpoint_parameter(const MetricSite& a, const MetricSite& b) {
 
 std::vector<std::pair<double, double>> nearest_ranges(const Point2<double>& a, const Point2<double>& b, const MetricSite& w,
                                                       const std::vector<MetricSite>& others) {
-  const Quadratic qw = along(w, a, b);
-  std::vector<Quadratic> f;
+  const Quadratic<Rational> qw = along<Rational>(w, a, b);
+  std::vector<Quadratic<Rational>> f;
   std::vector<double> cuts{0, 1};
   for (const MetricSite& u : others) {
-    f.push_back(qw - along(u, a, b));
+    f.push_back(qw - along<Rational>(u, a, b));
     const double A = f.back().a.convert_to<double>(), B = f.back().b.convert_to<double>(), C = f.back().c.convert_to<double>();
     if (A == 0) {
       if (B != 0) cuts.push_back(-C / B);
@@ -94,7 +125,7 @@ std::vector<std::pair<double, double>> nearest_ranges(const Point2<double>& a, c
   std::vector<std::pair<double, double>> ranges;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     const double mid = cuts[i] + (cuts[i + 1] - cuts[i]) / 2;
-    if (!std::all_of(f.begin(), f.end(), [mid](const Quadratic& g) { return g.at(mid) <= 0; })) continue;
+    if (!std::all_of(f.begin(), f.end(), [mid](const Quadratic<Rational>& g) { return g.at(mid) <= 0; })) continue;
     if (!ranges.empty() && ranges.back().second == cuts[i]) ranges.back().second = cuts[i + 1];
     else ranges.emplace_back(cuts[i], cuts[i + 1]);
   }

@@ -18,8 +18,11 @@ using predicates::Point2;
 
 // w's closed cell among a, b and w meets s: q_w(t) ≤ q_a(t) and q_w(t) ≤ q_b(t) for some t in
 // [0, 1]. When no other site is nearer than a or b anywhere on s (no subsegment is encroached), this
-// is whether w's cell, were w inserted, would meet s. Exact.
-bool reaches(const MetricSite& a, const MetricSite& b, const MetricSite& w);
+// is whether w's cell, were w inserted, would meet s. Exact: with `filter`, q_w − q_a and q_w − q_b
+// are bounded in FilterInterval on pieces of [0, 1] first (most sites are far from s, and the
+// answer is then decided there), and in rationals only when that does not decide
+// (tests/refiner_ls_test.cpp compares the two).
+bool reaches(const MetricSite& a, const MetricSite& b, const MetricSite& w, bool filter = true);
 
 // The t in (0, 1) with q_a(t) = q_b(t), LS §9's "midpoint" d_a(z) = d_b(z), in doubles.
 double midpoint_parameter(const MetricSite& a, const MetricSite& b);
