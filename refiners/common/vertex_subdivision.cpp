@@ -44,16 +44,6 @@ FI squared_distance_difference(const MetricSite& u, const MetricSite& v, const B
   return at_m + (linear + linear) + quadratic;
 }
 
-// The least upper bound of the candidates' squared distances over b (a NaN bound counts as ∞).
-double least_greatest(const std::vector<MetricSite>& sites, const std::vector<int>& among, const Box& b) {
-  double U = INFINITY;
-  for (int u : among) {
-    const double hi = squared_distances(sites[static_cast<std::size_t>(u)], b).hi;
-    if (hi < U) U = hi;
-  }
-  return U;
-}
-
 Box2<FI> interval_box(const Box& b) { return {FI(b.x0, b.x1), FI(b.y0, b.y1)}; }
 
 // Whether the vertex lies in the closed box b (a search may certify a point just beyond its box,
@@ -86,11 +76,11 @@ VertexSubdivision::VertexSubdivision(const Box& R, double min_width) : min_width
   nodes_.push_back({R, {}, INFINITY, -1, {}, false});
 }
 
-std::vector<int> VertexSubdivision::candidates_in(const Box& b, const std::vector<int>& from, int extra) const {
+std::vector<int> VertexSubdivision::candidates_in(const Box& b, const std::vector<int>& from, int extra, double& U) const {
   std::vector<int> all = from;
   if (extra >= 0) all.push_back(extra);
   std::vector<FI> range(all.size());
-  double U = INFINITY;
+  U = INFINITY;
   for (std::size_t i = 0; i < all.size(); ++i) {
     range[i] = squared_distances(sites_[static_cast<std::size_t>(all[i])], b);
     if (range[i].hi < U) U = range[i].hi;  // a NaN bound counts as ∞
@@ -174,8 +164,8 @@ void VertexSubdivision::settle(int n) {
   const std::array<Box, 4> quadrants{Box{b.x0, mx, b.y0, my}, Box{mx, b.x1, b.y0, my}, Box{b.x0, mx, my, b.y1}, Box{mx, b.x1, my, b.y1}};
   for (int i = 0; i < 4; ++i) {
     const auto q = quadrants[static_cast<std::size_t>(i)];
-    std::vector<int> kept = candidates_in(q, nodes_[static_cast<std::size_t>(n)].candidates, -1);
-    const double U = least_greatest(sites_, kept, q);
+    double U;
+    std::vector<int> kept = candidates_in(q, nodes_[static_cast<std::size_t>(n)].candidates, -1, U);
     nodes_[static_cast<std::size_t>(c + i)] = {q, std::move(kept), U, -1, {}, false};
   }
   nodes_[static_cast<std::size_t>(n)].child = c;
@@ -200,7 +190,10 @@ void VertexSubdivision::update(int n, int v) {
     for (int i = 0; i < 4; ++i) update(first + i, v);
     return;
   }
-  std::vector<int> c = candidates_in(b, nodes_[static_cast<std::size_t>(n)].candidates, v);
+  double U;
+  std::vector<int> c = candidates_in(b, nodes_[static_cast<std::size_t>(n)].candidates, v, U);
+  // v left out and every old candidate kept: the leaf's sites, and so its vertices, are as they were.
+  if (c.size() == nodes_[static_cast<std::size_t>(n)].candidates.size() && std::find(c.begin(), c.end(), v) == c.end()) return;
   // Found again before the old ones are let go, so that a vertex that stays keeps its id.
   std::vector<int> held;
   release(n, held);

@@ -68,8 +68,9 @@ class VertexSubdivision {
     bool unresolved = false;
   };
 
-  // The sites of `from` (and `extra`, when ≥ 0) that can be nearest somewhere in b.
-  std::vector<int> candidates_in(const Box& b, const std::vector<int>& from, int extra) const;
+  // The sites of `from` (and `extra`, when ≥ 0) that can be nearest somewhere in b; U: the least
+  // upper bound of their squared distances over b (a NaN bound counts as ∞).
+  std::vector<int> candidates_in(const Box& b, const std::vector<int>& from, int extra, double& U) const;
   // Makes a node whose candidates are set a leaf with its vertices, or splits it.
   void settle(int node);
   void update(int node, int site);
