@@ -44,6 +44,11 @@ FI squared_distance_difference(const MetricSite& u, const MetricSite& v, const B
   return at_m + (linear + linear) + quadratic;
 }
 
+// Where a node is split, as a fraction of its width: not ½, so that the split lines are not the
+// simple dyadic lines (x = ¾, …) on which the vertices of symmetric sites lie. A vertex on a
+// leaf's side cannot be placed in or out of the leaf by boxes, and the leaf stays unresolved.
+constexpr double split_ratio = 0.5 + 0x1p-6 + 0x1p-11 + 0x1p-19;
+
 Box2<FI> interval_box(const Box& b) { return {FI(b.x0, b.x1), FI(b.y0, b.y1)}; }
 
 // Whether the vertex lies in the closed box b (a search may certify a point just beyond its box,
@@ -160,7 +165,7 @@ void VertexSubdivision::settle(int n) {
   }
   const int c = static_cast<int>(nodes_.size());
   nodes_.resize(nodes_.size() + 4);
-  const double mx = b.x0 + (b.x1 - b.x0) / 2, my = b.y0 + (b.y1 - b.y0) / 2;
+  const double mx = b.x0 + (b.x1 - b.x0) * split_ratio, my = b.y0 + (b.y1 - b.y0) * split_ratio;
   const std::array<Box, 4> quadrants{Box{b.x0, mx, b.y0, my}, Box{mx, b.x1, b.y0, my}, Box{b.x0, mx, my, b.y1}, Box{mx, b.x1, my, b.y1}};
   for (int i = 0; i < 4; ++i) {
     const auto q = quadrants[static_cast<std::size_t>(i)];
@@ -247,3 +252,4 @@ std::vector<Box> VertexSubdivision::unresolved() const {
 }
 
 }  // namespace anisocert::refiners::common
+
