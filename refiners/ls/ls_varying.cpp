@@ -271,9 +271,20 @@ class LsVaryingRefinement {
     const auto on_s = [&](const Point2<double>& z) {
       return Point2<Rational>{Rational(z.x), Rational(z.y)};
     };
-    // Within 1/64 of the subsegment of the wanted point, the coarsest dyadic point (coarse_split_point).
+    // Within 1/64 of the subsegment of the wanted point, the coarsest dyadic point of the edge's
+    // grid (coarse_split_point on the edge, its parameter u = u_a + t(u_b − u_a)): every site on
+    // an edge is such a point, so a subsegment holds grid points down to 2⁻⁶⁰ of its edge. On the
+    // subsegment's own grid a + j2⁻ᵏ(b − a) they ran out: after splits at arbitrary points, b − a
+    // may be an odd number of a's ulps, and then no point of that grid is a double.
     const Rational slack(1, 64);
-    std::optional<Point2<double>> z = coarse_split_point(pa, pb, 0, 1, Rational(tm), slack);
+    const auto [c0, c1] = subsegments_.edge_ends(domain_, s);
+    const Rational ua = edge_parameter(c0, c1, pa), ub = edge_parameter(c0, c1, pb);
+    const auto on_edge = [&](const Rational& lo, const Rational& hi, const Rational& target, const Rational& within) {
+      const Rational L = ub - ua;
+      const Rational e0 = ua + lo * L, e1 = ua + hi * L;
+      return coarse_split_point(c0, c1, std::min(e0, e1), std::max(e0, e1), ua + target * L, within * abs(L));
+    };
+    std::optional<Point2<double>> z = on_edge(0, 1, Rational(tm), slack);
     if (z && !std::any_of(in.begin(), in.end(), [&](const MetricSite& w) { return nearest_at(on_s(*z), w, near); })) z.reset();
     for (std::size_t i = 0; i < in.size() && !z; ++i) {
       std::optional<std::pair<double, double>> best;
@@ -285,7 +296,7 @@ class LsVaryingRefinement {
       const double inset = (best->second - best->first) * 0x1p-20;
       const double lo = best->first + inset, hi = best->second - inset;
       if (!(lo <= hi)) continue;
-      z = coarse_split_point(pa, pb, Rational(lo), Rational(hi), Rational(std::clamp(tm, lo, hi)), slack);
+      z = on_edge(Rational(lo), Rational(hi), Rational(std::clamp(tm, lo, hi)), slack);
       if (z && !nearest_at(on_s(*z), in[i], near)) z.reset();
     }
     if (!z) {

@@ -39,6 +39,18 @@ int Subsegments::split(int s, int k) {
   return add(k, b, edge_[static_cast<std::size_t>(s)]);
 }
 
+std::pair<Point2<double>, Point2<double>> Subsegments::edge_ends(const common::Domain& domain, int s) const {
+  const auto& corners = domain.corners();
+  const std::size_t e = static_cast<std::size_t>(edge_[static_cast<std::size_t>(s)]);
+  return {corners[e], corners[(e + 1) % corners.size()]};
+}
+
+Rational edge_parameter(const Point2<double>& c0, const Point2<double>& c1, const Point2<double>& p) {
+  // Along the coordinate in which the edge is longer (never 0: the corners differ).
+  if (std::abs(c1.x - c0.x) >= std::abs(c1.y - c0.y)) return (Rational(p.x) - Rational(c0.x)) / (Rational(c1.x) - Rational(c0.x));
+  return (Rational(p.y) - Rational(c0.y)) / (Rational(c1.y) - Rational(c0.y));
+}
+
 std::string Subsegments::too_fine(const common::Domain& domain, const Theorem11Conditions& t11, int s, const Point2<double>& pa,
                                   const Point2<double>& pb, const Point2<double>& z) const {
   const int e = edge_[static_cast<std::size_t>(s)];

@@ -28,6 +28,8 @@ class Subsegments {
   std::size_t queued() const { return queue_.size(); }
   const std::pair<int, int>& ends(int s) const { return ends_[static_cast<std::size_t>(s)]; }
   const std::vector<std::pair<int, int>>& all() const { return ends_; }
+  // The corners of Ω that the edge of s runs between.
+  std::pair<predicates::Point2<double>, predicates::Point2<double>> edge_ends(const common::Domain& domain, int s) const;
 
   // Why subsegment s from pa to pb must not be split at z, or empty: a piece would be below 2⁻³⁰ of
   // its edge. Splits that run into a corner (LS Theorem 11's separation failing there) would go on
@@ -41,5 +43,8 @@ class Subsegments {
   std::vector<bool> queued_;
   std::deque<int> queue_;
 };
+
+// The parameter u of the point p of the segment c0c1, p = c0 + u(c1 − c0), exactly (p must lie on it).
+Rational edge_parameter(const predicates::Point2<double>& c0, const predicates::Point2<double>& c1, const predicates::Point2<double>& p);
 
 }  // namespace anisocert::refiners::ls
