@@ -277,7 +277,8 @@ class LsVaryingRefinement {
     // subsegment's own grid a + j2⁻ᵏ(b − a) they ran out: after splits at arbitrary points, b − a
     // may be an odd number of a's ulps, and then no point of that grid is a double.
     const Rational slack(1, 64);
-    const auto [c0, c1] = subsegments_.edge_ends(domain_, s);
+    const auto edge = subsegments_.edge_ends(domain_, s);
+    const Point2<double> c0 = edge.first, c1 = edge.second;  // named, not bound: clang 14 cannot capture bindings
     const Rational ua = edge_parameter(c0, c1, pa), ub = edge_parameter(c0, c1, pb);
     const auto on_edge = [&](const Rational& lo, const Rational& hi, const Rational& target, const Rational& within) {
       const Rational L = ub - ua;
