@@ -22,6 +22,7 @@
 #include "predicates/angle.hpp"
 #include "property_tests/generators/domains.hpp"
 #include "property_tests/generators/metrics.hpp"
+#include "property_tests/ls_same_run.hpp"
 #include "property_tests/oracle_certified.hpp"
 #include "refiners/ls/ls_refiner.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
@@ -263,14 +264,7 @@ RC_GTEST_PROP(LS_Filters, FilteredRunIsTheExactRun, ()) {
   p.filters = false;
   const auto exact = refiners::ls::refine_ls(domain, field, p);
   RC_TAG(filtered.mesh.sites.size() < 50 ? "under 50 sites" : "50 sites or more");
-  RC_ASSERT(filtered.stop_reason == exact.stop_reason);
-  RC_ASSERT(filtered.mesh.sites.size() == exact.mesh.sites.size());
-  for (std::size_t k = 0; k < filtered.mesh.sites.size(); ++k) {
-    RC_ASSERT(filtered.mesh.sites[k].x == exact.mesh.sites[k].x);
-    RC_ASSERT(filtered.mesh.sites[k].y == exact.mesh.sites[k].y);
-  }
-  RC_ASSERT(filtered.mesh.triangles == exact.mesh.triangles);
-  RC_ASSERT(filtered.mesh.segments == exact.mesh.segments);
+  gen::assert_same_run(filtered, exact);
 }
 
 RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {

@@ -15,6 +15,7 @@
 #include "geometry/mesh.hpp"
 #include "predicates/angle.hpp"
 #include "oracle/diagram/input.hpp"
+#include "property_tests/ls_same_run.hpp"
 #include "property_tests/oracle_certified.hpp"
 #include "property_tests/generators/domains.hpp"
 #include "property_tests/generators/fields.hpp"
@@ -116,12 +117,5 @@ RC_GTEST_PROP(LS_Filters, VaryingFieldFilteredRunIsTheExactRun, ()) {
   p.filters = false;
   const auto exact = refiners::ls::refine_ls(domain, f.field(), p);
   RC_TAG(filtered.consistent ? "finished" : "stopped");
-  RC_ASSERT(filtered.stop_reason == exact.stop_reason);
-  RC_ASSERT(filtered.mesh.sites.size() == exact.mesh.sites.size());
-  for (std::size_t k = 0; k < filtered.mesh.sites.size(); ++k) {
-    RC_ASSERT(filtered.mesh.sites[k].x == exact.mesh.sites[k].x);
-    RC_ASSERT(filtered.mesh.sites[k].y == exact.mesh.sites[k].y);
-  }
-  RC_ASSERT(filtered.mesh.triangles == exact.mesh.triangles);
-  RC_ASSERT(filtered.mesh.segments == exact.mesh.segments);
+  gen::assert_same_run(filtered, exact);
 }
