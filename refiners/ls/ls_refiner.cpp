@@ -142,13 +142,20 @@ class LsRefinement {
     return {e.x.convert_to<double>(), e.y.convert_to<double>()};
   }
   // c: a box holding the vertex.
+  // With M′ the circumcentre is equidistant in M′, whose rounded entries are not exactly a multiple
+  // of M: each vertex is judged in M, as ls_varying does.
   bool too_large(int t, const Point2<FilterInterval>& c) const {
     if (p_.size <= 0) return false;
-    const Point2<double>& a = diagram_.point(diagram_.triangle(t).v[0]);
-    if (p_.filters)
-      if (const auto s = (squared_length(size_metric_, c, a) - FilterInterval(p_.size) * p_.size).sign(); s && *s != Sign::zero)
-        return *s == Sign::positive;
-    return squared_length(size_metric_, diagram_.circumcentre<Rational>(t), a) > size2_;
+    for (int k = 0; k < (p_.normalized_metric ? 3 : 1); ++k) {
+      const Point2<double>& a = diagram_.point(diagram_.triangle(t).v[static_cast<std::size_t>(k)]);
+      if (p_.filters)
+        if (const auto s = (squared_length(size_metric_, c, a) - FilterInterval(p_.size) * p_.size).sign(); s && *s != Sign::zero) {
+          if (*s == Sign::positive) return true;
+          continue;
+        }
+      if (squared_length(size_metric_, diagram_.circumcentre<Rational>(t), a) > size2_) return true;
+    }
+    return false;
   }
   bool vertex_in_domain(int t, const Point2<FilterInterval>& c) const {
     if (p_.filters)

@@ -105,7 +105,7 @@ std::optional<Point2<double>> coarse_split_point(const Point2<double>& a, const 
   for (int k = 1; k <= most; ++k) {
     const Integer scale = Integer(1) << k;
     const Rational t(floor_of(std::clamp(target, from, to) * scale + Rational(1, 2)), scale);
-    if (t < from || t > to || t <= 0 || t >= 1) continue;
+    if (t <= from || t >= to || t <= 0 || t >= 1) continue;
     if (const auto z = split_point(a, b, t, t, t)) return z;
   }
   return std::nullopt;

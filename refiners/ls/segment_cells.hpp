@@ -48,8 +48,9 @@ bool outside_diametral_ellipse(const Point2<double>& a, const Point2<double>& b,
 std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
                                           const Rational& target = Rational(1, 2));
 
-// The same with the fewest bits: of the points a + j 2⁻ᵏ (b − a) in z([lo, hi]) within `slack` of
-// `target`, one with the least k. A split far from ½ then leaves subsegments that can be split
+// The same with the fewest bits: of the points a + j 2⁻ᵏ (b − a) strictly between z(lo) and z(hi)
+// within `slack` of `target` (strictly inside the window), one with the least k (an end of the
+// range is a site when the range is a subsegment's). A split far from ½ then leaves subsegments that can be split
 // again exactly (each split at 2⁻ᵏ spends k of the halvings a double allows).
 std::optional<Point2<double>> coarse_split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
                                                  const Rational& target, const Rational& slack);
