@@ -287,12 +287,11 @@ class LsVaryingRefinement {
     };
     std::optional<Point2<double>> z = on_edge(0, 1, Rational(tm), slack);
     if (z && !std::any_of(in.begin(), in.end(), [&](const MetricSite& w) { return nearest_at(on_s(*z), w, near); })) z.reset();
+    const auto gap = [tm](const std::pair<double, double>& r) { return tm < r.first ? r.first - tm : tm > r.second ? tm - r.second : 0; };
     for (std::size_t i = 0; i < in.size() && !z; ++i) {
       std::optional<std::pair<double, double>> best;
-      for (const auto& r : nearest_ranges(pa, pb, in[i], near)) {
-        const double gap = tm < r.first ? r.first - tm : tm > r.second ? tm - r.second : 0;
-        if (!best || gap < (tm < best->first ? best->first - tm : tm > best->second ? tm - best->second : 0)) best = r;
-      }
+      for (const auto& r : nearest_ranges(pa, pb, in[i], near))
+        if (!best || gap(r) < gap(*best)) best = r;
       if (!best) continue;
       const double inset = (best->second - best->first) * 0x1p-20;
       const double lo = best->first + inset, hi = best->second - inset;
