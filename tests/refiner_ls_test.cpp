@@ -281,6 +281,23 @@ TEST(LsRefiner, ReachesAgreesWithExactSamplesAlongTheSegment) {
   EXPECT_GE(said_true, sampled_true);
 }
 
+// Regression, "tie rule chasing a split line into a corner": with the linear field the top edge of
+// the square is isotropic, so bisectors of its sites are the lines x = 3/4, 7/8, …; when the
+// subdivision split its boxes at ½, those lines were box sides, the vertices on them could not be
+// placed in or out of a box, and rule 8 chased them into corner (1, 1) until no double point was
+// left (stop 28). The run must finish and be the oracle's dual (the independent engine).
+TEST(LsRefiner, LinearFieldOnTheSquareFinishes) {
+  refiners::ls::LsParameters p;
+  p.theta_bound = 20, p.size = 2;
+  const refiners::common::Domain domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  const auto r = refiners::ls::refine_ls(domain, fields::make_field("linear", {{"hx", 0.3}, {"h0", 0.05}}), p);
+  ASSERT_TRUE(r.consistent) << r.stop_reason;
+  const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
+  for (const auto& f : d.faces) EXPECT_FALSE(f.orphan);
+  EXPECT_TRUE(d.theorem7.preconditions_hold);
+  EXPECT_TRUE(oracle::compare_with_dual(d, r.mesh.triangles, 3).is_dual());
+}
+
 // A field that gives the sites different metrics takes the true-diagram path (ls_varying.hpp). The
 // linear field depends on y alone and this pentagon is symmetric about x = 1/2, so its corners'
 // diagram has a vertex of degree 4 (rule 8, "tie", breaks it). The finished run is certified by the
