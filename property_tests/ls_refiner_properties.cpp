@@ -1,14 +1,20 @@
 // The Labelle–Shewchuk refiner (refiners/ls/) certified by the exact oracle on every finished run
-// (issue 16). Constant fields only so far: the refiner keeps the diagram of one metric.
+// (issue 16), and LS Theorem 11 and Lemmas 17, 21 and 23 checked on its traces.
 //
-// LS.T11 (the T part, constant fields): with θ_bound < arcsin(1/(2√2)), no size rule and every
-// pair of adjoining segments at least 2 arcsin(γ²/2) apart in the metric (decided here exactly),
-// the run finishes, and every two sites are at least μ = lfs_min/γ apart (bdr = ∞ for one metric).
-// lfs_min from below: with τ ≡ 1 every two adjacent edges of Ω are intertwined (LS Definition 5),
-// so non-intertwined feature points lie on non-adjacent edges, and a disc touching both has a
-// diameter of at least their M-distance: lfs_min ≥ δ/2, δ the least M-distance between two
-// non-adjacent edges (a rational; the assertion d² ≥ δ²/(4γ_hi²) is the theorem's, weakened only
-// by γ's enclosure and this bound). The sites then also obey the packing count of LS's proof.
+// LS.T11 (the T part): with θ_bound < arcsin(1/(2√2)), no size rule and every pair of adjoining
+// segments at least 2 arcsin(γ²/2) apart in the metric of their common corner (decided here
+// exactly), the run finishes, and every two sites have d_u(v) ≥ μ = min{lfs_min/γ,
+// bdr_min(γ)/((γ⁵+γ³)√(γ²+1))}. The fields are those whose bdr and lfs are known: one metric (the
+// constant field, which the refiner meshes on Del_M), or two metrics M_in on a disc and M_out off it
+// with τ(M_in, M_out) ≤ γ decided exactly (the refiner's path for sites with different metrics, the
+// true diagram). Every two points of Ω then have τ ≤ γ, so bdr = ∞ everywhere (LS Definition 4),
+// μ = lfs_min/γ, and every two adjacent edges of Ω are intertwined (Definition 5: τ(q, b) ≤ γ for
+// every q): non-intertwined feature points lie on non-adjacent edges, and a disc centred at p
+// touching both has a diameter of at least their M_p-distance. So lfs_min ≥ δ/2, δ the least
+// M-distance between two non-adjacent edges over the field's metrics M (a rational; the assertion
+// d² ≥ δ²/(4γ_hi²) is the theorem's, weakened only by γ's enclosure and this bound). A two-valued
+// field with τ(M_in, M_out) > γ has bdr_min = 0 (points on either side of the disc's rim), where
+// the theorem promises nothing; smooth fields' bdr_min has no certified bound here yet.
 //
 // LS.S9: a finished run (no encroached subsegment, no violator) is the dual of the exact diagram:
 // the oracle's D|Ω of the final sites has no orphans, every arc and vertex wedged, Theorem 7's
@@ -35,6 +41,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 
 using namespace anisocert;
@@ -119,52 +126,132 @@ bool cos_at_most(const predicates::Sym2<Rational>& M, const Rational& ux, const 
   return uv < 0 && uv * uv >= k * k * uu * vv;
 }
 
-}  // namespace
+// The squared distance from a to b in M, in double and long double (to sort out the pairs to
+// decide exactly).
+double approx_d2(const predicates::Sym2<double>& M, const predicates::Point2<double>& a, const predicates::Point2<double>& b) {
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return M.m11 * dx * dx + 2 * M.m12 * dx * dy + M.m22 * dy * dy;
+}
+long double approx_d2l(const predicates::Sym2<double>& M, const predicates::Point2<double>& a, const predicates::Point2<double>& b) {
+  const long double dx = static_cast<long double>(a.x) - b.x, dy = static_cast<long double>(a.y) - b.y;
+  return M.m11 * dx * dx + 2 * M.m12 * dx * dy + M.m22 * dy * dy;
+}
 
-RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
+// λ_max(M) from above: the trace bounds it.
+long double largest_eigenvalue_above(const predicates::Sym2<double>& M) {
+  return (static_cast<long double>(M.m11) + M.m22) * (1 + 1e-15L);
+}
+
+predicates::Sym2<Rational> exact(const predicates::Sym2<double>& M) { return {Rational(M.m11), Rational(M.m12), Rational(M.m22)}; }
+
+// M with eigenvalues l1, l2 along the axes turned by angle.
+predicates::Sym2<double> turned(double l1, double l2, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c};
+}
+
+// A field of one or two metrics within τ ≤ γ of each other (Theorem 11's fields above): the
+// constant field, or M_in on a disc and M_out off it, M_out with M_in's axes scaled by factors
+// from 1/2 to 2 and turned by up to 20°, brought halfway to M_in (in log scale) until τ(M_in,
+// M_out)² ≤ γ_lo² holds exactly. Diagonal metrics on combs, which keep their corners right.
+struct TauBoundedField {
+  std::vector<predicates::Sym2<double>> metrics;
+  fields::MetricField field;
+  std::string kind;
+};
+
+TauBoundedField tau_bounded_field(const std::vector<predicates::Point2<double>>& corners, bool diagonal, const Rational& gamma_lo2) {
+  const double l1 = *rc::gen::inRange(1, 101), l2 = *rc::gen::inRange(1, 101);
+  const double angle = diagonal ? 0 : *rc::gen::inRange(0, 180) * M_PI / 180;
+  const predicates::Sym2<double> in = turned(l1, l2, angle);
+  if (*rc::gen::arbitrary<bool>())
+    return {{in}, fields::make_field("constant", {{"m11", in.m11}, {"m12", in.m12}, {"m22", in.m22}}), "one metric"};
+  double a = *rc::gen::inRange(50, 201) / 100.0, b = *rc::gen::inRange(50, 201) / 100.0;
+  double turn = diagonal ? 0 : *rc::gen::inRange(-20, 21) * M_PI / 180;
+  predicates::Sym2<double> out = turned(l1 * a, l2 * b, angle + turn);
+  while (gen::tau2_above(exact(in), exact(out)) > gamma_lo2) {
+    a = std::sqrt(a), b = std::sqrt(b), turn /= 2;
+    out = turned(l1 * a, l2 * b, angle + turn);
+  }
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (const auto& c : corners) x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
+  const double cx = x0 + (x1 - x0) * *rc::gen::inRange(0, 101) / 100, cy = y0 + (y1 - y0) * *rc::gen::inRange(0, 101) / 100;
+  const double r = std::max(x1 - x0, y1 - y0) * *rc::gen::inRange(10, 71) / 100;
+  fields::MetricField field{"two metrics", {}, [=](double x, double y) { return (x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r ? in : out; }};
+  return {{in, out}, field, "two metrics"};
+}
+
+// A run under Theorem 11's conditions: θ_bound below 20.7°, no size rule, a comb (narrow slots,
+// right angles) or a random polygon, convex or not, a τ-bounded field, and the separation at every
+// corner in the corner's metric, cos(angle) ≤ 1 − γ_hi⁴/2 ≤ cos 2 arcsin(γ²/2), decided exactly.
+// The vertex budget alone ends a run (no time budget).
+struct Theorem11Run {
   refiners::ls::LsParameters p;
-  p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20, 20.5});
-  p.size = 0;
-  p.max_vertices = 20000, p.max_seconds = 1e9;  // no time budget: the vertex budget ends every run
-  // A comb (narrow slots, right angles) in a diagonal metric, which keeps its corners right, or a
-  // random polygon in any metric.
+  double gamma_lo = 0, gamma_hi = 0;  // γ's enclosure, ends rounded outward
+  TauBoundedField field;
+  Rational delta2;  // δ², the least over the field's metrics
+  refiners::ls::LsResult r;
+  // min{d_u(v)², d_v(u)²} in the sites' metrics, exactly.
+  Rational d2_between(std::size_t u, std::size_t v) const {
+    const auto& s = r.mesh.sites;
+    const predicates::Point2<Rational> a{Rational(s[u].x), Rational(s[u].y)}, b{Rational(s[v].x), Rational(s[v].y)};
+    return std::min(d2(exact(r.mesh.metrics[u]), a, b), d2(exact(r.mesh.metrics[v]), a, b));
+  }
+};
+
+Theorem11Run theorem11_run() {
+  Theorem11Run run;
+  run.p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20, 20.5});
+  run.p.size = 0;
+  run.p.max_vertices = 20000, run.p.max_seconds = 1e9;
   const int kind = *rc::gen::inRange(0, 3);
   const auto corners = kind == 0 ? gen::random_comb() : gen::random_domain(kind == 2, true);
-  const double l1 = *rc::gen::inRange(1, 101), l2 = *rc::gen::inRange(1, 101);
-  const double angle = kind == 0 ? 0 : *rc::gen::inRange(0, 180) * M_PI / 180;
-  const double c = std::cos(angle), s = std::sin(angle);
-  const predicates::Sym2<double> Md{l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c};
-  const predicates::Sym2<Rational> M{Rational(Md.m11), Rational(Md.m12), Rational(Md.m22)};
-  const Interval gamma = theory::ls_t11_gamma(rational_from_double(p.theta_bound), 256);
-  const Rational gamma_hi = rational_from_double(gamma.upper_double());
-  // Theorem 11's separation at every corner, from above: cos(angle) <= 1 − γ_hi⁴/2 <= cos 2 arcsin(γ²/2).
+  const Interval gamma = theory::ls_t11_gamma(rational_from_double(run.p.theta_bound), 256);
+  run.gamma_lo = gamma.lower_double(), run.gamma_hi = gamma.upper_double();
+  run.field = tau_bounded_field(corners, kind == 0, Rational(run.gamma_lo) * Rational(run.gamma_lo));
   const std::size_t n = corners.size();
   std::vector<predicates::Point2<Rational>> q;
   for (const auto& v : corners) q.push_back({Rational(v.x), Rational(v.y)});
+  const Rational g_hi(run.gamma_hi), g4 = g_hi * g_hi * g_hi * g_hi;
   for (std::size_t k = 0; k < n; ++k) {
     const auto &before = q[(k + n - 1) % n], &at = q[k], &after = q[(k + 1) % n];
-    RC_PRE(cos_at_most(M, before.x - at.x, before.y - at.y, after.x - at.x, after.y - at.y, 1 - gamma_hi * gamma_hi * gamma_hi * gamma_hi / 2));
+    const auto M = exact(run.field.field.at(corners[k].x, corners[k].y));
+    RC_PRE(cos_at_most(M, before.x - at.x, before.y - at.y, after.x - at.x, after.y - at.y, 1 - g4 / 2));
   }
-  RC_TAG(kind == 0 ? "comb" : kind == 2 ? "non-convex" : "convex", "theta_bound " + std::to_string(static_cast<int>(p.theta_bound)));
-  const auto r = refiners::ls::refine_ls(refiners::common::Domain(corners), fields::make_field("constant", {{"m11", Md.m11}, {"m12", Md.m12}, {"m22", Md.m22}}), p);
+  std::optional<Rational> delta2;
+  for (const auto& M : run.field.metrics)
+    if (const auto d = nonadjacent_edges_distance2(exact(M), q); d && (!delta2 || *d < *delta2)) delta2 = d;
+  RC_PRE(delta2.has_value());  // a triangle: every pair intertwined, no bound
+  run.delta2 = *delta2;
+  RC_TAG(kind == 0 ? "comb" : kind == 2 ? "non-convex" : "convex", run.field.kind,
+         "theta_bound " + std::to_string(static_cast<int>(run.p.theta_bound)));
+  run.r = refiners::ls::refine_ls(refiners::common::Domain(corners), run.field.field, run.p);
+  for (const auto& M : run.r.mesh.metrics)  // the test's field, as the refiner evaluated it
+    RC_ASSERT(std::any_of(run.field.metrics.begin(), run.field.metrics.end(), [&](const auto& F) {
+      return F.m11 == M.m11 && F.m12 == M.m12 && F.m22 == M.m22;
+    }));
+  return run;
+}
+
+}  // namespace
+
+RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
+  const Theorem11Run run = theorem11_run();
+  const auto& r = run.r;
   RC_LOG() << r.stop_reason;
   RC_ASSERT(r.consistent);
-
-  const std::optional<Rational> delta2 = nonadjacent_edges_distance2(M, q);
-  RC_PRE(delta2.has_value());  // a triangle: every pair intertwined, no bound
-  const Rational mu2 = *delta2 / (4 * gamma_hi * gamma_hi);
+  const Rational mu2 = run.delta2 / (4 * Rational(run.gamma_hi) * Rational(run.gamma_hi));
   const double mu2d = mu2.convert_to<double>();
   const auto& sites = r.mesh.sites;
   std::size_t pairs_checked_exactly = 0;
   double least2 = std::numeric_limits<double>::infinity();
   for (std::size_t u = 0; u < sites.size(); ++u)
     for (std::size_t v = u + 1; v < sites.size(); ++v) {
-      const double dx = sites[u].x - sites[v].x, dy = sites[u].y - sites[v].y;
-      const double dist2 = Md.m11 * dx * dx + 2 * Md.m12 * dx * dy + Md.m22 * dy * dy;
+      const double dist2 = std::min(approx_d2(r.mesh.metrics[u], sites[u], sites[v]), approx_d2(r.mesh.metrics[v], sites[u], sites[v]));
       least2 = std::min(least2, dist2);
       if (dist2 > 1.01 * mu2d + 1e-300) continue;  // far apart
       ++pairs_checked_exactly;
-      RC_ASSERT(d2(M, {Rational(sites[u].x), Rational(sites[u].y)}, {Rational(sites[v].x), Rational(sites[v].y)}) >= mu2);
+      RC_ASSERT(run.d2_between(u, v) >= mu2);  // d_u(v) and d_v(u)
     }
   RC_CLASSIFY(pairs_checked_exactly > 0, "pairs near mu checked exactly");
   const double ratio = std::sqrt(least2 / mu2d);  // how much room the bound leaves
@@ -172,77 +259,82 @@ RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
   RC_TAG(sites.size() < 20 ? "under 20 sites" : sites.size() < 500 ? "20 to 499 sites" : "500 sites or more");
 }
 
-// LS Lemmas 17, 21 and 23 on the traces of the runs above (constant fields: bdr = ∞, τ ≡ 1 ≤ γ,
-// size rule off, Theorem 11's conditions decided in the test). With m the least distance between
-// two sites before an insertion and w any earlier site:
+// LS Lemmas 17, 21 and 23 on the traces of the runs above (bdr = ∞, every τ ≤ γ, size rule off,
+// Theorem 11's conditions decided in the test). With d(u, v) = min{d_u(v), d_v(u)} (LS §3), m the
+// least d between two sites before an insertion and w any earlier site:
 //   rule 1, a split of an encroached subsegment (Lemma 17): d(z, w) ≥ min{m, lfs_min/γ}; the
 //     lemma's m (the encroacher's distance to an endpoint) is at least this m;
-//   rule 2, a split because a violator would encroach (Lemma 23): d(z, w) ≥ m;
-//   rule 3, a site at a poor-angle Voronoi vertex (Lemma 21): d(q, w) ≥ γ√(γ²+1)·m, at the exact
-//     vertex q; the site is q rounded to doubles, so the assertion allows √λ_max times the
-//     rounding (2 ulps per coordinate).
+//   rule 2, a split because a violator (rule 3 or 7) would encroach (Lemma 23): d(z, w) ≥ m;
+//   rules 3 and 7, a site at a poor-angle or unwedged Voronoi vertex q (Lemma 21, by Lemmas 18
+//     and 19): d(q, w) ≥ γ√(γ²+1)·m. The site q̃ is q rounded, within the trace's displacement e
+//     of q, so d_w(q̃) ≥ γ²√(γ²+1)m − √λ_max e, and d_q̃(w) ≥ d_w(q̃)/γ (τ ≤ γ): the assertion
+//     allows √λ_max e. And Lemma 18's premise, that q is a Voronoi vertex: d_w(q̃) ≥ r − 2√λ_max e
+//     for every earlier w, r the circumradius the trace records (at q̃).
+// Rules 5, 6 and 8 (inverted, island, tie) are no rules of LS §9's and have no lemma, nor have the
+// splits made for them; they are counted (tagged), and Theorem 11's μ above covers their sites too.
 // Lemma 21's γ√(γ²+1) is taken at γ's lower end and lfs_min/γ at its upper one (both weaker).
-// Rules 1 and 2 are compared exactly (squared, in rationals); rule 3 in long double with a
+// Rules 1 and 2 are compared exactly (squared, in rationals); rules 3 and 7 in long double with a
 // relative allowance of 10⁻¹² besides the rounding's.
 RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
-  refiners::ls::LsParameters p;
-  p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20, 20.5});
-  p.size = 0;
-  p.max_vertices = 20000, p.max_seconds = 1e9;  // no time budget: the vertex budget ends every run
-  const auto corners = gen::random_comb();
-  const double l1 = *rc::gen::inRange(1, 101), l2 = *rc::gen::inRange(1, 101);
-  const predicates::Sym2<double> Md{l1, 0, l2};  // diagonal: the comb's corners stay right
-  const predicates::Sym2<Rational> M{Rational(Md.m11), Rational(Md.m12), Rational(Md.m22)};
-  const Interval gamma = theory::ls_t11_gamma(rational_from_double(p.theta_bound), 256);
-  const long double g_lo = gamma.lower_double(), g_hi = gamma.upper_double();
-  const auto r = refiners::ls::refine_ls(refiners::common::Domain(corners), fields::make_field("constant", {{"m11", l1}, {"m12", 0.0}, {"m22", l2}}), p);
+  const Theorem11Run run = theorem11_run();
+  const auto& r = run.r;
   RC_ASSERT(r.consistent);
-  // lfs_min ≥ δ/2 (as in LS_T11), δ² exact.
-  std::vector<predicates::Point2<Rational>> q;
-  for (const auto& v : corners) q.push_back({Rational(v.x), Rational(v.y)});
-  const std::optional<Rational> delta2 = nonadjacent_edges_distance2(M, q);
-  const auto dist = [&](const predicates::Point2<double>& u, const predicates::Point2<double>& v) {
-    const long double dx = static_cast<long double>(u.x) - v.x, dy = static_cast<long double>(u.y) - v.y;
-    return std::sqrt(l1 * dx * dx + l2 * dy * dy);
-  };
+  const long double g_lo = run.gamma_lo;
+  long double lmax = 0;  // √λ_max bounds the M-length of a Euclidean unit vector
+  for (const auto& M : run.field.metrics) lmax = std::max(lmax, largest_eigenvalue_above(M));
   const auto& sites = r.mesh.sites;
   const std::size_t first = sites.size() - r.trace.size();  // the corners come first, untraced
-  long double m = INFINITY;
-  for (std::size_t u = 0; u < first; ++u)
-    for (std::size_t v = u + 1; v < first; ++v) m = std::min(m, dist(sites[u], sites[v]));
-  const long double lmax = std::max(l1, l2);
-  const auto exact2 = [&](const predicates::Point2<double>& u, const predicates::Point2<double>& v) {
-    return d2(M, {Rational(u.x), Rational(u.y)}, {Rational(v.x), Rational(v.y)});
+  const auto dist = [&](std::size_t u, std::size_t v) {
+    return std::sqrt(std::min(approx_d2l(r.mesh.metrics[u], sites[u], sites[v]), approx_d2l(r.mesh.metrics[v], sites[u], sites[v])));
   };
+  long double m = INFINITY;
   std::optional<Rational> m2;  // m², exactly
   for (std::size_t u = 0; u < first; ++u)
-    for (std::size_t v = u + 1; v < first; ++v)
-      if (const Rational x = exact2(sites[u], sites[v]); !m2 || x < *m2) m2 = x;
-  const std::optional<Rational> lfs_over_gamma2 = delta2 ? std::optional<Rational>(*delta2 / (4 * Rational(g_hi) * Rational(g_hi))) : std::nullopt;
-  std::array<int, 4> checked{};
+    for (std::size_t v = u + 1; v < first; ++v) {
+      m = std::min(m, dist(u, v));
+      if (const Rational x = run.d2_between(u, v); !m2 || x < *m2) m2 = x;
+    }
+  const Rational lfs_over_gamma2 = run.delta2 / (4 * Rational(run.gamma_hi) * Rational(run.gamma_hi));
+  std::array<int, 9> checked{};
+  int without_lemma = 0;
   for (std::size_t k = 0; k < r.trace.size(); ++k) {
     const auto& t = r.trace[k];
-    const predicates::Point2<double> z{t.x, t.y};
-    std::optional<Rational> nearest2;
+    const std::size_t z = first + k;
+    RC_ASSERT(sites[z].x == t.x && sites[z].y == t.y);
     long double nearest = INFINITY;
-    for (std::size_t w = 0; w < first + k; ++w) {
-      nearest = std::min(nearest, dist(z, sites[w]));
-      if (const Rational x = exact2(z, sites[w]); !nearest2 || x < *nearest2) nearest2 = x;
+    for (std::size_t w = 0; w < z; ++w) nearest = std::min(nearest, dist(z, w));
+    // Exactly for the sites within 10⁻⁶ of the nearest in long double (more than its rounding).
+    std::optional<Rational> nearest2;
+    for (std::size_t w = 0; w < z; ++w)
+      if (dist(z, w) <= nearest * (1 + 1e-6L))
+        if (const Rational x = run.d2_between(z, w); !nearest2 || x < *nearest2) nearest2 = x;
+    RC_LOG() << "insertion " << k << " (site " << z << ") rule " << t.rule << " for rule " << t.for_rule << " at (" << t.x << ", " << t.y << "), nearest " << nearest
+             << ", m " << m << "\n";
+    if (t.rule == 1) RC_ASSERT(*nearest2 >= std::min(*m2, lfs_over_gamma2));  // Lemma 17
+    const bool ls_violator = t.for_rule == 3 || t.for_rule == 7;
+    if (t.rule == 2 && ls_violator) RC_ASSERT(*nearest2 >= *m2);  // Lemma 23
+    if (t.rule == 3 || t.rule == 7) {  // Lemma 21
+      const long double e = std::sqrt(lmax) * t.displacement;
+      RC_ASSERT(nearest >= (g_lo * std::sqrt(g_lo * g_lo + 1) * m - e) * (1 - 1e-12L));
+      // Lemma 18's premise: q is a Voronoi vertex, no site nearer to it in its own metric than
+      // its triangle's r (the trace's radius, taken at q̃ in the metric of one of them).
+      long double empty = INFINITY;
+      for (std::size_t w = 0; w < z; ++w) empty = std::min(empty, std::sqrt(approx_d2l(r.mesh.metrics[w], sites[z], sites[w])));
+      RC_ASSERT(empty >= (t.radius - 2 * e) * (1 - 1e-12L));
     }
-    if (t.rule == 1) RC_ASSERT(*nearest2 >= (lfs_over_gamma2 ? std::min(*m2, *lfs_over_gamma2) : *m2));  // Lemma 17
-    if (t.rule == 2) RC_ASSERT(*nearest2 >= *m2);                                                       // Lemma 23
-    if (t.rule == 3) {                                                                                   // Lemma 21
-      const long double ulp = std::ldexp(1.0L, std::ilogb(std::max(std::abs(t.x), std::abs(t.y))) - 52);
-      const long double bound = g_lo * std::sqrt(g_lo * g_lo + 1) * m - std::sqrt(lmax) * 2 * ulp * std::sqrt(2.0L);
-      RC_ASSERT(nearest >= bound * (1 - 1e-12L));
-    }
-    ++checked[t.rule];
+    if (t.rule == 5 || t.rule == 6 || t.rule == 8 || (t.rule == 2 && !ls_violator))
+      ++without_lemma;
+    else
+      ++checked[static_cast<std::size_t>(t.rule)];
     m = std::min(m, nearest);
     m2 = std::min(*m2, *nearest2);
   }
+  RC_TAG(run.field.kind);
   RC_CLASSIFY(checked[1] > 0, "rule 1 checked");
   RC_CLASSIFY(checked[2] > 0, "rule 2 checked");
   RC_CLASSIFY(checked[3] > 0, "rule 3 checked");
+  RC_CLASSIFY(checked[7] > 0, "rule 7 checked");
+  RC_CLASSIFY(without_lemma > 0, "a rule without a lemma (inverted, island, tie, or a split for one)");
 }
 
 // The filters (FilterInterval boxes of Voronoi vertices for containment in Ω and the size rule,

@@ -19,13 +19,19 @@ struct Budget {
 // One insertion, for the properties on traces (LU Lemmas 4.1–4.4, LS Theorem 11, BWY §4.2): where,
 // by which rule (its number in the refiner's rule table), and its distance to the nearest earlier
 // site in the new site's metric. For a rule acting on an element at a site (LU: a triangle of the
-// star of `site`), that site and the element's circumradius in its metric.
+// star of `site`), that site and the element's circumradius in its metric. A point that stands
+// for an exact one it rounds (a Voronoi vertex) is within `displacement` of it (Euclidean, from
+// above; 0 when the rule's point is the inserted one). A split made instead of inserting another
+// rule's point (LS §9: "A new site is never permitted to encroach upon a segment") names that rule
+// in `for_rule` (0 otherwise).
 struct Insertion {
   int rule;
   double x, y;
   double nearest_distance;
   int site = -1;
   double radius = 0;
+  double displacement = 0;
+  int for_rule = 0;
 };
 
 struct RefineResult {

@@ -80,7 +80,7 @@ class LsRefinement {
       const Point2<double> q = rounded_vertex(t);
       // LS §9: "A new site is never permitted to encroach upon a segment".
       if (const auto s = encroached_by(q)) {
-        split(s->first, {s->second}, Rule::violator_encroaches);
+        split(s->first, {s->second}, rule);
         violators_.emplace_front(t, v);
         return true;
       }
@@ -89,7 +89,9 @@ class LsRefinement {
                    " rounds to " + point_text(q) + ", outside Ω, and encroaches no subsegment";
         return true;
       }
-      insert(q, rule, std::sqrt(squared_length(metric_, q, diagram_.point(v[0]))));
+      const double ulp_x = std::nextafter(std::abs(q.x), INFINITY) - std::abs(q.x), ulp_y = std::nextafter(std::abs(q.y), INFINITY) - std::abs(q.y);
+      insert(q, rule, std::sqrt(squared_length(metric_, q, diagram_.point(v[0]))),
+             farthest_in_box(q, q.x - 2 * ulp_x, q.x + 2 * ulp_x, q.y - 2 * ulp_y, q.y + 2 * ulp_y));
       return true;
     }
     return false;
@@ -207,7 +209,8 @@ class LsRefinement {
 
   // LS §9: s is split in one of the cells `in`, the one nearest its midpoint (one that meets s in
   // more than a point when there is one), as near the midpoint as a double exactly on s allows.
-  void split(int s, const std::vector<CellOnSegment>& in, Rule rule) {
+  // cause: rule 1, or the rule of the violator whose site would encroach s (the split is rule 2's).
+  void split(int s, const std::vector<CellOnSegment>& in, Rule cause) {
     const Rational half(1, 2);
     const auto gap = [&](const CellOnSegment& c) { return c.lo > half ? c.lo - half : c.hi < half ? half - c.hi : Rational(0); };
     const auto better = [&](const CellOnSegment& c, const CellOnSegment& d) {
@@ -225,7 +228,7 @@ class LsRefinement {
     }
     stalled_ = subsegments_.too_fine(domain_, t11_, s, sites_.points[a], sites_.points[b], *z);
     if (!stalled_.empty()) return;
-    const int k = insert(*z, rule, 0);
+    const int k = cause == Rule::encroached_segment ? insert(*z, cause, 0) : insert(*z, Rule::violator_encroaches, 0, 0, cause);
     if (k < 0) return;
     subsegments_.split(s, k);
     boxes_[s] = near_segment(sites_.points[a], sites_.points[k], metric_);
@@ -233,7 +236,7 @@ class LsRefinement {
   }
 
   // Inserts q as a site; its index, or −1 when the run stalls.
-  int insert(const Point2<double>& q, Rule rule, double radius) {
+  int insert(const Point2<double>& q, Rule rule, double radius, double displacement = 0, Rule for_rule = Rule::none) {
     const Sym2<double> M = sites_.field.at(q.x, q.y);
     if (!same(M, metric_)) {
       stalled_ = "the field " + sites_.field.name + ", taken as constant (one metric, Del_M), gives " + metric_text(M) + " at " +
@@ -241,7 +244,7 @@ class LsRefinement {
       return -1;
     }
     const double nearest = sites_.grid.nearest_site2(q, M, sites_.points);
-    record_.insertion(rule, q, nearest, radius);
+    record_.insertion(rule, q, nearest, radius, displacement, for_rule);
     const int k = sites_.add(q, M);
     sites_.grow_grid();
     for (int t : diagram_.insert(k, q)) queue_if_violator(t);

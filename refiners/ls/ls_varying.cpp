@@ -87,7 +87,9 @@ class LsVaryingRefinement {
       if (!stalled_.empty()) return true;
       if (rule == Rule::none) continue;
       const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
-      if (!attack(v.box.approx(), rule, std::sqrt(radius2(q)), "the Voronoi vertex of sites " + trio_text(v.sites))) violators_.push_front(q);
+      const Point2<double> c = v.box.approx();
+      const double displacement = farthest_in_box(c, v.box.box.x.lo, v.box.box.x.hi, v.box.box.y.lo, v.box.box.y.hi);
+      if (!attack(c, rule, std::sqrt(radius2(q)), "the Voronoi vertex of sites " + trio_text(v.sites), displacement)) violators_.push_front(q);
       return true;
     }
     return island();
@@ -216,18 +218,18 @@ class LsVaryingRefinement {
 
   // LS §9: a site at q, unless it would encroach a subsegment, which is then split in the cell q
   // would have. False when q was not inserted (the subsegment was split instead, or the run stalls).
-  bool attack(const Point2<double>& q, Rule rule, double radius, const std::string& what) {
+  bool attack(const Point2<double>& q, Rule rule, double radius, const std::string& what, double displacement = 0) {
     const MetricSite Q{q, sites_.field.at(q.x, q.y)};
     if (const auto s = encroached_by(Q)) {
       const auto [a, b] = subsegments_.ends(*s);
-      split(*s, {Q}, {site(a), site(b)}, Rule::violator_encroaches);
+      split(*s, {Q}, {site(a), site(b)}, rule);
       return false;
     }
     if (!domain_.contains(q)) {
       stalled_ = what + " rounds to " + point_text(q) + ", outside Ω, and encroaches no subsegment";
       return false;
     }
-    insert(Q, rule, radius);
+    insert(Q, rule, radius, displacement);
     return true;
   }
 
@@ -263,8 +265,9 @@ class LsVaryingRefinement {
   // can be nearest on s), as near the "midpoint" d_a(z) = d_b(z) as a double exactly on s allows:
   // that point itself when it is in such a cell, else the point nearest to it of the range of s
   // where the first encroacher that has one is nearest. The choice is in doubles; membership is
-  // checked exactly.
-  void split(int s, const std::vector<MetricSite>& in, const std::vector<MetricSite>& near, Rule rule) {
+  // checked exactly. cause: rule 1, or the rule of the point that would encroach s (the split is
+  // rule 2's).
+  void split(int s, const std::vector<MetricSite>& in, const std::vector<MetricSite>& near, Rule cause) {
     const auto [a, b] = subsegments_.ends(s);
     const Point2<double>&pa = sites_.points[static_cast<std::size_t>(a)], &pb = sites_.points[static_cast<std::size_t>(b)];
     const double tm = midpoint_parameter(site(a), site(b));
@@ -306,7 +309,8 @@ class LsVaryingRefinement {
     }
     stalled_ = subsegments_.too_fine(domain_, t11_, s, pa, pb, *z);
     if (!stalled_.empty()) return;
-    const int k = insert({*z, sites_.field.at(z->x, z->y)}, rule, 0);
+    const MetricSite Z{*z, sites_.field.at(z->x, z->y)};
+    const int k = cause == Rule::encroached_segment ? insert(Z, cause, 0) : insert(Z, Rule::violator_encroaches, 0, 0, cause);
     if (k < 0) return;
     subsegments_.split(s, k);
   }
@@ -366,13 +370,13 @@ class LsVaryingRefinement {
   }
 
   // Inserts Q as a site; its index, or −1 when the run stalls.
-  int insert(const MetricSite& Q, Rule rule, double radius) {
+  int insert(const MetricSite& Q, Rule rule, double radius, double displacement = 0, Rule for_rule = Rule::none) {
     const double nearest = sites_.grid.nearest_site2(Q.p, Q.M, sites_.points);
     if (nearest == 0) {  // two sites at one point: their distances tie along curves through it
       stalled_ = "a site by rule \"" + std::string(rule_name(rule)) + "\" would lie at " + point_text(Q.p) + ", where a site is";
       return -1;
     }
-    record_.insertion(rule, Q.p, nearest, radius);
+    record_.insertion(rule, Q.p, nearest, radius, displacement, for_rule);
     const int k = static_cast<int>(sites_.size());
     add_site(Q.p, Q.M);
     for (int q : diagram_.created()) violators_.push_back(q);

@@ -4,17 +4,26 @@
 #include "refiners/ls/ls_refiner.hpp"
 #include "refiners/ls/rules.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
 namespace anisocert::refiners::ls {
 
+// From above, the Euclidean distance from q to the farthest point of the box [x0, x1] × [y0, y1]
+// (the factor covers the rounding of the differences and of hypot).
+inline double farthest_in_box(const predicates::Point2<double>& q, double x0, double x1, double y0, double y1) {
+  return std::hypot(std::max(q.x - x0, x1 - q.x), std::max(q.y - y0, y1 - q.y)) * (1 + 0x1p-50);
+}
+
 class RunRecord {
  public:
   // A site at q by `rule`, at squared distance nearest2 from the nearest earlier site in its
-  // metric; radius: the violator's circumradius in the metric (0 for splits).
-  void insertion(Rule rule, const predicates::Point2<double>& q, double nearest2, double radius) {
-    trace_.push_back({static_cast<int>(rule), q.x, q.y, std::sqrt(nearest2), -1, radius});
+  // metric; radius: the violator's circumradius in the metric (0 for splits); displacement: q's
+  // distance from the exact Voronoi vertex it rounds, from above (0 for splits); for_rule: the rule
+  // whose point would have encroached, for rule 2's splits.
+  void insertion(Rule rule, const predicates::Point2<double>& q, double nearest2, double radius, double displacement, Rule for_rule) {
+    trace_.push_back({static_cast<int>(rule), q.x, q.y, std::sqrt(nearest2), -1, radius, displacement, static_cast<int>(for_rule)});
     ++counts_[static_cast<std::size_t>(rule)];
     last_ = rule;
   }
