@@ -13,6 +13,7 @@ struct Point2 {
 template <class S>
 struct Sym2 {
   S m11, m12, m22;
+  friend bool operator==(const Sym2&, const Sym2&) = default;
 };
 
 // [m11 m12 m13; m12 m22 m23; m13 m23 m33].

@@ -1,7 +1,10 @@
 #pragma once
 // What "certified by the oracle" means for a refiner's finished run (issue 16): the exact D|Ω of
 // the mesh's sites has no orphans, every arc and vertex wedged, LS Theorem 7's preconditions, and
-// a dual that is a triangulation of Ω and equals the mesh triangle for triangle. Returns the exact
+// a dual that is a triangulation of Ω and equals the mesh triangle for triangle; and the mesh's
+// triangles tile Ω: each counter-clockwise, their areas summing to Ω's, exactly (the polygon of a
+// vertex of degree 4 or more split twice, or left out, changes the sum; the comparison with the
+// dual, which accepts any three owners of such a vertex, does not see it). Returns the exact
 // mesh and diagram for the property's own checks, or nothing (tagged) when the oracle refuses the input as
 // beyond what it supports (std::domain_error: distances that doubles cannot tell apart).
 #include "geometry/mesh.hpp"
@@ -45,6 +48,18 @@ inline std::optional<Certified> assert_dual_of_exact_diagram(const geometry::Mes
   const oracle::MeshDual dual = oracle::compare_with_dual(d, mesh.triangles, 3);
   for (const auto& w : dual.not_dual_witnesses) RC_LOG() << w.why << "\n";
   RC_ASSERT(dual.is_dual());
+  Rational twice_area(0), twice_omega(0);
+  for (const auto& t : mesh.triangles) {
+    const auto &a = m.sites[static_cast<std::size_t>(t[0])], &b = m.sites[static_cast<std::size_t>(t[1])], &c = m.sites[static_cast<std::size_t>(t[2])];
+    const Rational o = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    RC_ASSERT(o > 0);
+    twice_area += o;
+  }
+  for (std::size_t k = 0; k < m.domain.size(); ++k) {
+    const auto &p = m.domain[k], &q = m.domain[(k + 1) % m.domain.size()];
+    twice_omega += p.x * q.y - q.x * p.y;
+  }
+  RC_ASSERT(twice_area == twice_omega);
   return Certified{std::move(m), std::move(*exact)};
 }
 

@@ -11,6 +11,7 @@
 #include "predicates/orientation.hpp"
 #include "refiners/common/exact_split.hpp"
 #include "refiners/ls/delaunay_in_metric.hpp"
+#include "refiners/ls/exact_tie.hpp"
 #include "refiners/ls/ls_refiner.hpp"
 #include "refiners/ls/segment_cells.hpp"
 #include "refiners/ls/segment_quadratics.hpp"
@@ -212,6 +213,63 @@ TEST(LsRefiner, IsotropicSquareIsTheDualWithTies) {
   EXPECT_TRUE(dual.is_dual());
   EXPECT_EQ(dual.ties, r.mesh.triangles.size());
   EXPECT_TRUE(d.theorem7.preconditions_hold);
+}
+
+// Four points on the ellipse 4x² + y² = 1 of M = diag(4, 1) (the closed form: (±½, 0), (0, ±1)) tie
+// at the origin; moving one off the ellipse, or giving one another metric, makes no tie. The tie's
+// sites come counter-clockwise; its polygon (a rhombus in the plane, a square in M) has a fan with
+// angles of 45° in M, none of 50°.
+TEST(ExactTie, FourPointsOnAnEllipseOfTheirMetric) {
+  const predicates::Sym2<double> M{4, 0, 1};
+  std::vector<refiners::common::MetricSite> s{{{0, -1}, M}, {{0.5, 0}, M}, {{-0.5, 0}, M}, {{0, 1}, M}, {{0, 1.0625}, M}, {{0, 1}, {4, 0, 1.5}}};
+  const auto tie = refiners::ls::exact_tie(s, {0, 1, 2, 3});
+  ASSERT_TRUE(tie.has_value());
+  EXPECT_EQ(tie->c.x, 0);
+  EXPECT_EQ(tie->c.y, 0);
+  EXPECT_EQ(tie->sites, (std::vector<int>{1, 3, 2, 0}));  // from angle 0, counter-clockwise
+  EXPECT_FALSE(refiners::ls::exact_tie(s, {0, 1, 2, 4}).has_value());
+  EXPECT_FALSE(refiners::ls::exact_tie(s, {0, 1, 2, 5}).has_value());
+  EXPECT_FALSE(refiners::ls::exact_tie(s, {0, 1, 2}).has_value());
+  const double sin2_45 = 0.5, sin2_50 = std::pow(std::sin(50 * M_PI / 180), 2);
+  const auto fan = refiners::ls::good_fan(*tie, s, {M}, sin2_45);
+  ASSERT_TRUE(fan.has_value());
+  EXPECT_EQ(fan->size(), 2u);
+  for (const auto& t : *fan) EXPECT_EQ(predicates::orientation(s[t[0]].p, s[t[1]].p, s[t[2]].p), Sign::positive);
+  EXPECT_FALSE(refiners::ls::good_fan(*tie, s, {M}, sin2_50).has_value());
+  // In I, the fan from (½, 0) has angles of 53.1° and 63.4°, the one from (0, 1) has 26.6°.
+  EXPECT_TRUE(refiners::ls::good_fan(*tie, s, {{1, 0, 1}}, sin2_50).has_value());
+  EXPECT_FALSE(refiners::ls::good_fan(*tie, s, {M, {1, 0, 1}}, sin2_50).has_value());  // each metric must pass
+}
+
+// The same square and field taken as a varying field (any name but "constant" takes the path of the
+// true diagram, ls_varying.hpp). Grid corners of one metric own Voronoi vertices of degree 4: exact
+// ties (exact_tie.hpp), kept as LS §7 keeps them, each square split into two right triangles (45° ≥
+// θ_bound). Rule 8 once put a site near every such vertex instead, which LS does not, and a split
+// made for one broke LS Lemma 23's bound (found by LS_L17_L21_L23 on a comb of two metrics).
+// With no size rule the run ends at once: the four corners, two triangles, both ties of the
+// oracle's degree-4 vertex. With size 0.4 it ends on the 3 × 3 grid of step ½ (the closed form: the
+// corners' circumradius √2/2 > 0.4, the half grid's √2/4 < 0.4), eight triangles, all ties.
+TEST(LsRefiner, VaryingPathKeepsTheExactTiesOfOneMetric) {
+  const fields::MetricField identity{"identity, as a varying field", {}, [](double, double) { return predicates::Sym2<double>{1, 0, 1}; }};
+  const refiners::common::Domain square({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  for (const double size : {0.0, 0.4}) {
+    refiners::ls::LsParameters p;
+    p.size = size;
+    const auto r = refiners::ls::refine_ls(square, identity, p);
+    ASSERT_TRUE(r.consistent) << r.stop_reason;
+    const std::size_t n = size == 0 ? 2 : 3;
+    EXPECT_EQ(r.mesh.sites.size(), n * n);
+    for (const auto& s : r.mesh.sites) {
+      EXPECT_EQ(s.x * 2, std::floor(s.x * 2));
+      EXPECT_EQ(s.y * 2, std::floor(s.y * 2));
+    }
+    ASSERT_EQ(r.mesh.triangles.size(), 2 * (n - 1) * (n - 1));
+    const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
+    const oracle::MeshDual dual = oracle::compare_with_dual(d, r.mesh.triangles, 3);
+    EXPECT_TRUE(dual.is_dual());
+    EXPECT_EQ(dual.ties, r.mesh.triangles.size());
+    EXPECT_TRUE(d.theorem7.preconditions_hold);
+  }
 }
 
 // A metric stretched 10³ : 1 (M = diag(10⁶, 1)), θ_bound = 5°: the ghosts move away with the

@@ -9,15 +9,22 @@ namespace {
 
 using FI = FilterInterval;
 
+// The points p of a box as m + δ, m its midpoint (δ in the box about 0): the two centred forms
+// below.
+struct Centred {
+  FI mx, my, dx, dy;
+  explicit Centred(const Box& b)
+      : mx(FI(b.x0, b.x1).midpoint()), my(FI(b.y0, b.y1).midpoint()), dx(FI(b.x0, b.x1) - mx), dy(FI(b.y0, b.y1) - my) {}
+};
+
 // Holds d_u(p)² for every p in b, in the centred form about b's midpoint m (FilterInterval rounds
 // outward): Q_u(m + δ) = Q_u(m) + 2 (m − u)ᵀM_u δ + δᵀM_u δ. Term by term, the form would be far
 // wider for a nearly degenerate metric, whose terms cancel (a box 10⁻³ wide at 0.07 from a site of
 // anisotropy 100 was bounded by [0.26, 0.50]), and the leaves would split to separate sites
 // that the centred form tells apart at once.
 FI squared_distances(const MetricSite& u, const Box& b) {
-  const FI mx = FI(b.x0, b.x1).midpoint(), my = FI(b.y0, b.y1).midpoint();
-  const FI dx = FI(b.x0, b.x1) - mx, dy = FI(b.y0, b.y1) - my;  // δ
-  const FI ex = mx - u.p.x, ey = my - u.p.y;                       // m − u
+  const auto [mx, my, dx, dy] = Centred(b);
+  const FI ex = mx - u.p.x, ey = my - u.p.y;  // m − u
   const FI m11(u.M.m11), m12(u.M.m12), m22(u.M.m22);
   const FI at_m = ex * (m11 * ex + m12 * ey) + ey * (m12 * ex + m22 * ey);
   const FI linear = (m11 * ex + m12 * ey) * dx + (m12 * ex + m22 * ey) * dy;
@@ -32,8 +39,7 @@ FI squared_distances(const MetricSite& u, const Box& b) {
 // from it, which the distances one by one could only tell apart in boxes as thin as the wedges
 // (a million boxes for 39 sites on the L with M′), the difference in boxes as wide as their length.
 FI squared_distance_difference(const MetricSite& u, const MetricSite& v, const Box& b) {
-  const FI mx = FI(b.x0, b.x1).midpoint(), my = FI(b.y0, b.y1).midpoint();
-  const FI dx = FI(b.x0, b.x1) - mx, dy = FI(b.y0, b.y1) - my;
+  const auto [mx, my, dx, dy] = Centred(b);
   const FI ux = mx - u.p.x, uy = my - u.p.y, vx = mx - v.p.x, vy = my - v.p.y;
   const FI gux = FI(u.M.m11) * ux + FI(u.M.m12) * uy, guy = FI(u.M.m12) * ux + FI(u.M.m22) * uy;
   const FI gvx = FI(v.M.m11) * vx + FI(v.M.m12) * vy, gvy = FI(v.M.m12) * vx + FI(v.M.m22) * vy;
@@ -238,13 +244,13 @@ std::vector<int> VertexSubdivision::candidates_near(const Box& b) const {
   return out;
 }
 
-std::vector<Box> VertexSubdivision::unresolved() const {
-  std::vector<Box> out;
+std::vector<VertexSubdivision::Leaf> VertexSubdivision::unresolved() const {
+  std::vector<Leaf> out;
   std::vector<int> stack{0};
   while (!stack.empty()) {
     const Node& node = nodes_[static_cast<std::size_t>(stack.back())];
     stack.pop_back();
-    if (node.unresolved) out.push_back(node.box);
+    if (node.unresolved) out.push_back({node.box, node.candidates});
     if (node.child >= 0)
       for (int i = 0; i < 4; ++i) stack.push_back(node.child + i);
   }

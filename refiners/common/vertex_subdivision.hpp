@@ -52,8 +52,13 @@ class VertexSubdivision {
   const std::vector<int>& created() const { return created_; }
   // The sites that can be nearest somewhere in b: the candidates of every leaf that meets b.
   std::vector<int> candidates_near(const Box& b) const;
-  // The leaves where D could not be resolved (see above); empty when every vertex in R is known.
-  std::vector<Box> unresolved() const;
+  // The leaves where D could not be resolved (see above), with their candidates; empty when every
+  // vertex in R is known.
+  struct Leaf {
+    Box box;
+    std::vector<int> candidates;
+  };
+  std::vector<Leaf> unresolved() const;
   bool resolved() const { return unresolved_leaves_ == 0; }
   // Whether a leaf was left unsplit because the tree reached its bound on nodes (above).
   bool full() const { return nodes_.size() + 4 > max_nodes() || nodes_.size() + 4 > insertion_start_ + max_nodes_per_insertion; }

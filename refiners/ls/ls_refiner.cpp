@@ -22,7 +22,6 @@ namespace {
 
 using common::metric_text;
 using common::point_text;
-bool same(const Sym2<double>& a, const Sym2<double>& b) { return a.m11 == b.m11 && a.m12 == b.m12 && a.m22 == b.m22; }
 
 template <class T>
 T squared_length(const Sym2<double>& M, const Point2<T>& p, const Point2<double>& v) {
@@ -44,7 +43,7 @@ class LsRefinement {
     const auto& corners = domain.corners();
     for (std::size_t k = 0; k < corners.size(); ++k) {
       const Sym2<double> M = sites_.field.at(corners[k].x, corners[k].y);
-      if (!same(M, metric_))
+      if (M != metric_)
         throw common::FieldError("--algo ls on the field " + field.name + ", taken as constant (one metric, Del_M), gives " +
                                  metric_text(metric_) + " at " + domain.corner_text(0) + " and " +
                                  metric_text(M) + " at " + domain.corner_text(k));
@@ -89,9 +88,11 @@ class LsRefinement {
                    " rounds to " + point_text(q) + ", outside Ω, and encroaches no subsegment";
         return true;
       }
+      // q is within two next_up steps of the vertex, which are up to three of q's own ulps (q just
+      // below a power of two, the vertex above it); four are recorded.
       const double ulp_x = std::nextafter(std::abs(q.x), INFINITY) - std::abs(q.x), ulp_y = std::nextafter(std::abs(q.y), INFINITY) - std::abs(q.y);
       insert(q, rule, std::sqrt(squared_length(metric_, q, diagram_.point(v[0]))),
-             farthest_in_box(q, q.x - 2 * ulp_x, q.x + 2 * ulp_x, q.y - 2 * ulp_y, q.y + 2 * ulp_y));
+             farthest_in_box(q, q.x - 4 * ulp_x, q.x + 4 * ulp_x, q.y - 4 * ulp_y, q.y + 4 * ulp_y));
       return true;
     }
     return false;
@@ -238,7 +239,7 @@ class LsRefinement {
   // Inserts q as a site; its index, or −1 when the run stalls.
   int insert(const Point2<double>& q, Rule rule, double radius, double displacement = 0, Rule for_rule = Rule::none) {
     const Sym2<double> M = sites_.field.at(q.x, q.y);
-    if (!same(M, metric_)) {
+    if (M != metric_) {
       stalled_ = "the field " + sites_.field.name + ", taken as constant (one metric, Del_M), gives " + metric_text(M) + " at " +
                  point_text(q) + ", not the corners' " + metric_text(metric_);
       return -1;

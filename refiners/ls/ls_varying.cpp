@@ -7,6 +7,8 @@
 #include "refiners/common/sites.hpp"
 #include "refiners/common/vertex_in_domain.hpp"
 #include "refiners/common/vertex_subdivision.hpp"
+#include "refiners/ls/delaunay_in_metric.hpp"
+#include "refiners/ls/exact_tie.hpp"
 #include "refiners/ls/rules.hpp"
 #include "refiners/ls/run_record.hpp"
 #include "refiners/ls/segment_cells.hpp"
@@ -17,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <map>
 
 namespace anisocert::refiners::ls {
 namespace {
@@ -87,9 +90,16 @@ class LsVaryingRefinement {
       if (!stalled_.empty()) return true;
       if (rule == Rule::none) continue;
       const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
-      const Point2<double> c = v.box.approx();
-      const double displacement = farthest_in_box(c, v.box.box.x.lo, v.box.box.x.hi, v.box.box.y.lo, v.box.box.y.hi);
+      const auto [c, displacement] = rounded_vertex(q);
       if (!attack(c, rule, std::sqrt(radius2(q)), "the Voronoi vertex of sites " + trio_text(v.sites), displacement)) violators_.push_front(q);
+      return true;
+    }
+    for (const ExactTie& tie : exact_ties_) {
+      const Rule rule = tie_violation(tie);
+      if (rule == Rule::none) continue;
+      const auto [q, displacement] = rounded(tie.c);
+      attack(q, rule, std::sqrt(squared_distance(site(tie.sites[0]), q)),
+             "the Voronoi vertex of degree " + std::to_string(tie.sites.size()) + " of sites " + tie_text(tie), displacement);
       return true;
     }
     return island();
@@ -108,6 +118,11 @@ class LsVaryingRefinement {
       const auto order = cell_order(static_cast<int>(q));
       r.mesh.triangles.push_back(order == Sign::negative ? std::array<int, 3>{v.sites[0], v.sites[2], v.sites[1]} : v.sites);
       r.violators_left += violation(static_cast<int>(q)) != Rule::none;
+    }
+    for (const ExactTie& tie : exact_ties_) {
+      const auto good = good_fan(tie, diagram_.sites(), tie_metrics(tie), s2_);
+      for (const auto& t : good ? *good : fan(tie, 0)) r.mesh.triangles.push_back(t);
+      r.violators_left += tie_violation(tie) != Rule::none;
     }
     for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
     stalled_ = stalled;
@@ -216,6 +231,51 @@ class LsVaryingRefinement {
     return Rule::none;
   }
 
+  // A rational point truncated to doubles, within an ulp per coordinate: the point and its
+  // displacement (from above).
+  static std::pair<Point2<double>, double> rounded(const Point2<Rational>& c) {
+    const Point2<double> q{c.x.convert_to<double>(), c.y.convert_to<double>()};
+    const double ulp_x = std::nextafter(std::abs(q.x), INFINITY) - std::abs(q.x), ulp_y = std::nextafter(std::abs(q.y), INFINITY) - std::abs(q.y);
+    return {q, farthest_in_box(q, q.x - ulp_x, q.x + ulp_x, q.y - ulp_y, q.y + ulp_y)};
+  }
+  // Vertex q as the site rule 3, 4, 5 or 7 inserts, with its displacement: when its three sites
+  // share one metric the vertex is their rational circumcentre in it, truncated (so that grid
+  // corners of one metric stay exactly on their grid and their ties stay exact ties, exact_tie.hpp);
+  // otherwise the middle of its certified box.
+  std::pair<Point2<double>, double> rounded_vertex(int q) const {
+    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+    const MetricSite a = site(v.sites[0]), b = site(v.sites[1]), c = site(v.sites[2]);
+    if (a.M == b.M && a.M == c.M) return rounded(circumcentre_in<Rational>(a.p, b.p, c.p, a.M));
+    const Point2<double> m = v.box.approx();
+    return {m, farthest_in_box(m, v.box.box.x.lo, v.box.box.x.hi, v.box.box.y.lo, v.box.box.y.hi)};
+  }
+  static std::string tie_text(const ExactTie& tie) {
+    std::string out;
+    for (int u : tie.sites) out += (out.empty() ? "" : ", ") + std::to_string(u);
+    return out;
+  }
+  // The metrics a tie's triangles are judged in: the sites' one metric and the field's at the
+  // vertex (as violation() judges a vertex of degree 3).
+  std::vector<Sym2<double>> tie_metrics(const ExactTie& tie) const {
+    const Point2<double> q = rounded(tie.c).first;
+    return {site(tie.sites[0]).M, sites_.field.at(q.x, q.y)};
+  }
+  // Rules 3 and 4 at an exact tie (one metric: no inverted or unwedged triangle): poor when no fan
+  // of its polygon has all its angles at least θ_bound; too large as violation() judges a vertex,
+  // exactly at the rational vertex.
+  Rule tie_violation(const ExactTie& tie) const {
+    if (!good_fan(tie, diagram_.sites(), tie_metrics(tie), s2_)) return Rule::poor_angle;
+    if (p_.size <= 0) return Rule::none;
+    const std::size_t judged = p_.normalized_metric ? tie.sites.size() : 1;
+    const auto exact = [](double x) { return Rational(x); };
+    for (std::size_t k = 0; k < judged; ++k) {
+      const std::size_t u = static_cast<std::size_t>(tie.sites[k]);
+      const auto a = common::lift<Rational>(MetricSite{sites_.points[u], size_metrics_[u]}, exact);
+      if (common::distance2(a, tie.c.x, tie.c.y) > exact(p_.size) * exact(p_.size)) return Rule::too_large;
+    }
+    return Rule::none;
+  }
+
   // LS §9: a site at q, unless it would encroach a subsegment, which is then split in the cell q
   // would have. False when q was not inserted (the subsegment was split instead, or the run stalls).
   bool attack(const Point2<double>& q, Rule rule, double radius, const std::string& what, double displacement = 0) {
@@ -315,12 +375,15 @@ class LsVaryingRefinement {
     subsegments_.split(s, k);
   }
 
-  // Rule 6, when nothing else applies: a site whose cell holds no Voronoi vertex.
+  // Rule 6, when nothing else applies: a site whose cell holds no Voronoi vertex (of degree 3, or an
+  // exact tie).
   bool island() {
     std::vector<char> has(sites_.size(), 0);
     for (const auto& v : diagram_.vertices())
       if (v.holders > 0)
         for (int k : v.sites) has[static_cast<std::size_t>(k)] = 1;
+    for (const ExactTie& tie : ties_anywhere_)
+      for (int k : tie.sites) has[static_cast<std::size_t>(k)] = 1;
     for (std::size_t u = 0; u < has.size(); ++u) {
       if (has[u]) continue;
       // On the segment from u to its nearest other site w (in w's metric at u), where d_u = d_w.
@@ -358,11 +421,25 @@ class LsVaryingRefinement {
                  " (sites too near to tell apart, or distances that tie along a curve)";
       return;
     }
-    // Rule 8's points: the centres of the unresolved leaves that meet Ω, all of them again after
-    // every insertion (an insertion may resolve some).
+    // The unresolved leaves that meet Ω, all of them again after every insertion (an insertion may
+    // resolve some): a leaf whose candidates make an exact tie (exact_tie.hpp) holds its vertex,
+    // kept when in closed Ω, or no vertex; any other gives rule 8 its centre.
     ties_.clear();
+    exact_ties_.clear();
+    ties_anywhere_.clear();
     if (diagram_.resolved()) return;
-    for (const common::Box& b : diagram_.unresolved()) {
+    for (const auto& leaf : diagram_.unresolved()) {
+      const common::Box& b = leaf.box;
+      auto cached = tie_of_.find(leaf.candidates);  // sites keep their metrics: a set's tie never changes
+      if (cached == tie_of_.end()) cached = tie_of_.emplace(leaf.candidates, exact_tie(diagram_.sites(), leaf.candidates)).first;
+      if (const auto& tie = cached->second) {
+        const auto same = [&](const ExactTie& t) { return t.c.x == tie->c.x && t.c.y == tie->c.y; };
+        if (in_closed_box(tie->c, b) && std::none_of(ties_anywhere_.begin(), ties_anywhere_.end(), same)) {
+          ties_anywhere_.push_back(*tie);
+          if (domain_.contains(tie->c)) exact_ties_.push_back(*tie);
+        }
+        continue;
+      }
       if (domain_.contains(b) == std::optional<bool>(false)) continue;  // no vertex of the mesh there
       const Point2<double> c{b.x0 + (b.x1 - b.x0) / 2, b.y0 + (b.y1 - b.y0) / 2};
       if (std::none_of(ties_.begin(), ties_.end(), [&](const Point2<double>& t) { return t.x == c.x && t.y == c.y; })) ties_.push_back(c);
@@ -399,6 +476,9 @@ class LsVaryingRefinement {
   Subsegments subsegments_;
   std::deque<int> violators_;
   std::deque<Point2<double>> ties_;
+  std::vector<ExactTie> ties_anywhere_;  // every exact tie of the diagram (in Ω's bounding box)
+  std::vector<ExactTie> exact_ties_;    // those in closed Ω
+  std::map<std::vector<int>, std::optional<ExactTie>> tie_of_;  // by the leaf's candidates
   std::string stalled_;
   RunRecord record_;
 };

@@ -15,8 +15,10 @@
 //     ellipse, LS §9's "arcs that are ellipses") gets a site on that bisector (last);
 //   7 unwedged: a Voronoi vertex in Ω outside wedge(v, w) of two of its sites (LS Definitions 2–3:
 //     a wedge violator, since the vertex lies on the arc of v and w) gets a site (after rule 5);
-//   8 tie: where the diagram is unresolved in Ω (a vertex of degree 4 or more, which symmetric
-//     fields give: its dual is no triangle), a site, before the other violators.
+//   8 tie: where the diagram is unresolved in Ω (a vertex of degree 4 or more among different
+//     metrics, which symmetric fields give: its dual is no triangle), a site, before the other
+//     violators. Not LS §9's rule; ties among sites of one metric are kept exactly instead
+//     (exact_tie.hpp) and judged by rules 3 and 4.
 // Rules 5 to 8 cannot fire while every site has one metric (delaunay_in_metric.hpp): every arc
 // lies in its wedge, and the dual of every Voronoi vertex is a counter-clockwise triangle.
 #include <array>
