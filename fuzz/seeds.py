@@ -85,6 +85,12 @@ put("certify_simple", "folded", bytes([2, 0, 0] + [8, 8, 0, 0, 8, 0, 0, 8] + [1,
 put("json_input", "docs-oracle-input-example",
     '{"sites":  [{"x": "0", "y": "1/3", "metric": ["4", "0", "1"]}],\n'
     ' "domain": [["0","0"], ["10","0"], ["10","10"], ["0","10"]],\n "segments": [[0, 1]]}\n')
+put("json_input", "pslg-slit-and-point",
+    '{"domain": [[0,0],[1,0],[1,1],[0,1]], "points": [["1/4","1/2"],["3/4","1/2"],[0.5,0.25]],\n'
+    ' "interior_segments": [[4,5],[0,6]]}\n')
+put("json_input", "pslg-crossing-segments",
+    '{"domain": [[0,0],[1,0],[1,1],[0,1]], "points": [[0.25,0.5],[0.75,0.5],[0.5,0.25],[0.5,0.75]],\n'
+    ' "interior_segments": [[4,5],[6,7]]}\n')
 put("json_input", "three-sites-number-forms",
     '{"sites": [{"x": 0.1, "y": "1/3", "metric": [1, 0, 1]}, {"x": "1e-3", "y": 2, "metric": ["2", "-1/2", "3"]},'
     ' {"x": "-0.5", "y": "0.25", "metric": ["1e2", "0", "1e-2"]}]}\n')

@@ -26,11 +26,32 @@ class MeshReader : SchemaReader {
  public:
   using SchemaReader::SchemaReader;
 
-  // A domain file for the refiners: {"domain": [...]} (other keys of the format allowed).
-  Polygon<Rational> domain_only(const Json& doc) const {
+  // A domain file for the refiners: {"domain": [...]}, perhaps "points" and "interior_segments"
+  // (other keys of the format allowed).
+  DomainFile domain_only(const Json& doc) const {
     if (!doc.is_object()) fail("", "the top level must be an object, got " + show(doc));
-    require_keys(doc, "", {"domain"}, {"sites", "domain", "segments", "edges", "triangles"});
-    return domain(doc.at("domain"));
+    require_keys(doc, "", {"domain"}, {"sites", "domain", "segments", "edges", "triangles", "points", "interior_segments"});
+    DomainFile d;
+    d.corners = domain(doc.at("domain"));
+    if (doc.contains("points")) {
+      const Json& points = doc.at("points");
+      if (!points.is_array()) fail("points", "expected an array of points [x, y], got " + show(points));
+      for (std::size_t k = 0; k < points.size(); ++k) {
+        const std::vector<Rational> xy = numbers(points[k], 2, indexed("points", k), "a point [x, y]");
+        d.points.push_back(Point{xy[0], xy[1]});
+      }
+    }
+    if (doc.contains("interior_segments")) {
+      const std::size_t vertices = d.corners.size() + d.points.size();
+      const Json& segments = doc.at("interior_segments");
+      if (!segments.is_array()) fail("interior_segments", "expected an array of vertex-index pairs [i, j], got " + show(segments));
+      for (std::size_t k = 0; k < segments.size(); ++k) {
+        const std::vector<int> ends = indices(segments[k], 2, vertices, indexed("interior_segments", k),
+                                              "[i, j] with two vertex indices (the corners, then the points)");
+        d.interior_segments.emplace_back(ends[0], ends[1]);
+      }
+    }
+    return d;
   }
 
   Mesh<Rational> mesh(const Json& doc) const {
@@ -161,7 +182,7 @@ Mesh<Rational> read_triangle_mesh_file(const std::string& path) {
   return m;
 }
 
-Polygon<Rational> read_domain_file(const std::string& path) { return MeshReader(path).domain_only(parse_file(path)); }
+DomainFile read_domain_file(const std::string& path) { return MeshReader(path).domain_only(parse_file(path)); }
 
 std::string mesh_json(const Mesh<Rational>& m) {
   if (m.metrics.size() != m.sites.size())

@@ -30,8 +30,18 @@ geometry::Mesh<Rational> read_mesh_json(std::istream& in, const std::string& sou
 geometry::Mesh<Rational> read_mesh_json_file(const std::string& path);
 // The same, for a mesh: "triangles" must be present and non-empty.
 geometry::Mesh<Rational> read_triangle_mesh_file(const std::string& path);
-// The validated "domain" of a file in this format ("sites" may be absent): for the refiners.
-geometry::Polygon<Rational> read_domain_file(const std::string& path);
+// A refiner's domain: the "domain" polygon of a file in this format ("sites" may be absent), with
+// the rest of a PSLG in two optional keys of its own:
+//    "points": [[X, Y], ...]                    vertices inside Ω
+//    "interior_segments": [[i, j], ...]         segments between vertices: i < n a corner, else
+//                                               point i − n (n corners)
+// Read and indexed here; their geometry against Ω is the refiners' to check (refiners/common/domain).
+struct DomainFile {
+  geometry::Polygon<Rational> corners;
+  std::vector<predicates::Point2<Rational>> points;
+  std::vector<std::pair<int, int>> interior_segments;
+};
+DomainFile read_domain_file(const std::string& path);
 
 // The file of a mesh, every number written as its exact text (a decimal expansion, or a fraction),
 // so that `anisocert certify` reads exactly the numbers written (a refiner's doubles included).

@@ -21,7 +21,8 @@
 // the oracle's D|Ω of the final sites has no orphans, every arc and vertex wedged, Theorem 7's
 // preconditions, a dual that is a triangulation of Ω and equals the mesh triangle for triangle;
 // every angle is at least θ_bound and every circumradius at most `size` in the metric, decided
-// exactly by closed forms here (not by the refiner's code); every subsegment is a mesh edge.
+// exactly by closed forms here (not by the refiner's code); every segment of the PSLG (edges of Ω,
+// interior segments) is a union of mesh edges (decided from the domain).
 #include "fields/registry.hpp"
 #include "geometry/mesh.hpp"
 #include "oracle/diagram/diagram.hpp"
@@ -31,6 +32,7 @@
 #include "property_tests/generators/metrics.hpp"
 #include "property_tests/ls_same_run.hpp"
 #include "property_tests/oracle_certified.hpp"
+#include "property_tests/pslg_domain.hpp"
 #include "refiners/ls/ls_refiner.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
 #include "theory/ls_theorem11.hpp"
@@ -53,12 +55,13 @@ struct Run {
   refiners::ls::LsParameters p;
   refiners::ls::LsResult r;
   predicates::Sym2<double> M;
+  std::optional<refiners::common::Domain> X;  // Ω with the rest of the PSLG
   std::string domain, separation;
 };
 
 // A random constant metric (eigenvalues 1 to 100, or with a ratio up to 10², any orientation; a
-// diagonal one on combs), a random domain (convex or not, with or without acute corners, or a comb
-// with narrow slots), θ_bound from 5° to 30° (above 20.7° Theorem 11 gives no guarantee) and a size
+// diagonal one on combs), a random domain (convex or not, with or without acute corners, with or
+// without interior points and segments; or a comb with narrow slots), θ_bound from 5° to 30° (above 20.7° Theorem 11 gives no guarantee) and a size
 // bound or none.
 Run random_run() {
   Run run;
@@ -74,10 +77,11 @@ Run random_run() {
   run.p.theta_bound = *rc::gen::elementOf(std::vector<double>{5, 10, 15, 20, 20.5, 25, 30});
   run.p.size = *rc::gen::elementOf(std::vector<double>{0, 0, 0.5, 1, 2});
   run.p.max_vertices = 400, run.p.max_seconds = 1e9;
-  const refiners::common::Domain domain(corners);
+  run.X.emplace(kind == 4 ? refiners::common::Domain(corners) : gen::domain_with_interior(corners));
+  const refiners::common::Domain& domain = *run.X;
   const auto field = fields::make_field("constant", {{"m11", run.M.m11}, {"m12", run.M.m12}, {"m22", run.M.m22}});
   run.r = refiners::ls::refine_ls(domain, field, run.p);
-  const auto t11 = refiners::ls::theorem11_conditions(domain, std::vector(corners.size(), run.M), run.p.theta_bound);
+  const auto t11 = refiners::ls::theorem11_conditions(domain, std::vector(domain.vertices().size(), run.M), run.p.theta_bound);
   run.separation = !t11.theta_admissible             ? "theta_bound above Theorem 11's"
                    : t11.corners_failing.empty() ? "separation holds"
                                                  : "separation fails";
@@ -159,6 +163,7 @@ struct TauBoundedField {
   std::vector<predicates::Sym2<double>> metrics;
   fields::MetricField field;
   std::string kind;
+  double cx = 0, cy = 0, r = 0;  // the disc of metrics[0] when there are two
 };
 
 TauBoundedField tau_bounded_field(const std::vector<predicates::Point2<double>>& corners, bool diagonal, const Rational& gamma_lo2) {
@@ -179,7 +184,9 @@ TauBoundedField tau_bounded_field(const std::vector<predicates::Point2<double>>&
   const double cx = x0 + (x1 - x0) * *rc::gen::inRange(0, 101) / 100, cy = y0 + (y1 - y0) * *rc::gen::inRange(0, 101) / 100;
   const double r = std::max(x1 - x0, y1 - y0) * *rc::gen::inRange(10, 71) / 100;
   fields::MetricField field{"two metrics", {}, [=](double x, double y) { return (x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r ? in : out; }};
-  return {{in, out}, field, "two metrics"};
+  RC_LOG() << std::hexfloat << "M_in " << in.m11 << " " << in.m12 << " " << in.m22 << ", M_out " << out.m11 << " " << out.m12 << " " << out.m22
+           << " off the disc (x - " << cx << ")² + (y - " << cy << ")² <= " << r << "²" << std::defaultfloat << "\n";
+  return {{in, out}, field, "two metrics", cx, cy, r};
 }
 
 // A run under Theorem 11's conditions: θ_bound below 20.7°, no size rule, a comb (narrow slots,
@@ -290,6 +297,7 @@ RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
 RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
   const Theorem11Run run = theorem11_run();
   const auto& r = run.r;
+  RC_LOG() << r.stop_reason << "\n";
   RC_ASSERT(r.consistent);
   const long double g_lo = run.gamma_lo;
   long double lmax = 0;  // √λ_max bounds the M-length of a Euclidean unit vector
@@ -397,12 +405,10 @@ RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
   const auto& M = m.metrics[0];
   const Rational s2 = sin2_above(run.p.theta_bound), size2 = rational_from_double(run.p.size) * rational_from_double(run.p.size);
   const Rational det = M.m11 * M.m22 - M.m12 * M.m12;
-  std::set<std::pair<int, int>> edges;
   for (const auto& t : r.mesh.triangles) {
     const auto &a = m.sites[t[0]], &b = m.sites[t[1]], &c = m.sites[t[2]];
     for (int i = 0; i < 3; ++i) {
       RC_ASSERT(predicates::angle_at_least_arcsin(m.sites[t[(i + 2) % 3]], m.sites[t[i]], m.sites[t[(i + 1) % 3]], M, s2));
-      edges.insert(std::minmax(t[i], t[(i + 1) % 3]));
     }
     if (run.p.size > 0) {
       // Circumradius in M, R = ℓ_ab ℓ_bc ℓ_ca / (4 K_M), K_M = √det M · |orient| / 2:
@@ -411,5 +417,5 @@ RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
       RC_ASSERT(d2(M, a, b) * d2(M, b, c) * d2(M, c, a) <= 4 * size2 * det * orient * orient);
     }
   }
-  for (const auto& [u, v] : r.mesh.segments) RC_ASSERT(edges.count(std::minmax(u, v)) == 1u);
+  gen::assert_pslg_segments_are_edges(m, *run.X);
 }

@@ -6,9 +6,9 @@
 // preconditions, a dual that is a triangulation of Ω and equals the mesh triangle for triangle;
 // every angle is at least θ_bound in the metric of each of the triangle's three vertices, decided
 // here exactly; every Voronoi vertex of D|Ω is within `size` of each of its three sites in the
-// field's metric at that site, decided exactly at the oracle's vertex; every subsegment is a mesh
-// edge. Random domains (convex or not), smooth random fields (generators/fields.hpp, mild and
-// strong), θ_bound from 5° to 20°, a size bound or none; half the runs in LS §9's variation
+// field's metric at that site, decided exactly at the oracle's vertex; every segment of the PSLG
+// is a union of mesh edges (decided from the domain). Random domains (convex or not, with or without interior points and segments), smooth
+// random fields (generators/fields.hpp, mild and strong), θ_bound from 5° to 20°, a size bound or none; half the runs in LS §9's variation
 // (--normalized-metric), whose mesh metrics must be M′ = det(M)^(−1/2) M (fields/normalized.hpp) at
 // every site, the field's M elsewhere. A stopped run names its budget or a stall the refiner documents.
 #include "fields/normalized.hpp"
@@ -17,6 +17,7 @@
 #include "oracle/diagram/input.hpp"
 #include "property_tests/ls_same_run.hpp"
 #include "property_tests/oracle_certified.hpp"
+#include "property_tests/pslg_domain.hpp"
 #include "property_tests/generators/domains.hpp"
 #include "property_tests/generators/fields.hpp"
 #include "refiners/ls/ls_refiner.hpp"
@@ -65,7 +66,7 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
   p.max_vertices = 250, p.max_seconds = 5;
   p.normalized_metric = *rc::gen::arbitrary<bool>();
   RC_TAG(p.normalized_metric ? "normalized metric" : "metric");
-  const refiners::common::Domain domain(corners);
+  const refiners::common::Domain domain = gen::domain_with_interior(corners);
   const refiners::ls::LsResult r = refiners::ls::refine_ls(domain, f.field(), p);
   if (!r.consistent) {
     RC_LOG() << r.stop_reason << "\n";
@@ -91,14 +92,11 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
                                                         -certified->diagram.shear)) != Sign::positive);
 
   const Rational s2 = sin2_above(p.theta_bound);
-  std::set<std::pair<int, int>> edges;
   for (const auto& t : r.mesh.triangles)
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 3; ++i)
       for (int k : t)  // in the metric of each vertex
         RC_ASSERT(predicates::angle_at_least_arcsin(m.sites[t[(i + 2) % 3]], m.sites[t[i]], m.sites[t[(i + 1) % 3]], m.metrics[k], s2));
-      edges.insert(std::minmax(t[i], t[(i + 1) % 3]));
-    }
-  for (const auto& [u, v] : r.mesh.segments) RC_ASSERT(edges.count(std::minmax(u, v)) == 1u);
+  gen::assert_pslg_segments_are_edges(m, domain);
 }
 
 // The filters only speed up (DESIGN.md): with LsParameters::filters off, encroachment along
@@ -112,7 +110,7 @@ RC_GTEST_PROP(LS_Filters, VaryingFieldFilteredRunIsTheExactRun, ()) {
   p.size = *rc::gen::elementOf(std::vector<double>{0, 1, 2, 4});
   p.normalized_metric = *rc::gen::arbitrary<bool>();
   p.max_vertices = 120, p.max_seconds = 1e9;
-  const refiners::common::Domain domain(corners);
+  const refiners::common::Domain domain = gen::domain_with_interior(corners);
   const auto filtered = refiners::ls::refine_ls(domain, f.field(), p);
   p.filters = false;
   const auto exact = refiners::ls::refine_ls(domain, f.field(), p);

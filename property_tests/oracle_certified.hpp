@@ -2,19 +2,23 @@
 // What "certified by the oracle" means for a refiner's finished run (issue 16): the exact D|Ω of
 // the mesh's sites has no orphans, every arc and vertex wedged, LS Theorem 7's preconditions, and
 // a dual that is a triangulation of Ω and equals the mesh triangle for triangle; and the mesh's
-// triangles tile Ω: each counter-clockwise, their areas summing to Ω's, exactly (the polygon of a
-// vertex of degree 4 or more split twice, or left out, changes the sum; the comparison with the
-// dual, which accepts any three owners of such a vertex, does not see it). Returns the exact
+// triangles tile Ω, exactly: each counter-clockwise, every directed edge once, an edge whose
+// reverse is no triangle's on ∂Ω, and their areas summing to Ω's (the comparison with the dual
+// accepts any three owners of a vertex of degree 4 or more, so it does not see such a polygon
+// split twice, left out, or split into overlapping triangles). Returns the exact
 // mesh and diagram for the property's own checks, or nothing (tagged) when the oracle refuses the input as
 // beyond what it supports (std::domain_error: distances that doubles cannot tell apart).
 #include "geometry/mesh.hpp"
+#include "geometry/polygon.hpp"
 #include "oracle/diagram/diagram.hpp"
 #include "oracle/diagram/mesh_dual.hpp"
 
 #include <rapidcheck.h>
 
 #include <optional>
+#include <set>
 #include <stdexcept>
+#include <utility>
 
 namespace anisocert::gen {
 
@@ -48,6 +52,18 @@ inline std::optional<Certified> assert_dual_of_exact_diagram(const geometry::Mes
   const oracle::MeshDual dual = oracle::compare_with_dual(d, mesh.triangles, 3);
   for (const auto& w : dual.not_dual_witnesses) RC_LOG() << w.why << "\n";
   RC_ASSERT(dual.is_dual());
+  std::set<std::pair<int, int>> directed;
+  for (const auto& t : mesh.triangles)
+    for (std::size_t i = 0; i < 3; ++i) RC_ASSERT(directed.insert({t[i], t[(i + 1) % 3]}).second);
+  const std::size_t n = m.domain.size();
+  for (const auto& [a, b] : directed) {
+    if (directed.count({b, a})) continue;
+    bool on_boundary = false;
+    for (std::size_t e = 0; e < n && !on_boundary; ++e)
+      on_boundary = geometry::on_segment(m.sites[static_cast<std::size_t>(a)], m.domain[e], m.domain[(e + 1) % n]) &&
+                    geometry::on_segment(m.sites[static_cast<std::size_t>(b)], m.domain[e], m.domain[(e + 1) % n]);
+    RC_ASSERT(on_boundary);
+  }
   Rational twice_area(0), twice_omega(0);
   for (const auto& t : mesh.triangles) {
     const auto &a = m.sites[static_cast<std::size_t>(t[0])], &b = m.sites[static_cast<std::size_t>(t[1])], &c = m.sites[static_cast<std::size_t>(t[2])];

@@ -4,7 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <tuple>
 
 namespace {
 
@@ -156,6 +158,43 @@ TEST(CliMesh, NormalizedMetricWritesMPrime) {
   const Outcome star = run("refine --normalized-metric --quiet -o " + base + "_never.json");
   EXPECT_EQ(star.exit_code, 2);
   EXPECT_NE(star.err.find("--normalized-metric is not a parameter of --algo star"), std::string::npos) << star.err;
+  EXPECT_FALSE(std::filesystem::exists(base + "_never.json"));
+}
+
+// `refine --domain` with the rest of a PSLG (io/mesh_json.hpp: "points", "interior_segments"): a
+// slit y = ½ from x = ¼ to ¾ and a point below it. The LS refiner's mesh has every input vertex as
+// a site, and the certifier finds its segments (the slit's pieces among them) unions of edges and
+// the mesh a triangulation of the square. The star refiner refuses interior features by name, and
+// so does every refiner a PSLG whose segments cross; exit 2, nothing written.
+TEST(CliMesh, RefineTakesAPslg) {
+  const std::string base = ::testing::TempDir() + "anisocert_pslg_" + std::to_string(getpid());
+  std::ofstream(base + "_slit.json") << R"({"domain": [[0,0],[1,0],[1,1],[0,1]], "points": [[0.25,0.5],[0.75,0.5],[0.5,0.25]],
+                                           "interior_segments": [[4,5]]})";
+  const Outcome r = run("refine --algo ls --field constant --size 0.25 --quiet --domain " + base + "_slit.json -o " + base + ".json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  std::ifstream in(base + ".json");
+  const Json mesh = Json::parse(in);
+  for (const auto& [k, x, y] : {std::tuple{4, "0.25", "0.5"}, std::tuple{5, "0.75", "0.5"}, std::tuple{6, "0.5", "0.25"}}) {
+    EXPECT_EQ(mesh["sites"][k]["x"], x);
+    EXPECT_EQ(mesh["sites"][k]["y"], y);
+  }
+  std::size_t on_slit = 0;
+  for (const auto& s : mesh["segments"])
+    on_slit += mesh["sites"][s[0].get<int>()]["y"] == "0.5" && mesh["sites"][s[1].get<int>()]["y"] == "0.5";
+  EXPECT_GE(on_slit, 2u);
+  const Outcome c = run("certify " + base + ".json");
+  EXPECT_NE(c.out.find("valid (a triangulation of the domain, segments are unions of edges): holds"), std::string::npos) << c.out;
+
+  const Outcome star = run("refine --quiet --domain " + base + "_slit.json -o " + base + "_never.json");
+  EXPECT_EQ(star.exit_code, 2);
+  EXPECT_NE(star.err.find("--algo star meshes Ω with its boundary only"), std::string::npos) << star.err;
+  std::ofstream(base + "_cross.json") << R"({"domain": [[0,0],[1,0],[1,1],[0,1]],
+      "points": [[0.25,0.5],[0.75,0.5],[0.5,0.25],[0.5,0.75]], "interior_segments": [[4,5],[6,7]]})";
+  const Outcome cross = run("refine --algo ls --quiet --domain " + base + "_cross.json -o " + base + "_never.json");
+  EXPECT_EQ(cross.exit_code, 2);
+  EXPECT_NE(cross.err.find("interior segment 1 from point 2 (0.5, 0.25) to point 3 (0.5, 0.75) meets interior segment 0"),
+            std::string::npos) << cross.err;
+  EXPECT_EQ(std::count(cross.err.begin(), cross.err.end(), '\n'), 1);
   EXPECT_FALSE(std::filesystem::exists(base + "_never.json"));
 }
 

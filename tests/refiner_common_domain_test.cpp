@@ -50,3 +50,69 @@ TEST(DomainContainsBox, AnswersOnlyWhatEveryPointOfTheBoxAgreesWith) {
 }
 
 }  // namespace
+
+namespace {
+
+using anisocert::refiners::common::Domain;
+using anisocert::refiners::common::DomainError;
+
+// The message Domain gives for a PSLG on the unit square, or "" when it accepts it.
+std::string refusal(const std::vector<anisocert::predicates::Point2<double>>& points, const std::vector<std::pair<int, int>>& segments) {
+  try {
+    (void)Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, points, segments);
+    return "";
+  } catch (const DomainError& e) {
+    return e.what();
+  }
+}
+
+// The rest of a PSLG (LS §9's input: points inside Ω, interior segments between its vertices) is
+// checked exactly and refused by name: each rule of domain.hpp against one input that breaks only
+// it; a slit, a segment from a corner and a point on no segment pass. X's segments are the edges,
+// then the interior ones.
+TEST(DomainInterior, EachRuleRefusesByName) {
+  EXPECT_EQ(refusal({{0.25, 0.5}, {0.75, 0.5}, {0.5, 0.25}}, {{4, 5}, {0, 6}}), "");
+  const Domain d({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0.25, 0.5}, {0.75, 0.5}}, {{4, 5}, {2, 5}});
+  EXPECT_EQ(d.vertices().size(), 6u);
+  EXPECT_EQ(d.segment_count(), 6u);
+  EXPECT_EQ(d.segment_ends(3), (std::pair<int, int>{3, 0}));
+  EXPECT_EQ(d.segment_ends(5), (std::pair<int, int>{2, 5}));
+  EXPECT_TRUE(d.has_interior());
+  EXPECT_FALSE(Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}).has_interior());
+
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {refusal({{1.5, 0.5}}, {}), "point 0 (1.5, 0.5) lies outside the domain"},
+      {refusal({{0.5, 0}}, {}), "point 0 (0.5, 0) lies on domain edge 0; make it a corner"},
+      {refusal({{0.5, 0.5}, {0.5, 0.5}}, {}), "point 1 (0.5, 0.5) is point 0 (0.5, 0.5) again"},
+      {refusal({{0.5, 0.5}}, {{4, 7}}), "interior segment 0 names vertex 7, but there are 5"},
+      {refusal({{0.5, 0.5}}, {{4, 4}}), "joins point 0 (0.5, 0.5) to itself"},
+      {refusal({{0.5, 0.5}}, {{0, 2}}), "passes through point 0 (0.5, 0.5)"},
+      {refusal({}, {{1, 0}}), "interior segment 0 from corner 1 (1, 0) to corner 0 (0, 0) is domain edge 0"},
+      {refusal({{0.25, 0.5}, {0.75, 0.5}, {0.5, 0.25}, {0.5, 0.75}}, {{4, 5}, {6, 7}}), "meets interior segment 0"},
+      {refusal({{0.25, 0.5}, {0.75, 0.5}}, {{4, 5}, {5, 4}}), "is interior segment 0 again"},
+      {refusal({{0.25, 0.5}, {0.75, 0.5}, {0.5, 0.5}}, {{4, 5}, {6, 1}}), "passes through point 2 (0.5, 0.5)"},
+      {refusal({{0.1, 0.5}}, {{4, 0}}), "can be halved exactly in doubles only"},
+  };
+  for (const auto& [got, want] : cases) EXPECT_NE(got.find(want), std::string::npos) << "got: " << got << "\nwant: " << want;
+}
+
+// On the L: a segment across the notch, and one through the reflex corner, are refused; from a
+// corner or the reflex corner into Ω is fine.
+TEST(DomainInterior, SegmentsStayInsideTheDomain) {
+  const std::vector<anisocert::predicates::Point2<double>> L{{0, 0}, {1, 0}, {1, 0.5}, {0.5, 0.5}, {0.5, 1}, {0, 1}};
+  const auto refused = [&](const std::vector<anisocert::predicates::Point2<double>>& p, const std::vector<std::pair<int, int>>& s) {
+    try {
+      (void)Domain(L, p, s);
+      return std::string();
+    } catch (const DomainError& e) {
+      return std::string(e.what());
+    }
+  };
+  EXPECT_NE(refused({}, {{2, 4}}).find("runs outside the domain"), std::string::npos);
+  EXPECT_EQ(refused({{0.75, 0.25}}, {{6, 2}}), "");
+  EXPECT_EQ(refused({{0.25, 0.25}}, {{3, 6}}), "");
+  // Through reflex corner 3: touches edge 2 there, at no end of its own.
+  EXPECT_NE(refused({{0.25, 0.75}, {0.75, 0.25}}, {{6, 7}}).find("meets domain edge 2 elsewhere than at a shared end"), std::string::npos);
+}
+
+}  // namespace

@@ -192,6 +192,25 @@ TEST(SplitPoint, IsADoubleExactlyOnTheSegmentInsideTheRange) {
   }
 }
 
+// The run ended on the (k + 1) × (k + 1) grid of step 1/k on the unit square, each square split
+// into two triangles, every one a tie of the oracle's degree-4 vertex, the dual of the exact diagram.
+void expect_grid_of_ties(const refiners::ls::LsResult& r, int k) {
+  std::set<std::pair<double, double>> sites;
+  for (const auto& s : r.mesh.sites) {
+    EXPECT_EQ(s.x * k, std::floor(s.x * k));
+    EXPECT_EQ(s.y * k, std::floor(s.y * k));
+    sites.insert({s.x, s.y});
+  }
+  const std::size_t n = static_cast<std::size_t>(k) + 1;
+  EXPECT_EQ(sites.size(), n * n);
+  ASSERT_EQ(r.mesh.triangles.size(), 2 * (n - 1) * (n - 1));
+  const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
+  const oracle::MeshDual dual = oracle::compare_with_dual(d, r.mesh.triangles, 3);
+  EXPECT_TRUE(dual.is_dual());
+  EXPECT_EQ(dual.ties, r.mesh.triangles.size());
+  EXPECT_TRUE(d.theorem7.preconditions_hold);
+}
+
 // M ≡ I on the unit square with size 0.05. Halving splits keep the sites on a grid of step h,
 // whose right isosceles triangles have circumradius h/√2: 1/8 gives 0.088 > 0.05, 1/16 gives
 // 0.044, so the run ends on the 17 × 17 grid of step 1/16, every Voronoi vertex with four owners
@@ -201,18 +220,7 @@ TEST(LsRefiner, IsotropicSquareIsTheDualWithTies) {
   p.size = 0.05;
   const auto r = refiners::ls::refine_ls(refiners::common::Domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), fields::make_field("constant", {}), p);
   ASSERT_TRUE(r.consistent) << r.stop_reason;
-  std::set<std::pair<double, double>> sites;
-  for (const auto& s : r.mesh.sites) {
-    EXPECT_EQ(s.x * 16, std::floor(s.x * 16));
-    EXPECT_EQ(s.y * 16, std::floor(s.y * 16));
-    sites.insert({s.x, s.y});
-  }
-  EXPECT_EQ(sites.size(), 17u * 17u);
-  const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
-  const oracle::MeshDual dual = oracle::compare_with_dual(d, r.mesh.triangles, 3);
-  EXPECT_TRUE(dual.is_dual());
-  EXPECT_EQ(dual.ties, r.mesh.triangles.size());
-  EXPECT_TRUE(d.theorem7.preconditions_hold);
+  expect_grid_of_ties(r, 16);
 }
 
 // Four points on the ellipse 4x² + y² = 1 of M = diag(4, 1) (the closed form: (±½, 0), (0, ±1)) tie
@@ -257,19 +265,50 @@ TEST(LsRefiner, VaryingPathKeepsTheExactTiesOfOneMetric) {
     p.size = size;
     const auto r = refiners::ls::refine_ls(square, identity, p);
     ASSERT_TRUE(r.consistent) << r.stop_reason;
-    const std::size_t n = size == 0 ? 2 : 3;
-    EXPECT_EQ(r.mesh.sites.size(), n * n);
-    for (const auto& s : r.mesh.sites) {
-      EXPECT_EQ(s.x * 2, std::floor(s.x * 2));
-      EXPECT_EQ(s.y * 2, std::floor(s.y * 2));
-    }
-    ASSERT_EQ(r.mesh.triangles.size(), 2 * (n - 1) * (n - 1));
-    const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
-    const oracle::MeshDual dual = oracle::compare_with_dual(d, r.mesh.triangles, 3);
-    EXPECT_TRUE(dual.is_dual());
-    EXPECT_EQ(dual.ties, r.mesh.triangles.size());
-    EXPECT_TRUE(d.theorem7.preconditions_hold);
+    expect_grid_of_ties(r, size == 0 ? 1 : 2);
   }
+}
+
+// Found by LS_S9 (1 run in about 40,000): on this comb, M ≡ I, θ_bound = 30°, size ½, the site
+// (1/16, 3/16) split on the right edge of the left tooth lies exactly on the diametral circle of
+// the middle tooth's left edge, (1/8, 1/8)–(1/8, ¼), across the slot: its closed cell touches that
+// subsegment at the midpoint, from outside Ω. Insertion queued only subsegments a new cell meets in
+// more than a point, so that one was never tested again: the run "finished" with the triangle of
+// the two edge ends and the site, dual to the Voronoi vertex (1/8, 3/16) on ∂Ω, spanning the slot.
+// Now every touched subsegment is tested again; the run is the oracle's dual, a triangulation of Ω.
+TEST(LsRefiner, ATouchAcrossASlotIsTestedAgain) {
+  refiners::ls::LsParameters p;
+  p.theta_bound = 30, p.size = 0.5;
+  const refiners::common::Domain comb({{0, 0}, {0.25, 0}, {0.25, 0.25}, {0.21875, 0.25}, {0.21875, 0.125}, {0.1875, 0.125}, {0.1875, 0.25},
+                                       {0.125, 0.25}, {0.125, 0.125}, {0.0625, 0.125}, {0.0625, 0.25}, {0, 0.25}});
+  const auto r = refiners::ls::refine_ls(comb, fields::make_field("constant", {}), p);
+  ASSERT_TRUE(r.consistent) << r.stop_reason;
+  const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
+  EXPECT_TRUE(d.dual_check.is_triangulation);
+  EXPECT_TRUE(oracle::compare_with_dual(d, r.mesh.triangles, 3).is_dual());
+  oracle::CertifyOptions o;
+  o.uniform = false, o.metric = false;
+  EXPECT_TRUE(oracle::certify_mesh(geometry::exact(r.mesh), o).valid_holds());
+}
+
+// Found by LS_L17_L21_L23 (1 run in about 60,000): a tooth [0, 1/32] × [0, ¼], the field
+// diag(1, 4) on a disc of radius 0.025 about the origin and diag(m, 4m) off it (τ ≤ γ), θ_bound =
+// 15°, no size rule. The varying path judges encroachment by closed cells, and a site of the outer
+// metric ended exactly on the diametral ellipse of a subsegment of the left edge: its cell touched
+// the subsegment at the midpoint alone. The split looked for a point strictly inside that
+// one-point range, found none and stalled ("no double point"), although the midpoint is a double
+// of the edge's grid. A one-point range now offers its point.
+TEST(LsRefiner, ACellTouchingAtOnePointIsSplitThere) {
+  refiners::ls::LsParameters p;
+  p.theta_bound = 15, p.size = 0;
+  const predicates::Sym2<double> in{1, 0, 4}, out{0x1.ed38e3120d90dp-1, 0, 0x1.ed38e3120d90dp+1};
+  const double radius = 0x1.999999999999ap-6;
+  const fields::MetricField field{"two metrics", {}, [=](double x, double y) { return x * x + y * y <= radius * radius ? in : out; }};
+  const auto r = refiners::ls::refine_ls(refiners::common::Domain({{0, 0}, {0.03125, 0}, {0.03125, 0.25}, {0, 0.25}}), field, p);
+  ASSERT_TRUE(r.consistent) << r.stop_reason;
+  const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
+  EXPECT_TRUE(d.dual_check.is_triangulation);
+  EXPECT_TRUE(oracle::compare_with_dual(d, r.mesh.triangles, 3).is_dual());
 }
 
 // A metric stretched 10³ : 1 (M = diag(10⁶, 1)), θ_bound = 5°: the ghosts move away with the

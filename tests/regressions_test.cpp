@@ -76,7 +76,8 @@ void run_diagram(const fs::path& dir, const Json& c) {
 }
 
 void run_refine(const fs::path& dir, const Json& c) {
-  const geometry::Polygon<Rational> corners = io::read_domain_file((dir / c.at("domain").get<std::string>()).string());
+  const io::DomainFile input = io::read_domain_file((dir / c.at("domain").get<std::string>()).string());
+  const geometry::Polygon<Rational>& corners = input.corners;
   for (int k : c.value("reflex_corners", std::vector<int>{})) {  // the data still exercises what it caught
     const std::size_t m = corners.size();
     ASSERT_EQ(predicates::orientation(corners[(k + m - 1) % m], corners[k], corners[(k + 1) % m]), Sign::negative)
@@ -91,7 +92,8 @@ void run_refine(const fs::path& dir, const Json& c) {
   for (const Json& params : c.at("params")) {
     SCOPED_TRACE("field parameters " + params.dump());
     const fields::MetricField field = fields::make_field(c.at("field").get<std::string>(), params.get<fields::Parameters>());
-    const refiners::Run run = entry->run(refiners::common::Domain::from_exact(corners), field, values, budget, 1, {});
+    const refiners::Run run =
+        entry->run(refiners::common::Domain::from_exact(corners, input.points, input.interior_segments), field, values, budget, 1, {});
     EXPECT_EQ(run.result.consistent, e.at("consistent").get<bool>()) << run.result.stop_reason;
     if (e.contains("certified")) {
       oracle::CertifyOptions o;

@@ -46,10 +46,10 @@ int run_refine(const RefineOptions& o) {
   for (const auto& [name, option] : o.options)
     if (option->count() > 0 && !values.count(name))
       throw UsageError("--" + name + " is not a parameter of --algo " + o.algo);
-  geometry::Polygon<Rational> corners = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  io::DomainFile input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, {}};
   if (o.domain != "square") {
     try {
-      corners = io::read_domain_file(o.domain);
+      input = io::read_domain_file(o.domain);
     } catch (const io::InputError& e) {
       throw UsageError(e.what());
     }
@@ -58,7 +58,7 @@ int run_refine(const RefineOptions& o) {
   const auto progress = progress_printer(o.quiet);
   refiners::Run run;
   try {
-    const refiners::common::Domain domain = refiners::common::Domain::from_exact(corners);
+    const refiners::common::Domain domain = refiners::common::Domain::from_exact(input.corners, input.points, input.interior_segments);
     run = entry->run(domain, field, values, o.budget, o.seed, progress);
   } catch (const refiners::common::DomainError& e) {  // e.g. a domain the refiner cannot split exactly
     throw UsageError(o.domain + ": " + e.what());
@@ -119,7 +119,9 @@ void add_refine(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<RefineOptions>();
   CLI::App* c = app.add_subcommand("refine", description());
   c->add_option("--algo", o->algo, "the refiner: " + names_of(refiners::refiner_names()))->capture_default_str();
-  c->add_option("--domain", o->domain, "square, or a JSON file with a \"domain\" polygon")->capture_default_str();
+  c->add_option("--domain", o->domain,
+                "square, or a JSON file with a \"domain\" polygon, perhaps with \"points\" and \"interior_segments\" (a PSLG; --algo ls)")
+      ->capture_default_str();
   c->add_option("--field", o->field, "the metric field: " + names_of(fields::field_names()) + " or background:MESH[:METRIC]")->capture_default_str();
   c->add_option("--param", o->params, "a field parameter name=value (repeatable)");
   // A parameter several refiners share (e.g. --size) is one option: the first refiner's help and

@@ -1,6 +1,7 @@
 // The project's JSON input (docs/fuzzing.md § Parsers): one text read as a site set or mesh
-// (read_mesh_json, the input of `diagram`), as a domain file (read_domain_file, `refine --domain`)
-// and as the mesh format "json" (the properties of fuzz/support/mesh_reader_check.hpp: one short
+// (read_mesh_json, the input of `diagram`), as a domain file (read_domain_file, `refine --domain`,
+// then refiners::common::Domain, which checks a PSLG's points and interior segments exactly, and
+// refuses in one short line too) and as the mesh format "json" (the properties of fuzz/support/mesh_reader_check.hpp: one short
 // line for bad input, an exact round trip through mesh_json, a small mesh certified).
 // A site set read is also written back by mesh_json and read again, unchanged.
 // Limit: 256 KiB (-max_len in fuzz/campaign): room for JSON nested tens of thousands deep.
@@ -9,6 +10,7 @@
 #include "fuzz/support/mesh_reader_check.hpp"
 #include "fuzz/support/message_contract.hpp"
 #include "io/mesh_json.hpp"
+#include "refiners/common/domain.hpp"
 
 #include <sstream>
 
@@ -35,9 +37,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     anisocert::fuzz::require_one_short_line(e.what(), "fuzz-input");
   }
   try {
-    (void)anisocert::io::read_domain_file(anisocert::fuzz::write_scratch(".json", text));
+    const auto d = anisocert::io::read_domain_file(anisocert::fuzz::write_scratch(".json", text));
+    (void)anisocert::refiners::common::Domain::from_exact(d.corners, d.points, d.interior_segments);
   } catch (const anisocert::io::InputError& e) {
     anisocert::fuzz::require_one_short_line(e.what(), "fuzz-input");
+  } catch (const anisocert::refiners::common::DomainError& e) {
+    anisocert::fuzz::require_one_short_line(e.what(), "");
   }
   static const anisocert::fuzz::MeshReaderCase json{"json", {".json"}, "", false};
   anisocert::fuzz::check_mesh_reader(json, data, size);

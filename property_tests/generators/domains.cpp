@@ -52,4 +52,15 @@ std::vector<predicates::Point2<double>> random_comb() {
   return p;
 }
 
+PslgInterior random_pslg_interior(std::size_t n) {
+  PslgInterior x;
+  if (*rc::gen::arbitrary<bool>()) return x;
+  const int k = *rc::gen::inRange(1, 4);
+  for (int i = 0; i < k; ++i) x.points.push_back({*rc::gen::inRange(-8, 9) / 32.0, *rc::gen::inRange(-8, 9) / 32.0});
+  const int first = static_cast<int>(n);
+  for (int i = 0; i + 1 < k; ++i)
+    if (i == 0 || *rc::gen::arbitrary<bool>()) x.segments.emplace_back(first + i, first + i + 1);
+  return x;
+}
+
 }  // namespace anisocert::gen

@@ -3,6 +3,7 @@
 // every edge can be split exactly many times (refiners/common/exact_split.hpp).
 #include "predicates/point.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace anisocert::gen {
@@ -19,5 +20,16 @@ std::vector<predicates::Point2<double>> random_domain(bool reflex, bool obtuse_c
 // between them 1/32 to 1/8, heights 1/8 to 1/2), so that non-adjacent edges come close (narrow
 // slots) while every corner is a right angle, also in any diagonal metric.
 std::vector<predicates::Point2<double>> random_comb();
+
+// The rest of a random PSLG for a random_domain of n corners (LS §9's input, refiners/common/
+// domain.hpp): none (half the draws), or one to three points on the 1/32 grid in [−¼, ¼]² (inside
+// every random_domain) and interior segments between consecutive ones, the first two always
+// joined (vertex indices: the n corners, then the points). Not checked here: a draw with two points at one place, or a point on
+// the other segment, is the test's to drop (Domain refuses it by name).
+struct PslgInterior {
+  std::vector<predicates::Point2<double>> points;
+  std::vector<std::pair<int, int>> segments;
+};
+PslgInterior random_pslg_interior(std::size_t n);
 
 }  // namespace anisocert::gen

@@ -15,7 +15,9 @@ std::string metric_text(const predicates::Sym2<double>& M) {
   return "[" + shortest_decimal(M.m11) + ", " + shortest_decimal(M.m12) + ", " + shortest_decimal(M.m22) + "]";
 }
 
-Domain::Domain(const Polygon<double>& corners) : corners_(corners) {
+Domain::Domain(const Polygon<double>& corners, const std::vector<Point2<double>>& points,
+               const std::vector<std::pair<int, int>>& interior_segments)
+    : corners_(corners), interior_(interior_segments) {
   for (const auto& q : corners_) exact_.push_back({Rational(q.x), Rational(q.y)});
   if (corners_.size() < 3) throw DomainError("the domain needs at least 3 corners");
   if (const auto defect = geometry::simplicity_defect(exact_)) throw DomainError(geometry::describe(*defect, exact_, "domain"));
@@ -30,19 +32,32 @@ Domain::Domain(const Polygon<double>& corners) : corners_(corners) {
                         "binary digits, e.g. 0.375 or 13/32 rather than 0.4");
   }
   convex_ = geometry::is_convex(corners_);
+  vertices_ = corners_;
+  vertices_.insert(vertices_.end(), points.begin(), points.end());
+  check_interior();
 }
 
-Domain Domain::from_exact(const Polygon<Rational>& corners) {
-  Polygon<double> d;
-  for (std::size_t k = 0; k < corners.size(); ++k) {
-    const Point2<Rational>& q = corners[k];
-    const double x = q.x.convert_to<double>(), y = q.y.convert_to<double>();
-    if (!std::isfinite(x) || !std::isfinite(y) || Rational(x) != q.x || Rational(y) != q.y)
-      throw DomainError("domain vertex " + std::to_string(k) + " (" + exact_excerpt(q.x) + ", " + exact_excerpt(q.y) +
-                        ") is not a double; the refiner works in floating point");
-    d.push_back({x, y});
-  }
-  return Domain(d);
+Domain Domain::from_exact(const Polygon<Rational>& corners, const std::vector<Point2<Rational>>& points,
+                          const std::vector<std::pair<int, int>>& interior_segments) {
+  const auto doubles = [](const std::vector<Point2<Rational>>& in, const char* what) {
+    Polygon<double> d;
+    for (std::size_t k = 0; k < in.size(); ++k) {
+      const Point2<Rational>& q = in[k];
+      const double x = q.x.convert_to<double>(), y = q.y.convert_to<double>();
+      if (!std::isfinite(x) || !std::isfinite(y) || Rational(x) != q.x || Rational(y) != q.y)
+        throw DomainError(std::string(what) + " " + std::to_string(k) + " (" + exact_excerpt(q.x) + ", " + exact_excerpt(q.y) +
+                          ") is not a double; the refiner works in floating point");
+      d.push_back({x, y});
+    }
+    return d;
+  };
+  return Domain(doubles(corners, "domain vertex"), doubles(points, "point"), interior_segments);
+}
+
+std::pair<int, int> Domain::segment_ends(std::size_t e) const {
+  const std::size_t n = corners_.size();
+  if (e < n) return {static_cast<int>(e), static_cast<int>((e + 1) % n)};
+  return interior_[e - n];
 }
 
 Box Domain::bounding_box() const {
@@ -75,7 +90,8 @@ bool Domain::crosses_no_edge(const Point2<double>& a, const Point2<double>& b) c
 }
 
 std::string Domain::corner_text(std::size_t k) const {
-  return "corner " + std::to_string(k) + " " + point_text(corners_[k]);
+  if (k < corners_.size()) return "corner " + std::to_string(k) + " " + point_text(corners_[k]);
+  return "point " + std::to_string(k - corners_.size()) + " " + point_text(vertices_[k]);
 }
 
 }  // namespace anisocert::refiners::common

@@ -33,7 +33,7 @@ std::vector<std::string> report(const LsResult& r, const LsParameters& p, const 
       common::size_line(r, "LS refiner"),
       common::stop_line(r, "encroached subsegments: " + std::to_string(r.encroached_left) +
                                ", violators: " + std::to_string(r.violators_left))};
-  std::vector<predicates::Sym2<double>> metrics(r.mesh.metrics.begin(), r.mesh.metrics.begin() + static_cast<long>(domain.size()));
+  std::vector<predicates::Sym2<double>> metrics(r.mesh.metrics.begin(), r.mesh.metrics.begin() + static_cast<long>(domain.vertices().size()));
   const Theorem11Conditions c = theorem11_conditions(domain, metrics, p.theta_bound);
   std::ostringstream o;
   o << "  LS Theorem 11 (decided exactly): ";
@@ -43,10 +43,12 @@ std::vector<std::string> report(const LsResult& r, const LsParameters& p, const 
     o.precision(10);
     o << "θ_bound admissible, γ ∈ [" << c.gamma_lo << ", " << c.gamma_hi << "]; adjoining segments need ";
     o.precision(6);
-    o << c.separation_hi << "° (2 arcsin(γ²/2)) in the corner's metric: ";
-    if (c.corners_failing.empty() && c.corners_undecided.empty()) o << "holds at every corner";
-    if (!c.corners_failing.empty()) o << "fails at corner(s)" << corner_list(c.corners_failing);
-    if (!c.corners_undecided.empty()) o << (c.corners_failing.empty() ? "" : "; ") << "undecided at corner(s)" << corner_list(c.corners_undecided);
+    const std::string where = domain.has_interior() ? "vertex" : "corner";  // X's vertices: the corners, then the points
+    o << c.separation_hi << "° (2 arcsin(γ²/2)) in the " << where << "'s metric: ";
+    if (c.corners_failing.empty() && c.corners_undecided.empty()) o << "holds at every " << where;
+    if (!c.corners_failing.empty()) o << "fails at " << where << "(s)" << corner_list(c.corners_failing);
+    if (!c.corners_undecided.empty())
+      o << (c.corners_failing.empty() ? "" : "; ") << "undecided at " << where << "(s)" << corner_list(c.corners_undecided);
     if (p.size > 0) o << "; the theorem assumes no size rule (it applies with --size 0)";
   }
   lines.push_back(o.str());

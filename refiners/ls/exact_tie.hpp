@@ -11,7 +11,10 @@
 // LS §9 judges the triangles dual to a vertex; the dual of a vertex of degree k is a k-gon, and
 // every triangulation of it is a dual of D (LS §7). The vertex is a violator when no fan of the
 // k-gon has all its angles at least θ_bound in M (for four sites: neither diagonal), and the mesh
-// gets a fan that has.
+// gets a fan that has. In M fans are enough: every triangulation of cocircular points has the same
+// smallest angle (half the smallest arc). In the field's metric at c, also judged, a triangulation
+// that is no fan might pass where no fan does (k ≥ 6); then a site is inserted that need not be,
+// which is safe.
 #include "numbers/rational.hpp"
 #include "refiners/common/distance_function.hpp"
 #include "refiners/common/domain.hpp"

@@ -38,21 +38,21 @@ class LsRefinement {
         size_metric_(field.at(domain.corners()[0].x, domain.corners()[0].y)),
         diagram_(metric_, domain.bounding_box()),
         s2_(sin2_above(p.theta_bound)),
-        t11_(theorem11_conditions(domain, std::vector(domain.size(), metric_), p.theta_bound)),
+        t11_(theorem11_conditions(domain, std::vector(domain.vertices().size(), metric_), p.theta_bound)),
         size2_(Rational(p.size) * Rational(p.size)) {
-    const auto& corners = domain.corners();
-    for (std::size_t k = 0; k < corners.size(); ++k) {
-      const Sym2<double> M = sites_.field.at(corners[k].x, corners[k].y);
+    const auto& vertices = domain.vertices();  // X's: Ω's corners, then its points
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+      const Sym2<double> M = sites_.field.at(vertices[k].x, vertices[k].y);
       if (M != metric_)
         throw common::FieldError("--algo ls on the field " + field.name + ", taken as constant (one metric, Del_M), gives " +
                                  metric_text(metric_) + " at " + domain.corner_text(0) + " and " +
                                  metric_text(M) + " at " + domain.corner_text(k));
-      diagram_.insert(sites_.add(corners[k], M), corners[k]);
+      diagram_.insert(sites_.add(vertices[k], M), vertices[k]);
     }
-    for (std::size_t k = 0; k < corners.size(); ++k) {
-      const int a = static_cast<int>(k), b = static_cast<int>((k + 1) % corners.size());
-      subsegments_.add(a, b, a);
-      boxes_.push_back(near_segment(corners[k], corners[static_cast<std::size_t>(b)], metric_));
+    for (std::size_t e = 0; e < domain.segment_count(); ++e) {
+      const auto [a, b] = domain.segment_ends(e);
+      subsegments_.add(a, b, static_cast<int>(e));
+      boxes_.push_back(near_segment(vertices[static_cast<std::size_t>(a)], vertices[static_cast<std::size_t>(b)], metric_));
     }
     for (std::size_t t = 0; t < diagram_.slots(); ++t)
       if (diagram_.triangle(static_cast<int>(t)).alive) queue_if_violator(static_cast<int>(t));
@@ -171,10 +171,11 @@ class LsRefinement {
   }
 
   // The cells other than its endpoints' that subsegment s meets. A cell that meets s in a single
-  // point (s passes through its Voronoi vertex with a and b) counts only when its site lies
-  // strictly outside Ω's side of s: the triangle of a, b and that site, dual to a vertex on s,
-  // would lie outside Ω. On Ω's side it is harmless (s stays a dual edge, the triangle lies in Ω),
-  // and splitting there would need the vertex's own parameter, which need not be a double point.
+  // point (s passes through its Voronoi vertex with a and b) counts only when s lies on ∂Ω and its
+  // site strictly outside Ω's side of s: the triangle of a, b and that site, dual to a vertex on s,
+  // would lie outside Ω. On Ω's side, or on either side of an interior segment, it is harmless (s
+  // stays a dual edge, the triangle lies in Ω), and splitting there would need the vertex's own
+  // parameter, which need not be a double point.
   std::vector<CellOnSegment> encroachers(int s) const {
     const auto ends = subsegments_.ends(s);
     const Point2<double>&pa = sites_.points[ends.first], &pb = sites_.points[ends.second];
@@ -184,27 +185,32 @@ class LsRefinement {
       if (!p_.filters || !outside_diametral_ellipse(pa, pb, metric_, sites_.points[u])) near.emplace_back(u, sites_.points[u]);
     if (near.size() <= 2) return {};  // a and b only
     std::vector<CellOnSegment> by = cells_along(pa, pb, metric_, near);
+    const bool on_boundary = subsegments_.on_boundary(domain_, s);
     std::erase_if(by, [&](const CellOnSegment& c) {
       return c.site == ends.first || c.site == ends.second ||
-             (c.point() && predicates::orientation(pa, pb, sites_.points[c.site]) != Sign::negative);
+             (c.point() && (!on_boundary || predicates::orientation(pa, pb, sites_.points[c.site]) != Sign::negative));
     });
     return by;
   }
 
-  // A subsegment q's cell would meet, were q inserted, and that part of it (when no subsegment is
-  // encroached, the cells along each are its endpoints' only).
+  // A subsegment q's cell would meet in more than a point, were q inserted, and that part of it
+  // (when no subsegment is encroached, the cells along each are its endpoints' only). A violator
+  // lies in Ω: a single contact is on Ω's side, which encroachers() lets pass.
   std::optional<std::pair<int, CellOnSegment>> encroached_by(const Point2<double>& q) const {
     for (std::size_t s = 0; s < subsegments_.size(); ++s)
-      if (auto c = would_meet(static_cast<int>(s), q)) return std::pair{static_cast<int>(s), *c};
+      if (auto c = would_meet(static_cast<int>(s), q); c && !c->point()) return std::pair{static_cast<int>(s), *c};
     return std::nullopt;
   }
+  // The part of s that q's closed cell would meet among q and the ends of s, perhaps a single
+  // point (a site inserted on one edge of a slot can touch the other's subsegment from outside Ω:
+  // that one must be tested again, by encroachers()).
   std::optional<CellOnSegment> would_meet(int s, const Point2<double>& q) const {
     if (!boxes_[s].contains(q)) return std::nullopt;
     const auto [a, b] = subsegments_.ends(s);
     const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
     if (p_.filters && outside_diametral_ellipse(pa, pb, metric_, q)) return std::nullopt;
     for (const CellOnSegment& c : cells_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}))
-      if (c.site == -1 && !c.point()) return c;  // a violator lies in Ω: a single contact is on Ω's side
+      if (c.site == -1) return c;
     return std::nullopt;
   }
 

@@ -52,12 +52,15 @@ class LsVaryingRefinement {
         diagram_(domain.bounding_box(), std::ldexp(std::max(domain.bounding_box().x1 - domain.bounding_box().x0,
                                                             domain.bounding_box().y1 - domain.bounding_box().y0), -40)),
         s2_(sin2_above(p.theta_bound)) {
-    const auto& corners = domain.corners();
+    const auto& vertices = domain.vertices();  // X's: Ω's corners, then its points
     std::vector<Sym2<double>> metrics;
-    for (const auto& c : corners) metrics.push_back(sites_.field.at(c.x, c.y));
+    for (const auto& c : vertices) metrics.push_back(sites_.field.at(c.x, c.y));
     t11_ = theorem11_conditions(domain, metrics, p.theta_bound);
-    for (std::size_t k = 0; k < corners.size(); ++k) add_site(corners[k], metrics[k]);
-    for (std::size_t k = 0; k < corners.size(); ++k) subsegments_.add(static_cast<int>(k), static_cast<int>((k + 1) % corners.size()), static_cast<int>(k));
+    for (std::size_t k = 0; k < vertices.size(); ++k) add_site(vertices[k], metrics[k]);
+    for (std::size_t e = 0; e < domain.segment_count(); ++e) {
+      const auto [a, b] = domain.segment_ends(e);
+      subsegments_.add(a, b, static_cast<int>(e));
+    }
     for (std::size_t q = 0; q < diagram_.vertices().size(); ++q)
       if (diagram_.vertices()[q].holders > 0) violators_.push_back(static_cast<int>(q));
   }
@@ -91,7 +94,8 @@ class LsVaryingRefinement {
       if (rule == Rule::none) continue;
       const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
       const auto [c, displacement] = rounded_vertex(q);
-      if (!attack(c, rule, std::sqrt(radius2(q)), "the Voronoi vertex of sites " + trio_text(v.sites), displacement)) violators_.push_front(q);
+      const double radius = std::sqrt(squared_distance(site(v.sites[0]), c));  // at the site inserted
+      if (!attack(c, rule, radius, "the Voronoi vertex of sites " + trio_text(v.sites), displacement)) violators_.push_front(q);
       return true;
     }
     for (const ExactTie& tie : exact_ties_) {
@@ -162,12 +166,6 @@ class LsVaryingRefinement {
       return (g1[0] - g0[0]) * (g2[1] - g0[1]) - (g1[1] - g0[1]) * (g2[0] - g0[0]);
     });
   }
-  double radius2(int q) const {
-    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
-    const Point2<double> c = v.box.approx();
-    return squared_distance(site(v.sites[0]), c);
-  }
-
   // Rules 5, 3, 4 at vertex q, or none (a vertex outside closed Ω is no violator: LS §9 "q ∈ Ω").
   // Sets stalled_ when a decision is undecided.
   Rule violation(int q) {
@@ -231,15 +229,15 @@ class LsVaryingRefinement {
     return Rule::none;
   }
 
-  // A rational point truncated to doubles, within an ulp per coordinate: the point and its
-  // displacement (from above).
+  // A rational point rounded to doubles (Boost's conversion rounds to nearest; truncation would do
+  // too), within an ulp per coordinate: the point and its displacement (from above).
   static std::pair<Point2<double>, double> rounded(const Point2<Rational>& c) {
     const Point2<double> q{c.x.convert_to<double>(), c.y.convert_to<double>()};
     const double ulp_x = std::nextafter(std::abs(q.x), INFINITY) - std::abs(q.x), ulp_y = std::nextafter(std::abs(q.y), INFINITY) - std::abs(q.y);
     return {q, farthest_in_box(q, q.x - ulp_x, q.x + ulp_x, q.y - ulp_y, q.y + ulp_y)};
   }
   // Vertex q as the site rule 3, 4, 5 or 7 inserts, with its displacement: when its three sites
-  // share one metric the vertex is their rational circumcentre in it, truncated (so that grid
+  // share one metric the vertex is their rational circumcentre in it, rounded (so that grid
   // corners of one metric stay exactly on their grid and their ties stay exact ties, exact_tie.hpp);
   // otherwise the middle of its certified box.
   std::pair<Point2<double>, double> rounded_vertex(int q) const {
@@ -359,7 +357,12 @@ class LsVaryingRefinement {
       const double inset = (best->second - best->first) * 0x1p-20;
       const double lo = best->first + inset, hi = best->second - inset;
       if (!(lo <= hi)) continue;
-      z = on_edge(Rational(lo), Rational(hi), Rational(std::clamp(tm, lo, hi)), slack);
+      if (lo < hi) {
+        z = on_edge(Rational(lo), Rational(hi), Rational(std::clamp(tm, lo, hi)), slack);
+      } else {  // a cell that touches s at one point (a site on s's diametral ellipse): that point, if a double of the grid
+        const Rational e = ua + Rational(lo) * (ub - ua);
+        z = split_point(c0, c1, e, e, e);
+      }
       if (z && !nearest_at(on_s(*z), in[i], near)) z.reset();
     }
     if (!z) {
@@ -416,6 +419,9 @@ class LsVaryingRefinement {
     size_metrics_.push_back(p_.normalized_metric ? size_field_.at(q.x, q.y) : M);
     sites_.grow_grid();
     diagram_.insert({q, M});
+    ties_.clear();
+    exact_ties_.clear();
+    ties_anywhere_.clear();
     if (diagram_.full()) {
       stalled_ = "the diagram's subdivision reached its bound on boxes after the site at " + point_text(q) +
                  " (sites too near to tell apart, or distances that tie along a curve)";
@@ -424,9 +430,6 @@ class LsVaryingRefinement {
     // The unresolved leaves that meet Ω, all of them again after every insertion (an insertion may
     // resolve some): a leaf whose candidates make an exact tie (exact_tie.hpp) holds its vertex,
     // kept when in closed Ω, or no vertex; any other gives rule 8 its centre.
-    ties_.clear();
-    exact_ties_.clear();
-    ties_anywhere_.clear();
     if (diagram_.resolved()) return;
     for (const auto& leaf : diagram_.unresolved()) {
       const common::Box& b = leaf.box;

@@ -13,9 +13,10 @@
 //     rounded to doubles;
 //   6: a site in Ω whose cell holds no Voronoi vertex (bounded by an ellipse) gets a site on the
 //     bisector with its nearest other site, on the segment between them.
-// The output is the dual of the final diagram: a triangle per Voronoi vertex in closed Ω, in the
-// cells' counter-clockwise order. Vertices of degree 4 or more, and points the certified searches
-// cannot separate, stop the run by name.
+// The output is the dual of the final diagram: a triangle per Voronoi vertex of degree 3 in closed
+// Ω, in the cells' counter-clockwise order, and a fan per vertex of degree 4 or more among sites
+// of one metric (exact_tie.hpp). Other unresolved places get rule 8's sites; undecided signs,
+// and a subdivision that reaches its bound on boxes, stop the run by name.
 #include "fields/metric_field.hpp"
 #include "refiners/common/domain.hpp"
 #include "refiners/common/refinement_loop.hpp"

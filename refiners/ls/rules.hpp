@@ -20,7 +20,8 @@
 //     violators. Not LS §9's rule; ties among sites of one metric are kept exactly instead
 //     (exact_tie.hpp) and judged by rules 3 and 4.
 // Rules 5 to 8 cannot fire while every site has one metric (delaunay_in_metric.hpp): every arc
-// lies in its wedge, and the dual of every Voronoi vertex is a counter-clockwise triangle.
+// lies in its wedge, and the dual of every Voronoi vertex is a counter-clockwise triangle, or a
+// convex polygon of cocircular sites split into such triangles.
 #include <array>
 
 namespace anisocert::refiners::ls {

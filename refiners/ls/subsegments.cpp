@@ -40,9 +40,8 @@ int Subsegments::split(int s, int k) {
 }
 
 std::pair<Point2<double>, Point2<double>> Subsegments::edge_ends(const common::Domain& domain, int s) const {
-  const auto& corners = domain.corners();
-  const std::size_t e = static_cast<std::size_t>(edge_[static_cast<std::size_t>(s)]);
-  return {corners[e], corners[(e + 1) % corners.size()]};
+  const auto [a, b] = domain.segment_ends(static_cast<std::size_t>(edge_[static_cast<std::size_t>(s)]));
+  return {domain.vertices()[static_cast<std::size_t>(a)], domain.vertices()[static_cast<std::size_t>(b)]};
 }
 
 Rational edge_parameter(const Point2<double>& c0, const Point2<double>& c1, const Point2<double>& p) {
@@ -54,13 +53,13 @@ Rational edge_parameter(const Point2<double>& c0, const Point2<double>& c1, cons
 std::string Subsegments::too_fine(const common::Domain& domain, const Theorem11Conditions& t11, int s, const Point2<double>& pa,
                                   const Point2<double>& pb, const Point2<double>& z) const {
   const int e = edge_[static_cast<std::size_t>(s)];
-  const auto& corners = domain.corners();
-  const auto& c0 = corners[static_cast<std::size_t>(e)];
-  const auto& c1 = corners[(static_cast<std::size_t>(e) + 1) % corners.size()];
+  const auto [c0, c1] = edge_ends(domain, s);
   const double piece = std::min(std::hypot(z.x - pa.x, z.y - pa.y), std::hypot(pb.x - z.x, pb.y - z.y));
   if (piece >= std::ldexp(std::hypot(c1.x - c0.x, c1.y - c0.y), -common::min_halvings)) return {};
   const auto [a, b] = ends(s);
-  return "a split of edge " + std::to_string(e) + " would leave a piece below 2⁻³⁰ of its length" + corner_note(domain, t11, a, b);
+  const std::size_t n = domain.size();
+  const std::string what = static_cast<std::size_t>(e) < n ? "edge " + std::to_string(e) : "interior segment " + std::to_string(static_cast<std::size_t>(e) - n);
+  return "a split of " + what + " would leave a piece below 2⁻³⁰ of its length" + corner_note(domain, t11, a, b);
 }
 
 }  // namespace anisocert::refiners::ls

@@ -1,6 +1,6 @@
 #pragma once
-// LS §9's constrained subsegments: Ω's edges as the refinement splits them, each with the edge it
-// lies on, and the queue of those to test for encroachment (rule 1). Both LS refinements (one
+// LS §9's constrained subsegments: the PSLG's segments (Ω's edges, then its interior segments;
+// domain.hpp) as the refinement splits them, each with the segment it lies on, and the queue of those to test for encroachment (rule 1). Both LS refinements (one
 // metric on Del_M, different metrics on the true diagram) keep them here.
 #include "refiners/common/domain.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
@@ -15,7 +15,8 @@ namespace anisocert::refiners::ls {
 
 class Subsegments {
  public:
-  // Adds the subsegment from site a to site b, a piece of edge `edge` of Ω, and queues it; its index.
+  // Adds the subsegment from site a to site b, a piece of X's segment `edge` (domain.hpp), and
+  // queues it; its index.
   int add(int a, int b, int edge);
   // Queues s for the encroachment test unless it is queued.
   void queue(int s);
@@ -28,7 +29,9 @@ class Subsegments {
   std::size_t queued() const { return queue_.size(); }
   const std::pair<int, int>& ends(int s) const { return ends_[static_cast<std::size_t>(s)]; }
   const std::vector<std::pair<int, int>>& all() const { return ends_; }
-  // The corners of Ω that the edge of s runs between.
+  // Whether s is a piece of Ω's boundary (not of an interior segment).
+  bool on_boundary(const common::Domain& domain, int s) const { return static_cast<std::size_t>(edge_[static_cast<std::size_t>(s)]) < domain.size(); }
+  // The vertices of X that the segment of s runs between.
   std::pair<predicates::Point2<double>, predicates::Point2<double>> edge_ends(const common::Domain& domain, int s) const;
 
   // Why subsegment s from pa to pb must not be split at z, or empty: a piece would be below 2⁻³⁰ of
@@ -39,7 +42,7 @@ class Subsegments {
 
  private:
   std::vector<std::pair<int, int>> ends_;
-  std::vector<int> edge_;  // the edge of Ω each lies on
+  std::vector<int> edge_;  // the segment of X each lies on
   std::vector<bool> queued_;
   std::deque<int> queue_;
 };

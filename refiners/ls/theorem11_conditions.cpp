@@ -20,22 +20,33 @@ Theorem11Conditions theorem11_conditions(const common::Domain& domain, const std
   // The angle ≥ 2 arcsin(γ²/2) ⇔ its cosine ≤ cos(2 arcsin(γ²/2)) = 1 − γ⁴/2.
   const Interval cos_separation = 1 - sqr(sqr(gamma)) / 2;
   const double k_lo = cos_separation.lower_double(), k_hi = cos_separation.upper_double();
-  const auto& p = domain.corners();
-  const std::size_t n = p.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto& before = p[(k + n - 1) % n];
-    const auto& after = p[(k + 1) % n];
-    if (predicates::compare_angle_cos(before, p[k], after, metrics[k], k_lo) != Sign::positive) continue;  // holds
-    if (predicates::compare_angle_cos(before, p[k], after, metrics[k], k_hi) == Sign::positive)
-      c.corners_failing.push_back(static_cast<int>(k));
-    else
-      c.corners_undecided.push_back(static_cast<int>(k));
+  // At each vertex of X, every two segments that meet there (at a corner without interior
+  // segments, its two edges).
+  const auto& p = domain.vertices();
+  std::vector<std::vector<int>> far(p.size());
+  for (std::size_t e = 0; e < domain.segment_count(); ++e) {
+    const auto [a, b] = domain.segment_ends(e);
+    far[static_cast<std::size_t>(a)].push_back(b), far[static_cast<std::size_t>(b)].push_back(a);
+  }
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    bool failing = false, undecided = false;
+    for (std::size_t i = 0; i < far[k].size(); ++i)
+      for (std::size_t j = i + 1; j < far[k].size(); ++j) {
+        const auto &u = p[static_cast<std::size_t>(far[k][i])], &w = p[static_cast<std::size_t>(far[k][j])];
+        if (predicates::compare_angle_cos(u, p[k], w, metrics[k], k_lo) != Sign::positive) continue;  // holds
+        if (predicates::compare_angle_cos(u, p[k], w, metrics[k], k_hi) == Sign::positive)
+          failing = true;
+        else
+          undecided = true;
+      }
+    if (failing) c.corners_failing.push_back(static_cast<int>(k));
+    else if (undecided) c.corners_undecided.push_back(static_cast<int>(k));
   }
   return c;
 }
 
 std::string corner_note(const common::Domain& domain, const Theorem11Conditions& c, int a, int b) {
-  const int m = static_cast<int>(domain.size());
+  const int m = static_cast<int>(domain.vertices().size());
   const int k = a < m ? a : b < m ? b : -1;
   if (k < 0) return "";
   const auto has = [k](const std::vector<int>& v) { return std::find(v.begin(), v.end(), k) != v.end(); };
