@@ -32,6 +32,7 @@
 #include "property_tests/generators/metrics.hpp"
 #include "property_tests/ls_same_run.hpp"
 #include "property_tests/oracle_certified.hpp"
+#include "property_tests/theta_bound.hpp"
 #include "property_tests/pslg_domain.hpp"
 #include "refiners/ls/ls_refiner.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
@@ -86,12 +87,6 @@ Run random_run() {
                    : t11.corners_failing.empty() ? "separation holds"
                                                  : "separation fails";
   return run;
-}
-
-// sin²θ_bound from above, as a rational: "angle ≥ arcsin √s2" proves "angle ≥ θ_bound".
-Rational sin2_above(double theta) {
-  const Interval s = theory::ls_t11_sin_theta(rational_from_double(theta), 256);
-  return rational_from_double(sqr(s).upper_double());
 }
 
 using gen::d2;
@@ -249,7 +244,7 @@ RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
   // The finished run certified by the oracle (as in LS_S9), and the theorem's angle bound in the
   // metrics of each triangle's vertices, points of t (the refiner also judges at the dual vertex).
   if (const auto certified = gen::assert_dual_of_exact_diagram(r.mesh)) {
-    const Rational s2 = sin2_above(run.p.theta_bound);
+    const Rational s2 = gen::sin2_above(run.p.theta_bound);
     const auto& m = certified->mesh;
     for (const auto& t : r.mesh.triangles)
       for (int k = 0; k < 3; ++k)
@@ -403,7 +398,7 @@ RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
   const geometry::Mesh<Rational>& m = certified->mesh;
 
   const auto& M = m.metrics[0];
-  const Rational s2 = sin2_above(run.p.theta_bound), size2 = rational_from_double(run.p.size) * rational_from_double(run.p.size);
+  const Rational s2 = gen::sin2_above(run.p.theta_bound), size2 = rational_from_double(run.p.size) * rational_from_double(run.p.size);
   const Rational det = M.m11 * M.m22 - M.m12 * M.m12;
   for (const auto& t : r.mesh.triangles) {
     const auto &a = m.sites[t[0]], &b = m.sites[t[1]], &c = m.sites[t[2]];

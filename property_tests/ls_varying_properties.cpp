@@ -17,6 +17,7 @@
 #include "oracle/diagram/input.hpp"
 #include "property_tests/ls_same_run.hpp"
 #include "property_tests/oracle_certified.hpp"
+#include "property_tests/theta_bound.hpp"
 #include "property_tests/pslg_domain.hpp"
 #include "property_tests/generators/domains.hpp"
 #include "property_tests/generators/fields.hpp"
@@ -31,12 +32,6 @@
 using namespace anisocert;
 
 namespace {
-
-// sin²θ_bound from above, as a rational: "angle ≥ arcsin √s2" proves "angle ≥ θ_bound".
-Rational sin2_above(double theta) {
-  const Interval s = theory::ls_t11_sin_theta(rational_from_double(theta), 256);
-  return rational_from_double(sqr(s).upper_double());
-}
 
 // The stalls refiners/ls/ls_varying.hpp and docs/refiners.md name.
 bool named_stall(const std::string& why) {
@@ -91,7 +86,7 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
           RC_ASSERT(node.at.sign_of(oracle::shear_conic(beyond_size(m.sites[k], f.at(r.mesh.sites[k].x, r.mesh.sites[k].y), p.size),
                                                         -certified->diagram.shear)) != Sign::positive);
 
-  const Rational s2 = sin2_above(p.theta_bound);
+  const Rational s2 = gen::sin2_above(p.theta_bound);
   for (const auto& t : r.mesh.triangles)
     for (int i = 0; i < 3; ++i)
       for (int k : t)  // in the metric of each vertex
