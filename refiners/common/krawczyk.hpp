@@ -55,6 +55,26 @@ class Equidistance {
             at_m[2] + (H_[1].m11 * dx + H_[1].m12 * dy), at_m[3] + (H_[1].m12 * dx + H_[1].m22 * dy)};
   }
 
+  // det ½J as a polynomial in (x, y): its coefficients on x², xy, x, y², y, 1. ½J's rows are
+  // H₁x + g₁ and H₂x + g₂ (g₁ = M_b b − M_a a, g₂ = M_c c − M_a a), so the determinant is a quadratic.
+  // All six vanish, e.g., for three sites on one line x = const with metrics that differ only in
+  // m22: every point equidistant from them is then a singular zero of F.
+  std::array<T, 6> jacobian_determinant() const {
+    const auto g = [&](int k) {
+      return std::array<T, 2>{(s_[k].m11 * s_[k].x + s_[k].m12 * s_[k].y) - (s_[0].m11 * s_[0].x + s_[0].m12 * s_[0].y),
+                              (s_[k].m12 * s_[k].x + s_[k].m22 * s_[k].y) - (s_[0].m12 * s_[0].x + s_[0].m22 * s_[0].y)};
+    };
+    const auto g1 = g(1), g2 = g(2);
+    // Rows as (p·X, q·X) with X = (x, y, 1).
+    const std::array<T, 3> p1{H_[0].m11, H_[0].m12, g1[0]}, q1{H_[0].m12, H_[0].m22, g1[1]};
+    const std::array<T, 3> p2{H_[1].m11, H_[1].m12, g2[0]}, q2{H_[1].m12, H_[1].m22, g2[1]};
+    const auto c = [&](std::size_t i, std::size_t j) {
+      const T diagonal = p1[i] * q2[j] - q1[i] * p2[j];
+      return i == j ? diagonal : diagonal + (p1[j] * q2[i] - q1[j] * p2[i]);
+    };
+    return {c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
+  }
+
   // F on the box X: the exact expansion at X's midpoint.
   std::array<T, 2> on(const Box2<T>& X) const {
     const T mx = X.x.midpoint(), my = X.y.midpoint();

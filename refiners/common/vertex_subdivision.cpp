@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 
 namespace anisocert::refiners::common {
 namespace {
@@ -137,30 +138,84 @@ int VertexSubdivision::intern(const std::array<int, 3>& trio, const VertexBox& b
   return id;
 }
 
-void VertexSubdivision::settle(int n) {
-  const std::size_t k = nodes_[static_cast<std::size_t>(n)].candidates.size();
-  if (k < 3) return;
+VertexSubdivision::Resolution VertexSubdivision::resolve(int n, bool small) {
+  const std::vector<int> c = nodes_[static_cast<std::size_t>(n)].candidates;
   const Box b = nodes_[static_cast<std::size_t>(n)].box;
-  if (k == 3) {
-    std::array<int, 3> t;
-    std::copy_n(nodes_[static_cast<std::size_t>(n)].candidates.begin(), 3, t.begin());
-    std::sort(t.begin(), t.end());
-    const Trio trio{sites_[static_cast<std::size_t>(t[0])], sites_[static_cast<std::size_t>(t[1])], sites_[static_cast<std::size_t>(t[2])]};
-    const VertexSearch found = vertices_in(trio, interval_box(b));
-    if (found.complete) {
-      bool decided = true;
-      std::vector<int> held;
-      for (const VertexBox& v : found.vertices) {
-        const auto inside = in_closed_box(trio, v, b);
-        if (!inside) decided = false;
-        if (!inside || !*inside) continue;
-        const int id = intern(t, v);
-        if (id < 0) decided = false;
-        else held.push_back(id);
+  std::vector<std::pair<std::array<int, 3>, VertexBox>> found;
+  bool degree_4 = false;  // a point where a fourth candidate may be as near as three
+  for (std::size_t i = 0; i < c.size(); ++i)
+    for (std::size_t j = i + 1; j < c.size(); ++j)
+      for (std::size_t l = j + 1; l < c.size(); ++l) {
+        std::array<int, 3> t{c[i], c[j], c[l]};
+        std::sort(t.begin(), t.end());
+        const Trio trio{sites_[static_cast<std::size_t>(t[0])], sites_[static_cast<std::size_t>(t[1])], sites_[static_cast<std::size_t>(t[2])]};
+        const VertexSearch search = vertices_in(trio, interval_box(b));
+        if (!search.complete) return small ? Resolution::unresolved : Resolution::split;
+        for (const VertexBox& v : search.vertices) {
+          const auto inside = in_closed_box(trio, v, b);
+          if (!inside) return Resolution::unresolved;
+          if (!*inside) continue;
+          const CertifiedPoint P(trio, v);
+          bool vertex = true;
+          for (int u : c) {
+            if (u == t[0] || u == t[1] || u == t[2]) continue;
+            const auto farther = sign_at<1>({&P}, [&](const auto& X, auto of) {
+              const auto d2 = [&](const MetricSite& w) {
+                const auto dx = X[0].x - of(w.p.x), dy = X[0].y - of(w.p.y);
+                return of(w.M.m11) * (dx * dx) + of(2 * w.M.m12) * (dx * dy) + of(w.M.m22) * (dy * dy);
+              };
+              return d2(sites_[static_cast<std::size_t>(u)]) - d2(trio[0]);
+            });
+            if (!farther || *farther == Sign::zero) degree_4 = true;
+            else if (*farther == Sign::negative) vertex = false;
+          }
+          if (vertex) found.emplace_back(t, v);
+        }
       }
+  if (degree_4) return Resolution::split;
+  std::vector<int> held;
+  for (const auto& [t, v] : found) {
+    const int id = intern(t, v);
+    if (id < 0) {
       nodes_[static_cast<std::size_t>(n)].vertices = std::move(held);
-      nodes_[static_cast<std::size_t>(n)].unresolved = !decided;
-      unresolved_leaves_ += !decided;
+      return Resolution::unresolved;
+    }
+    held.push_back(id);
+  }
+  nodes_[static_cast<std::size_t>(n)].vertices = std::move(held);
+  return Resolution::resolved;
+}
+
+void VertexSubdivision::settle(int n, bool first_small) {
+  const std::vector<int>& cands = nodes_[static_cast<std::size_t>(n)].candidates;
+  if (cands.size() < 3) return;
+  const Box b = nodes_[static_cast<std::size_t>(n)].box;
+  // Small: no wider than 2⁻⁴ of the least distance between two candidates. Three candidates
+  // whose search is undecided tie along a curve (VertexSearch::singular), or nearly: their
+  // equidistant points are double points, or so ill-conditioned that doubles cannot isolate them
+  // (three sites on the line x = ½ of the linear field, one of them an ulp off it). Such a leaf is
+  // halved only until it is small, so that its centre is near the curve, not down to min_width
+  // along all of the curve, which took the tree to its bound on the linear field. A small leaf of up
+  // to six candidates that splitting has not separated is resolved trio by trio, once: when that
+  // finds a fourth candidate as near (a vertex of degree 4), its halves are split as before, down
+  // to min_width, without the trios' signs at every level.
+  bool small = false;
+  if (cands.size() <= 6) {
+    double gap = INFINITY;
+    for (std::size_t i = 0; i < cands.size(); ++i)
+      for (std::size_t j = i + 1; j < cands.size(); ++j) {
+        const auto& p = sites_[static_cast<std::size_t>(cands[i])].p;
+        const auto& q = sites_[static_cast<std::size_t>(cands[j])].p;
+        gap = std::min(gap, std::hypot(p.x - q.x, p.y - q.y));
+      }
+    small = std::max(b.x1 - b.x0, b.y1 - b.y0) <= 0x1p-4 * gap;
+  }
+  if (cands.size() == 3 || (small && first_small)) {
+    const Resolution r = resolve(n, small);
+    if (r == Resolution::resolved) return;
+    if (r == Resolution::unresolved) {
+      nodes_[static_cast<std::size_t>(n)].unresolved = true;
+      ++unresolved_leaves_;
       return;
     }
   }
@@ -169,19 +224,37 @@ void VertexSubdivision::settle(int n) {
     ++unresolved_leaves_;
     return;
   }
+  // Halved across its longer side as the candidates' metrics measure it: the cells of an
+  // anisotropic field are long and thin, and boxes cut to their shape separate them in far fewer
+  // leaves than squares (the linear field's cells near y = ½ are a hundred times wider than high).
+  double across_x = 0, across_y = 0;
+  for (int u : nodes_[static_cast<std::size_t>(n)].candidates) {
+    const auto& M = sites_[static_cast<std::size_t>(u)].M;
+    across_x += M.m11, across_y += M.m22;
+  }
+  const bool along_x = across_x * (b.x1 - b.x0) * (b.x1 - b.x0) >= across_y * (b.y1 - b.y0) * (b.y1 - b.y0);
   const int c = static_cast<int>(nodes_.size());
-  nodes_.resize(nodes_.size() + 4);
+  nodes_.resize(nodes_.size() + 2);
   const double mx = b.x0 + (b.x1 - b.x0) * split_ratio, my = b.y0 + (b.y1 - b.y0) * split_ratio;
-  const std::array<Box, 4> quadrants{Box{b.x0, mx, b.y0, my}, Box{mx, b.x1, b.y0, my}, Box{b.x0, mx, my, b.y1}, Box{mx, b.x1, my, b.y1}};
-  for (int i = 0; i < 4; ++i) {
-    const auto q = quadrants[static_cast<std::size_t>(i)];
+  const std::array<Box, 2> halves = along_x ? std::array<Box, 2>{Box{b.x0, mx, b.y0, b.y1}, Box{mx, b.x1, b.y0, b.y1}}
+                                            : std::array<Box, 2>{Box{b.x0, b.x1, b.y0, my}, Box{b.x0, b.x1, my, b.y1}};
+  for (int i = 0; i < 2; ++i) {
+    const auto h = halves[static_cast<std::size_t>(i)];
     double U;
-    std::vector<int> kept = candidates_in(q, nodes_[static_cast<std::size_t>(n)].candidates, -1, U);
-    nodes_[static_cast<std::size_t>(c + i)] = {q, std::move(kept), U, -1, {}, false};
+    std::vector<int> kept = candidates_in(h, nodes_[static_cast<std::size_t>(n)].candidates, -1, U);
+    nodes_[static_cast<std::size_t>(c + i)] = {h, std::move(kept), U, -1, {}, false};
   }
   nodes_[static_cast<std::size_t>(n)].child = c;
   nodes_[static_cast<std::size_t>(n)].candidates.clear();
-  for (int i = 0; i < 4; ++i) settle(c + i);
+  for (int i = 0; i < 2; ++i) settle(c + i, !small);
+  bound_by_children(n);
+}
+
+void VertexSubdivision::bound_by_children(int n) {
+  Node& node = nodes_[static_cast<std::size_t>(n)];
+  double greatest = 0;
+  for (int i = 0; i < 2; ++i) greatest = std::max(greatest, nodes_[static_cast<std::size_t>(node.child + i)].least_greatest);
+  if (greatest < node.least_greatest) node.least_greatest = greatest;
 }
 
 void VertexSubdivision::release(int n, std::vector<int>& held) {
@@ -198,7 +271,8 @@ void VertexSubdivision::update(int n, int v) {
   if (range.lo > nodes_[static_cast<std::size_t>(n)].least_greatest) return;  // v is nowhere nearest in b: nothing below changes
   if (range.hi < nodes_[static_cast<std::size_t>(n)].least_greatest) nodes_[static_cast<std::size_t>(n)].least_greatest = range.hi;
   if (const int first = nodes_[static_cast<std::size_t>(n)].child; first >= 0) {
-    for (int i = 0; i < 4; ++i) update(first + i, v);
+    for (int i = 0; i < 2; ++i) update(first + i, v);
+    bound_by_children(n);
     return;
   }
   double U;
@@ -224,6 +298,13 @@ void VertexSubdivision::insert(const MetricSite& s) {
   sites_.push_back(s);
   insertion_start_ = nodes_.size();
   update(0, static_cast<int>(sites_.size()) - 1);
+  // In an order of their own, not the tree's: how the boxes are split changes no refinement.
+  const auto key = [this](int id) {
+    const Vertex& v = vertices_[static_cast<std::size_t>(id)];
+    const Point2<double> p = v.box.approx();
+    return std::tuple(v.sites, p.x, p.y);
+  };
+  std::sort(created_.begin(), created_.end(), [&](int a, int b) { return key(a) < key(b); });
 }
 
 std::vector<int> VertexSubdivision::candidates_near(const Box& b) const {
@@ -234,7 +315,7 @@ std::vector<int> VertexSubdivision::candidates_near(const Box& b) const {
     stack.pop_back();
     if (node.box.x1 < b.x0 || node.box.x0 > b.x1 || node.box.y1 < b.y0 || node.box.y0 > b.y1) continue;
     if (node.child >= 0) {
-      for (int i = 0; i < 4; ++i) stack.push_back(node.child + i);
+      for (int i = 0; i < 2; ++i) stack.push_back(node.child + i);
       continue;
     }
     out.insert(out.end(), node.candidates.begin(), node.candidates.end());
@@ -252,7 +333,7 @@ std::vector<VertexSubdivision::Leaf> VertexSubdivision::unresolved() const {
     stack.pop_back();
     if (node.unresolved) out.push_back({node.box, node.candidates});
     if (node.child >= 0)
-      for (int i = 0; i < 4; ++i) stack.push_back(node.child + i);
+      for (int i = 0; i < 2; ++i) stack.push_back(node.child + i);
   }
   return out;
 }

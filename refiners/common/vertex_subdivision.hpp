@@ -1,15 +1,18 @@
 #pragma once
 // The Voronoi vertices of the true anisotropic Voronoi diagram D of a set of sites (LS §3: points
 // where three sites are equally near and no site is nearer), in a box R, kept as sites are added.
-// A quadtree over R whose every node lists the sites that can be nearest somewhere in its box
-// (its candidates: a site is left out when its least squared distance over the box, bounded below
-// in FilterInterval, exceeds another site's greatest, bounded above, or when the difference of the
-// two squared distances is positive over the box, bounded in the centred form against the two
-// sites likeliest nearest there). A leaf with three candidates
-// holds exactly the points equidistant from them (voronoi_vertex.hpp's certified boxes): no other
-// site can be as near anywhere in it, so each is a vertex of D, of degree 3. A node with more is
-// split, down to `min_width`; a leaf that still has four or more is unresolved (a vertex of degree
-// 4 or more, or sites too near to tell apart, lies there), and so is one whose search is undecided.
+// A binary tree of boxes over R whose every node lists the sites that can be nearest somewhere in
+// its box (its candidates: a site is left out when its least squared distance over the box, bounded
+// below in FilterInterval, exceeds another site's greatest, bounded above, or when the difference of
+// the two squared distances is positive over the box, bounded in the centred form against the two
+// sites likeliest nearest there). A leaf with three candidates holds exactly the points equidistant
+// from them (voronoi_vertex.hpp's certified boxes): no other site can be as near anywhere in it, so
+// each is a vertex of D, of degree 3. A node with more is halved across its longer side in the
+// candidates' metrics; once it is small beside their spacing it is resolved trio by trio instead
+// (a point equidistant from three in the box is a vertex when every other candidate is certified
+// strictly farther). A leaf is unresolved when a vertex of degree 4 or more, or sites too near to
+// tell apart, lie there (down to `min_width`), or when three sites tie along a curve through it, or
+// nearly (their search is undecided in a small leaf; see settle).
 //
 // Orphans and islands (LS Definition 1) need no special case: D is found wherever it is. Adding a
 // site touches only the nodes where it is a candidate, which are near its cell. This is what the
@@ -48,7 +51,7 @@ class VertexSubdivision {
   // Every vertex ever found; those with holders > 0 are D's vertices in R (and perhaps a little
   // beyond: a leaf's search may certify a point just outside its box).
   const std::vector<Vertex>& vertices() const { return vertices_; }
-  // The vertices found by the last insertion.
+  // The vertices found by the last insertion, ordered by their sites, then by where they are.
   const std::vector<int>& created() const { return created_; }
   // The sites that can be nearest somewhere in b: the candidates of every leaf that meets b.
   std::vector<int> candidates_near(const Box& b) const;
@@ -61,14 +64,16 @@ class VertexSubdivision {
   std::vector<Leaf> unresolved() const;
   bool resolved() const { return unresolved_leaves_ == 0; }
   // Whether a leaf was left unsplit because the tree reached its bound on nodes (above).
-  bool full() const { return nodes_.size() + 4 > max_nodes() || nodes_.size() + 4 > insertion_start_ + max_nodes_per_insertion; }
+  bool full() const { return nodes_.size() + 2 > max_nodes() || nodes_.size() + 2 > insertion_start_ + max_nodes_per_insertion; }
 
  private:
   struct Node {
     Box box;
     std::vector<int> candidates;  // a leaf's (an inner node keeps none)
-    double least_greatest = INFINITY;  // min over all sites of an upper bound of d_u² on the box
-    int child = -1;  // the first of four consecutive children (quadrants), or −1 for a leaf
+    // An upper bound, over the box, of the squared distance to the nearest site: a leaf's least
+    // upper bound of one site's d_u² on the box; an inner node's also the greatest of its children's.
+    double least_greatest = INFINITY;
+    int child = -1;  // the first of two consecutive children (halves), or −1 for a leaf
     std::vector<int> vertices;
     bool unresolved = false;
   };
@@ -76,9 +81,21 @@ class VertexSubdivision {
   // The sites of `from` (and `extra`, when ≥ 0) that can be nearest somewhere in b; U: the least
   // upper bound of their squared distances over b (a NaN bound counts as ∞).
   std::vector<int> candidates_in(const Box& b, const std::vector<int>& from, int extra, double& U) const;
-  // Makes a node whose candidates are set a leaf with its vertices, or splits it.
-  void settle(int node);
+  // Makes a node whose candidates are set a leaf with its vertices, or splits it; first_small:
+  // its parent, if any, is not small (see settle).
+  void settle(int node, bool first_small = true);
+  // The vertices of a leaf's candidates, three by three: each point equidistant from three in the
+  // closed box from which every other candidate is strictly farther (certified_point.hpp). Kept
+  // when every search and sign is decided; split when a fourth candidate may be as near (a vertex of
+  // degree 4, or two vertices nearer than the box can tell); unresolved when a search is undecided
+  // in a small leaf (`small`, see settle), or a vertex's place in the box or identity is.
+  enum class Resolution { resolved, split, unresolved };
+  Resolution resolve(int node, bool small);
   void update(int node, int site);
+  // Lowers an inner node's least_greatest to the greatest of its children's: every point of the
+  // box lies in a child, where some site is that near. Far tighter than one site's bound on a
+  // large box, so an insertion visits only the nodes near where its site can be nearest.
+  void bound_by_children(int node);
   // Empties a leaf of vertices, appending the ids it held to `held`.
   void release(int leaf, std::vector<int>& held);
   int intern(const std::array<int, 3>& trio, const VertexBox& box);

@@ -2,6 +2,7 @@
 
 #include "predicates/orientation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace anisocert::refiners::common {
@@ -87,6 +88,17 @@ Box2<FI> hull(const Box2<FI>& a, const Box2<FI>& b) {
   return {{std::min(a.x.lo, b.x.lo), std::max(a.x.hi, b.x.hi)}, {std::min(a.y.lo, b.y.lo), std::max(a.y.hi, b.y.hi)}};
 }
 
+// Whether det ½J vanishes identically: each coefficient's box holds 0 (most trios are told apart
+// here), then every coefficient is 0 in rationals.
+bool singular_everywhere(const Trio& t, const Equidistance<FI>& s) {
+  const auto near_zero = s.jacobian_determinant();
+  if (std::any_of(near_zero.begin(), near_zero.end(), [](const FI& c) { return !c.has_zero(); })) return false;
+  const auto of = [](double d) { return Rational(d); };
+  const Equidistance<Rational> exact({lift<Rational>(t[0], of), lift<Rational>(t[1], of), lift<Rational>(t[2], of)});
+  const auto c = exact.jacobian_determinant();
+  return std::all_of(c.begin(), c.end(), [](const Rational& x) { return x == 0; });
+}
+
 // Adds a certified vertex unless it is one already found; false when that cannot be decided.
 // Two boxes that meet hold the same point when one lies in the other's isolating box, or when
 // Krawczyk proves the hull of their isolating boxes holds a single point.
@@ -119,6 +131,12 @@ VertexSearch vertices_in(const Trio& t, const Box2<FilterInterval>& search, int 
     return out;
   }
   const Equidistance<FI> s = in_doubles(t);
+  if (singular_everywhere(t, s)) {
+    out.singular = true;
+    const auto F = s.on(search);
+    out.complete = !F[0].has_zero() || !F[1].has_zero();
+    return out;
+  }
   std::vector<Box2<FI>> pending{search};
   const auto undecided = [&out] {
     out.complete = false;

@@ -445,6 +445,7 @@ class LsVaryingRefinement {
       }
       if (domain_.contains(b) == std::optional<bool>(false)) continue;  // no vertex of the mesh there
       const Point2<double> c{b.x0 + (b.x1 - b.x0) / 2, b.y0 + (b.y1 - b.y0) / 2};
+      if (sites_.grid.nearest_site2(c, sites_.field.at(c.x, c.y), sites_.points) == 0) continue;  // a site there already
       if (std::none_of(ties_.begin(), ties_.end(), [&](const Point2<double>& t) { return t.x == c.x && t.y == c.y; })) ties_.push_back(c);
     }
   }
