@@ -1,5 +1,7 @@
 #include "refiners/common/vertex_subdivision.hpp"
 
+#include "refiners/common/box_bounds.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -9,47 +11,6 @@ namespace anisocert::refiners::common {
 namespace {
 
 using FI = FilterInterval;
-
-// The points p of a box as m + δ, m its midpoint (δ in the box about 0): the two centred forms
-// below.
-struct Centred {
-  FI mx, my, dx, dy;
-  explicit Centred(const Box& b)
-      : mx(FI(b.x0, b.x1).midpoint()), my(FI(b.y0, b.y1).midpoint()), dx(FI(b.x0, b.x1) - mx), dy(FI(b.y0, b.y1) - my) {}
-};
-
-// Holds d_u(p)² for every p in b, in the centred form about b's midpoint m (FilterInterval rounds
-// outward): Q_u(m + δ) = Q_u(m) + 2 (m − u)ᵀM_u δ + δᵀM_u δ. Term by term, the form would be far
-// wider for a nearly degenerate metric, whose terms cancel (a box 10⁻³ wide at 0.07 from a site of
-// anisotropy 100 was bounded by [0.26, 0.50]), and the leaves would split to separate sites
-// that the centred form tells apart at once.
-FI squared_distances(const MetricSite& u, const Box& b) {
-  const auto [mx, my, dx, dy] = Centred(b);
-  const FI ex = mx - u.p.x, ey = my - u.p.y;  // m − u
-  const FI m11(u.M.m11), m12(u.M.m12), m22(u.M.m22);
-  const FI at_m = ex * (m11 * ex + m12 * ey) + ey * (m12 * ex + m22 * ey);
-  const FI linear = (m11 * ex + m12 * ey) * dx + (m12 * ex + m22 * ey) * dy;
-  const FI quadratic = m11 * sqr(dx) + FI(2 * u.M.m12) * (dx * dy) + m22 * sqr(dy);
-  return at_m + (linear + linear) + quadratic;
-}
-
-// Holds d_u(p)² − d_v(p)² for every p in b, in the centred form about b's midpoint m:
-// D(m + δ) = D(m) + 2 (M_u(m − u) − M_v(m − v))ᵀδ + δᵀ(M_u − M_v)δ. For two sites near each other
-// with nearly equal metrics, seen from afar, its terms in δ are far smaller than each distance's:
-// a cluster of sites (refinement running into a corner) has cells that are long thin wedges away
-// from it, which the distances one by one could only tell apart in boxes as thin as the wedges
-// (a million boxes for 39 sites on the L with M′), the difference in boxes as wide as their length.
-FI squared_distance_difference(const MetricSite& u, const MetricSite& v, const Box& b) {
-  const auto [mx, my, dx, dy] = Centred(b);
-  const FI ux = mx - u.p.x, uy = my - u.p.y, vx = mx - v.p.x, vy = my - v.p.y;
-  const FI gux = FI(u.M.m11) * ux + FI(u.M.m12) * uy, guy = FI(u.M.m12) * ux + FI(u.M.m22) * uy;
-  const FI gvx = FI(v.M.m11) * vx + FI(v.M.m12) * vy, gvy = FI(v.M.m12) * vx + FI(v.M.m22) * vy;
-  const FI at_m = (ux * gux + uy * guy) - (vx * gvx + vy * gvy);
-  const FI linear = (gux - gvx) * dx + (guy - gvy) * dy;
-  const FI quadratic = (FI(u.M.m11) - FI(v.M.m11)) * sqr(dx) + (FI(u.M.m12) - FI(v.M.m12)) * (FI(2) * (dx * dy)) +
-                       (FI(u.M.m22) - FI(v.M.m22)) * sqr(dy);
-  return at_m + (linear + linear) + quadratic;
-}
 
 // Where a node is split, as a fraction of its width: not ½, so that the split lines are not the
 // simple dyadic lines (x = ¾, …) on which the vertices of symmetric sites lie. A vertex on a
@@ -91,11 +52,11 @@ VertexSubdivision::VertexSubdivision(const Box& R, double min_width) : min_width
 std::vector<int> VertexSubdivision::candidates_in(const Box& b, const std::vector<int>& from, int extra, double& U) const {
   std::vector<int> all = from;
   if (extra >= 0) all.push_back(extra);
-  std::vector<FI> range(all.size());
+  std::vector<Bounds> range(all.size());
   U = INFINITY;
   for (std::size_t i = 0; i < all.size(); ++i) {
-    range[i] = squared_distances(sites_[static_cast<std::size_t>(all[i])], b);
-    if (range[i].hi < U) U = range[i].hi;  // a NaN bound counts as ∞
+    range[i] = squared_distance_bounds(sites_[static_cast<std::size_t>(all[i])], b);
+    U = std::min(U, range[i].hi);
   }
   std::vector<int> kept;
   std::vector<double> centre;
@@ -114,7 +75,7 @@ std::vector<int> VertexSubdivision::candidates_in(const Box& b, const std::vecto
   for (std::size_t i = 0; i < kept.size(); ++i) {
     const MetricSite& u = sites_[static_cast<std::size_t>(kept[i])];
     const bool farther = std::any_of(best.begin(), best.end(), [&](std::size_t j) {
-      return j != i && squared_distance_difference(u, sites_[static_cast<std::size_t>(kept[j])], b).lo > 0;
+      return j != i && squared_distance_difference_bounds(u, sites_[static_cast<std::size_t>(kept[j])], b).lo > 0;
     });
     if (!farther) left.push_back(kept[i]);
   }
@@ -267,7 +228,7 @@ void VertexSubdivision::release(int n, std::vector<int>& held) {
 
 void VertexSubdivision::update(int n, int v) {
   const Box b = nodes_[static_cast<std::size_t>(n)].box;
-  const FI range = squared_distances(sites_[static_cast<std::size_t>(v)], b);
+  const Bounds range = squared_distance_bounds(sites_[static_cast<std::size_t>(v)], b);
   if (range.lo > nodes_[static_cast<std::size_t>(n)].least_greatest) return;  // v is nowhere nearest in b: nothing below changes
   if (range.hi < nodes_[static_cast<std::size_t>(n)].least_greatest) nodes_[static_cast<std::size_t>(n)].least_greatest = range.hi;
   if (const int first = nodes_[static_cast<std::size_t>(n)].child; first >= 0) {
