@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using anisocert::FilterInterval;
@@ -308,6 +309,33 @@ RC_GTEST_PROP(RefinerVoronoiVertex, EnclosuresOnBoxesHoldTheExactValues, ()) {
     const auto g = E.half_jacobian(x, y);
     for (int i = 0; i < 4; ++i) RC_ASSERT(holds(J[static_cast<std::size_t>(i)], g[static_cast<std::size_t>(i)]));
   }
+}
+
+// det ½J as a polynomial (Equidistance::jacobian_determinant, which decides singular trios) is the
+// determinant of ½J itself at rational points, exactly; and a search calls a trio singular exactly
+// when all six coefficients are zero.
+RC_GTEST_PROP(RefinerVoronoiVertex, JacobianDeterminantIsTheDeterminantOfHalfJ, ()) {
+  const Case c = *scaled_case();
+  const auto q = [](double d) { return Rational(d); };
+  const Equidistance<Rational> E({lift<Rational>(c.t[0], q), lift<Rational>(c.t[1], q), lift<Rational>(c.t[2], q)});
+  const auto k = E.jacobian_determinant();
+  for (int i = 0; i < 4; ++i) {
+    const Rational x(*rc::gen::inRange(-1000, 1001), 97), y(*rc::gen::inRange(-1000, 1001), 89);
+    const auto J = E.half_jacobian(x, y);
+    RC_ASSERT(J[0] * J[3] - J[1] * J[2] == k[0] * x * x + k[1] * x * y + k[2] * x + k[3] * y * y + k[4] * y + k[5]);
+  }
+  const bool zero = std::all_of(k.begin(), k.end(), [](const Rational& v) { return v == 0; });
+  const VertexSearch search = vertices_in(c.t, {FilterInterval(-1, 1), FilterInterval(-1, 1)}, 16);
+  RC_ASSERT(!search.singular || zero);
+  if (zero && !(c.t[0].M == c.t[1].M && c.t[0].M == c.t[2].M)) RC_ASSERT(search.singular);  // equal metrics: answered before
+  // Three sites on one line x = x₀ with metrics diag(a, dᵢ): the first column of ½J is
+  // a(x − x₀) − a(x − x₀) = 0 everywhere, so det ½J ≡ 0.
+  const double x0 = *rc::gen::inRange(-64, 65) / 16.0, a = *rc::gen::inRange(1, 1000) / 8.0;
+  Trio column;
+  for (int i = 0; i < 3; ++i)
+    column[static_cast<std::size_t>(i)] = {{x0, (*rc::gen::inRange(-64, 65) + 200 * i) / 16.0}, {a, 0, *rc::gen::inRange(1, 1000) / 8.0}};
+  RC_PRE(!(column[0].M == column[1].M && column[0].M == column[2].M));
+  RC_ASSERT(vertices_in(column, {FilterInterval(-100, 100), FilterInterval(-100, 100)}).singular);
 }
 
 // Krawczyk's verdicts against the exact count of points in the box: none ⇒ 0, unique ⇒ 1. Boxes

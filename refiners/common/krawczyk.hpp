@@ -57,8 +57,8 @@ class Equidistance {
 
   // det ½J as a polynomial in (x, y): its coefficients on x², xy, x, y², y, 1. ½J's rows are
   // H₁x + g₁ and H₂x + g₂ (g₁ = M_b b − M_a a, g₂ = M_c c − M_a a), so the determinant is a quadratic.
-  // All six vanish, e.g., for three sites on one line x = const with metrics that differ only in
-  // m22: every point equidistant from them is then a singular zero of F.
+  // All six vanish, e.g., for three sites on one line x = const with metrics diag(a, dᵢ) of one a:
+  // no point equidistant from them is then a simple zero of F.
   std::array<T, 6> jacobian_determinant() const {
     const auto g = [&](int k) {
       return std::array<T, 2>{(s_[k].m11 * s_[k].x + s_[k].m12 * s_[k].y) - (s_[0].m11 * s_[0].x + s_[0].m12 * s_[0].y),

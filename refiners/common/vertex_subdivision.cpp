@@ -110,6 +110,14 @@ VertexSubdivision::Resolution VertexSubdivision::resolve(int n, bool small) {
         std::array<int, 3> t{c[i], c[j], c[l]};
         std::sort(t.begin(), t.end());
         const Trio trio{sites_[static_cast<std::size_t>(t[0])], sites_[static_cast<std::size_t>(t[1])], sites_[static_cast<std::size_t>(t[2])]};
+        // A trio one of whose sites another candidate beats all over the box has no vertex there.
+        const auto beaten = [&](int a) {
+          return std::any_of(c.begin(), c.end(), [&](int w) {
+            return w != t[0] && w != t[1] && w != t[2] &&
+                   squared_distance_difference_bounds(sites_[static_cast<std::size_t>(w)], sites_[static_cast<std::size_t>(a)], b).hi < 0;
+          });
+        };
+        if (c.size() > 3 && std::any_of(t.begin(), t.end(), beaten)) continue;
         const VertexSearch search = vertices_in(trio, interval_box(b));
         if (!search.complete) return small ? Resolution::unresolved : Resolution::split;
         for (const VertexBox& v : search.vertices) {
@@ -148,7 +156,7 @@ VertexSubdivision::Resolution VertexSubdivision::resolve(int n, bool small) {
 }
 
 void VertexSubdivision::settle(int n, bool first_small) {
-  const std::vector<int>& cands = nodes_[static_cast<std::size_t>(n)].candidates;
+  const std::vector<int> cands = nodes_[static_cast<std::size_t>(n)].candidates;
   if (cands.size() < 3) return;
   const Box b = nodes_[static_cast<std::size_t>(n)].box;
   // Small: no wider than 2⁻⁴ of the least distance between two candidates. Three candidates
@@ -259,7 +267,8 @@ void VertexSubdivision::insert(const MetricSite& s) {
   sites_.push_back(s);
   insertion_start_ = nodes_.size();
   update(0, static_cast<int>(sites_.size()) - 1);
-  // In an order of their own, not the tree's: how the boxes are split changes no refinement.
+  // In an order of their own (no two vertices share a trio and a place), not the order the tree
+  // found them in, which depends on how its boxes are split.
   const auto key = [this](int id) {
     const Vertex& v = vertices_[static_cast<std::size_t>(id)];
     const Point2<double> p = v.box.approx();

@@ -3,9 +3,9 @@
 // where three sites are equally near and no site is nearer), in a box R, kept as sites are added.
 // A binary tree of boxes over R whose every node lists the sites that can be nearest somewhere in
 // its box (its candidates: a site is left out when its least squared distance over the box, bounded
-// below in FilterInterval, exceeds another site's greatest, bounded above, or when the difference of
-// the two squared distances is positive over the box, bounded in the centred form against the two
-// sites likeliest nearest there). A leaf with three candidates holds exactly the points equidistant
+// below, exceeds another site's greatest, bounded above, or when the difference of the two squared
+// distances is positive over the box, against the two sites likeliest nearest there; the bounds
+// are box_bounds.hpp's). A leaf with three candidates holds exactly the points equidistant
 // from them (voronoi_vertex.hpp's certified boxes): no other site can be as near anywhere in it, so
 // each is a vertex of D, of degree 3. A node with more is halved across its longer side in the
 // candidates' metrics; once it is small beside their spacing it is resolved trio by trio instead
@@ -40,8 +40,8 @@ class VertexSubdivision {
   // R: where vertices are kept; leaves are not split below min_width (> 0), nor once the tree
   // has 2²⁰ + 2¹¹ nodes per site or an insertion has made 2¹⁶ (then the leaf is unresolved: a
   // bound on memory and time, which a curve of ties, such as two sites at one point with different
-  // metrics, would otherwise exhaust; refinement needs about 180 nodes per site, and no insertion
-  // of the shock and radial runs of docs/refiners.md made 2,000).
+  // metrics, would otherwise exhaust; the shock and radial runs of docs/refiners.md end with about
+  // 40 nodes per site, and none of their insertions made more than 412).
   VertexSubdivision(const Box& R, double min_width);
 
   // Adds site s as the next id (0, 1, 2, …).
@@ -82,7 +82,7 @@ class VertexSubdivision {
   // upper bound of their squared distances over b (a NaN bound counts as ∞).
   std::vector<int> candidates_in(const Box& b, const std::vector<int>& from, int extra, double& U) const;
   // Makes a node whose candidates are set a leaf with its vertices, or splits it; first_small:
-  // its parent, if any, is not small (see settle).
+  // false for the halves of a small node whose trios were tried already (see settle).
   void settle(int node, bool first_small = true);
   // The vertices of a leaf's candidates, three by three: each point equidistant from three in the
   // closed box from which every other candidate is strictly farther (certified_point.hpp). Kept

@@ -90,9 +90,7 @@ class LsRefinement {
       }
       // q is within two next_up steps of the vertex, which are up to three of q's own ulps (q just
       // below a power of two, the vertex above it); four are recorded.
-      const double ulp_x = std::nextafter(std::abs(q.x), INFINITY) - std::abs(q.x), ulp_y = std::nextafter(std::abs(q.y), INFINITY) - std::abs(q.y);
-      insert(q, rule, std::sqrt(squared_length(metric_, q, diagram_.point(v[0]))),
-             farthest_in_box(q, q.x - 4 * ulp_x, q.x + 4 * ulp_x, q.y - 4 * ulp_y, q.y + 4 * ulp_y));
+      insert(q, rule, std::sqrt(squared_length(metric_, q, diagram_.point(v[0]))), within_ulps(q, 4));
       return true;
     }
     return false;

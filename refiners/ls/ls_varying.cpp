@@ -98,11 +98,11 @@ class LsVaryingRefinement {
       if (!attack(c, rule, radius, "the Voronoi vertex of sites " + trio_text(v.sites), displacement)) violators_.push_front(q);
       return true;
     }
-    for (const ExactTie& tie : exact_ties_) {
-      const Rule rule = tie_violation(tie);
-      if (rule == Rule::none) continue;
+    for (const JudgedTie& judged : exact_ties_) {
+      if (judged.rule == Rule::none) continue;
+      const ExactTie& tie = judged.tie;
       const auto [q, displacement] = rounded(tie.c);
-      attack(q, rule, std::sqrt(squared_distance(site(tie.sites[0]), q)),
+      attack(q, judged.rule, std::sqrt(squared_distance(site(tie.sites[0]), q)),
              "the Voronoi vertex of degree " + std::to_string(tie.sites.size()) + " of sites " + tie_text(tie), displacement);
       return true;
     }
@@ -123,10 +123,9 @@ class LsVaryingRefinement {
       r.mesh.triangles.push_back(order == Sign::negative ? std::array<int, 3>{v.sites[0], v.sites[2], v.sites[1]} : v.sites);
       r.violators_left += violation(static_cast<int>(q)) != Rule::none;
     }
-    for (const ExactTie& tie : exact_ties_) {
-      const auto good = good_fan(tie, diagram_.sites(), tie_metrics(tie), s2_);
-      for (const auto& t : good ? *good : fan(tie, 0)) r.mesh.triangles.push_back(t);
-      r.violators_left += tie_violation(tie) != Rule::none;
+    for (const JudgedTie& judged : exact_ties_) {
+      for (const auto& t : judged.triangles) r.mesh.triangles.push_back(t);
+      r.violators_left += judged.rule != Rule::none;
     }
     for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
     stalled_ = stalled;
@@ -233,8 +232,7 @@ class LsVaryingRefinement {
   // too), within an ulp per coordinate: the point and its displacement (from above).
   static std::pair<Point2<double>, double> rounded(const Point2<Rational>& c) {
     const Point2<double> q{c.x.convert_to<double>(), c.y.convert_to<double>()};
-    const double ulp_x = std::nextafter(std::abs(q.x), INFINITY) - std::abs(q.x), ulp_y = std::nextafter(std::abs(q.y), INFINITY) - std::abs(q.y);
-    return {q, farthest_in_box(q, q.x - ulp_x, q.x + ulp_x, q.y - ulp_y, q.y + ulp_y)};
+    return {q, within_ulps(q, 1)};
   }
   // Vertex q as the site rule 3, 4, 5 or 7 inserts, with its displacement: when its three sites
   // share one metric the vertex is their rational circumcentre in it, rounded (so that grid
@@ -258,11 +256,22 @@ class LsVaryingRefinement {
     const Point2<double> q = rounded(tie.c).first;
     return {site(tie.sites[0]).M, sites_.field.at(q.x, q.y)};
   }
+  // An exact tie with its verdict and the triangles the mesh gets for it: a good fan, or any fan
+  // while it is a violator. Both depend on the tie's sites alone (their places and metrics, and the
+  // field at its vertex), so they are judged once, when the tie is first found.
+  struct JudgedTie {
+    ExactTie tie;
+    Rule rule;
+    std::vector<std::array<int, 3>> triangles;
+  };
   // Rules 3 and 4 at an exact tie (one metric: no inverted or unwedged triangle): poor when no fan
   // of its polygon has all its angles at least θ_bound; too large as violation() judges a vertex,
   // exactly at the rational vertex.
-  Rule tie_violation(const ExactTie& tie) const {
-    if (!good_fan(tie, diagram_.sites(), tie_metrics(tie), s2_)) return Rule::poor_angle;
+  JudgedTie judged(const ExactTie& tie) const {
+    const auto good = good_fan(tie, diagram_.sites(), tie_metrics(tie), s2_);
+    return {tie, good ? too_large(tie) : Rule::poor_angle, good ? *good : fan(tie, 0)};
+  }
+  Rule too_large(const ExactTie& tie) const {
     if (p_.size <= 0) return Rule::none;
     const std::size_t judged = p_.normalized_metric ? tie.sites.size() : 1;
     const auto exact = [](double x) { return Rational(x); };
@@ -431,23 +440,50 @@ class LsVaryingRefinement {
     // resolve some): a leaf whose candidates make an exact tie (exact_tie.hpp) holds its vertex,
     // kept when in closed Ω, or no vertex; any other gives rule 8 its centre.
     if (diagram_.resolved()) return;
+    // Ties are kept from one insertion to the next by their leaves' candidates (sites keep their
+    // places and metrics: a set's tie, and its verdict, never change), only those of leaves still
+    // unresolved.
+    std::map<std::vector<int>, std::optional<JudgedTie>> known;
     for (const auto& leaf : diagram_.unresolved()) {
       const common::Box& b = leaf.box;
-      auto cached = tie_of_.find(leaf.candidates);  // sites keep their metrics: a set's tie never changes
-      if (cached == tie_of_.end()) cached = tie_of_.emplace(leaf.candidates, exact_tie(diagram_.sites(), leaf.candidates)).first;
-      if (const auto& tie = cached->second) {
-        const auto same = [&](const ExactTie& t) { return t.c.x == tie->c.x && t.c.y == tie->c.y; };
-        if (in_closed_box(tie->c, b) && std::none_of(ties_anywhere_.begin(), ties_anywhere_.end(), same)) {
-          ties_anywhere_.push_back(*tie);
-          if (domain_.contains(tie->c)) exact_ties_.push_back(*tie);
+      auto cached = known.find(leaf.candidates);
+      if (cached == known.end()) {
+        auto earlier = tie_of_.find(leaf.candidates);
+        std::optional<JudgedTie> found;
+        if (earlier != tie_of_.end()) found = std::move(earlier->second);
+        else if (const auto tie = exact_tie(diagram_.sites(), leaf.candidates)) found = judged(*tie);
+        cached = known.emplace(leaf.candidates, std::move(found)).first;
+      }
+      if (const auto& judged_tie = cached->second) {
+        const ExactTie& tie = judged_tie->tie;
+        const auto same = [&](const ExactTie& t) { return t.c.x == tie.c.x && t.c.y == tie.c.y; };
+        if (in_closed_box(tie.c, b) && std::none_of(ties_anywhere_.begin(), ties_anywhere_.end(), same)) {
+          ties_anywhere_.push_back(tie);
+          if (domain_.contains(tie.c)) exact_ties_.push_back(*judged_tie);
         }
         continue;
       }
       if (domain_.contains(b) == std::optional<bool>(false)) continue;  // no vertex of the mesh there
-      const Point2<double> c{b.x0 + (b.x1 - b.x0) / 2, b.y0 + (b.y1 - b.y0) / 2};
-      if (sites_.grid.nearest_site2(c, sites_.field.at(c.x, c.y), sites_.points) == 0) continue;  // a site there already
+      // The leaf's centre, or when a site is there already (an earlier rule 8 site, in a leaf still
+      // unresolved), the centre of one of its quarters; none free stops the run.
+      const double w = b.x1 - b.x0, h = b.y1 - b.y0;
+      const std::array<Point2<double>, 5> at{{{b.x0 + w / 2, b.y0 + h / 2},
+                                              {b.x0 + w / 4, b.y0 + h / 4},
+                                              {b.x1 - w / 4, b.y0 + h / 4},
+                                              {b.x0 + w / 4, b.y1 - h / 4},
+                                              {b.x1 - w / 4, b.y1 - h / 4}}};
+      const auto free = std::find_if(at.begin(), at.end(), [&](const Point2<double>& p) {
+        return sites_.grid.nearest_site2(p, sites_.field.at(p.x, p.y), sites_.points) > 0;
+      });
+      if (free == at.end()) {
+        stalled_ = "the diagram is unresolved in the box from " + point_text({b.x0, b.y0}) + " to " + point_text({b.x1, b.y1}) +
+                   ", and its centre and its quarters' centres are sites";
+        return;
+      }
+      const Point2<double> c = *free;
       if (std::none_of(ties_.begin(), ties_.end(), [&](const Point2<double>& t) { return t.x == c.x && t.y == c.y; })) ties_.push_back(c);
     }
+    tie_of_ = std::move(known);
   }
 
   // Inserts Q as a site; its index, or −1 when the run stalls.
@@ -481,8 +517,8 @@ class LsVaryingRefinement {
   std::deque<int> violators_;
   std::deque<Point2<double>> ties_;
   std::vector<ExactTie> ties_anywhere_;  // every exact tie of the diagram (in Ω's bounding box)
-  std::vector<ExactTie> exact_ties_;    // those in closed Ω
-  std::map<std::vector<int>, std::optional<ExactTie>> tie_of_;  // by the leaf's candidates
+  std::vector<JudgedTie> exact_ties_;   // those in closed Ω
+  std::map<std::vector<int>, std::optional<JudgedTie>> tie_of_;  // by the unresolved leaves' candidates
   std::string stalled_;
   RunRecord record_;
 };

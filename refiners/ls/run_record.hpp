@@ -16,6 +16,13 @@ inline double farthest_in_box(const predicates::Point2<double>& q, double x0, do
   return std::hypot(std::max(q.x - x0, x1 - q.x), std::max(q.y - y0, y1 - q.y)) * (1 + 0x1p-50);
 }
 
+// From above, the Euclidean distance from q to any point within k of q's own ulps (the step from
+// |q| up) of it in each coordinate: how far a site rounded to q can be from the point it rounds.
+inline double within_ulps(const predicates::Point2<double>& q, int k) {
+  const double ux = std::nextafter(std::abs(q.x), INFINITY) - std::abs(q.x), uy = std::nextafter(std::abs(q.y), INFINITY) - std::abs(q.y);
+  return farthest_in_box(q, q.x - k * ux, q.x + k * ux, q.y - k * uy, q.y + k * uy);
+}
+
 class RunRecord {
  public:
   // A site at q by `rule`, at squared distance nearest2 from the nearest earlier site in its
