@@ -79,7 +79,9 @@ struct FilterInterval {
   friend FilterInterval operator-(const FilterInterval& a) { return {-a.hi, -a.lo}; }
   friend FilterInterval operator*(const FilterInterval& a, const FilterInterval& b) {
     const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-    if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4)) {  // 0 · ∞ after an overflow
+    // A NaN among them (0 · ∞ after an overflow) makes the sum NaN, as does ∞ − ∞ (then a product
+    // overflowed, and the whole line is right too).
+    if (std::isnan(p1 + p2 + p3 + p4)) {
       constexpr double inf = std::numeric_limits<double>::infinity();
       return {-inf, inf};
     }

@@ -8,10 +8,11 @@
 //   static constexpr std::array<int, arity> groups;        // magnitude group of each input
 //   static constexpr std::array<const char*, arity> inputs; // names, for error messages
 //   template <class T> static T eval(const std::array<T, arity>& x);
-// evaluated in double (static filter, bound derived by ErrorModel), FilterInterval and
-// Rational — the same code for all three.
+// evaluated in double (static filter, bound derived by ErrorModel), FilterInterval, and exactly
+// in Expansion (double inputs) or Rational — the same code for all.
 
 #include "predicates/error_model.hpp"
+#include "numbers/expansion.hpp"
 #include "numbers/filter_interval.hpp"
 #include "numbers/sign.hpp"
 
@@ -134,6 +135,19 @@ Sign exact_sign(const std::array<Rational, K::arity>& x) {
   return sign_of(K::template eval<Rational>(x));
 }
 
+// The exact sign at double inputs: in expansions (numbers/expansion.hpp), without GMP's
+// allocations and gcds; in rationals only when an expansion overflowed or underflowed.
+template <class K>
+Sign exact_sign_of_doubles(const std::array<double, K::arity>& x) {
+  std::array<Expansion, K::arity> e;
+  for (std::size_t i = 0; i < K::arity; ++i) e[i] = Expansion(x[i]);
+  const Expansion value = K::template eval<Expansion>(e);
+  if (value.exact()) return value.sign();
+  std::array<Rational, K::arity> q;
+  for (std::size_t i = 0; i < K::arity; ++i) q[i] = Rational(x[i]);
+  return exact_sign<K>(q);
+}
+
 template <class K>
 Sign interval_then_exact(const std::array<FilterInterval, K::arity>& xi, const auto& exact_inputs) {
   if (auto s = K::template eval<FilterInterval>(xi).sign()) return *s;
@@ -214,14 +228,19 @@ template <class K>
   if (const auto s = translated_static_sign<K>(x)) return *s;
   for (std::size_t i = 0; i < K::arity; ++i)
     if (!std::isfinite(x[i])) throw_non_finite(K::name, K::inputs[i], x[i]);
-  ++filter_stats().interval_stage;
-  std::array<FilterInterval, K::arity> xi;
-  for (std::size_t i = 0; i < K::arity; ++i) xi[i] = FilterInterval(x[i]);
-  return interval_then_exact<K>(xi, [&x] {
-    std::array<Rational, K::arity> q;
-    for (std::size_t i = 0; i < K::arity; ++i) q[i] = Rational(x[i]);
-    return q;
-  });
+  // The interval stage, unless the double evaluation is exactly 0: round-to-nearest is monotone,
+  // so that value lies in the interval evaluation (each end rounded to nearest, then widened),
+  // which cannot then decide. Such a call is most often an exact zero (a right angle, four
+  // cocircular points of a grid), which expansions decide at little cost. Either way the exact
+  // stage gives the answer: this only chooses the faster path.
+  if (K::template eval<double>(x) != 0) {
+    ++filter_stats().interval_stage;
+    std::array<FilterInterval, K::arity> xi;
+    for (std::size_t i = 0; i < K::arity; ++i) xi[i] = FilterInterval(x[i]);
+    if (auto s = K::template eval<FilterInterval>(xi).sign()) return *s;
+  }
+  ++filter_stats().exact_stage;
+  return exact_sign_of_doubles<K>(x);
 }
 
 // The sign of K at double inputs, each taken as the rational it denotes. Throws

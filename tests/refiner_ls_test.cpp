@@ -467,3 +467,54 @@ TEST(LsRefiner, VaryingFieldRunIsTheDualOfTheExactDiagram) {
 }
 
 }  // namespace
+
+// The expansions' paths against the rationals' (filters only speed up): the cells along a
+// subsegment, and the Voronoi vertex rounded to doubles, on grids (exact ties, right angles),
+// random points and metrics, and magnitudes where expansions underflow and rationals take over.
+TEST(SegmentCells, ExpansionsGiveTheRationalCells) {
+  std::mt19937 rng(12);
+  std::uniform_int_distribution<int> coordinate(-16, 16), exponent(-560, 40);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (int round = 0; round < 3000; ++round) {
+    const int kind = round % 3;  // grid, random, tiny (expansions underflow)
+    const double scale = kind == 2 ? std::ldexp(1.0, exponent(rng)) : 1.0;
+    const Sym2<double> M = round % 4 == 0 ? Sym2<double>{1, 0, 1} : random_metric(rng);
+    const auto point = [&] {
+      return kind == 0 ? Point2<double>{coordinate(rng) / 16.0, coordinate(rng) / 16.0} : Point2<double>{scale * unit(rng), scale * unit(rng)};
+    };
+    const Point2<double> a = point(), b = point();
+    if (a.x == b.x && a.y == b.y) continue;
+    std::vector<std::pair<int, Point2<double>>> sites{{0, a}, {1, b}};
+    for (int k = 2; k < 7; ++k) sites.emplace_back(k, point());
+    const auto fast = refiners::ls::cells_along(a, b, M, sites, true), exact = refiners::ls::cells_along(a, b, M, sites, false);
+    ASSERT_EQ(fast.size(), exact.size()) << "round " << round;
+    for (std::size_t i = 0; i < fast.size(); ++i) {
+      ASSERT_EQ(fast[i].site, exact[i].site) << "round " << round;
+      ASSERT_EQ(fast[i].lo, exact[i].lo) << "round " << round;
+      ASSERT_EQ(fast[i].hi, exact[i].hi) << "round " << round;
+    }
+  }
+}
+
+TEST(DelaunayInMetric, RoundedCircumcentreIsTheRationalOneRoundedToNearest) {
+  std::mt19937 rng(13);
+  std::uniform_int_distribution<int> coordinate(-16, 16), exponent(-400, 40);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int ties = 0;
+  for (int round = 0; round < 5000; ++round) {
+    const int kind = round % 3;
+    const double scale = kind == 2 ? std::ldexp(1.0, exponent(rng)) : 1.0;
+    const Sym2<double> M = round % 4 == 0 ? Sym2<double>{1, 0, 1} : random_metric(rng, round % 8 == 1);
+    const auto point = [&] {
+      return kind == 0 ? Point2<double>{coordinate(rng) / 16.0, coordinate(rng) / 16.0} : Point2<double>{scale * unit(rng), scale * unit(rng)};
+    };
+    const Point2<double> a = point(), b = point(), c = point();
+    if (predicates::orientation(a, b, c) == Sign::zero) continue;
+    const Point2<Rational> e = refiners::ls::circumcentre_in<Rational>(a, b, c, M);
+    const Point2<double> r = refiners::ls::rounded_circumcentre(a, b, c, M);
+    ASSERT_EQ(r.x, e.x.convert_to<double>()) << "round " << round;
+    ASSERT_EQ(r.y, e.y.convert_to<double>()) << "round " << round;
+    ties += Rational(r.x) == e.x && Rational(r.y) == e.y;
+  }
+  EXPECT_GT(ties, 50);  // grid triangles whose circumcentre is a double
+}

@@ -13,7 +13,7 @@ namespace anisocert::refiners::common {
 
 Boundary::Boundary(const Domain& domain, Sites& sites) : domain_(domain), sites_(sites) {
   const int m = static_cast<int>(domain.size());
-  index_.reset(sites_.grid);
+  boxes_.reset(sites_.grid);
   for (int i = 0; i < m; ++i) segments_.push_back({i, (i + 1) % m});
   for (int i = 0; i < m; ++i) set_box(i);
   neighbours_.resize(sites_.size(), {-1, -1});
@@ -22,7 +22,7 @@ Boundary::Boundary(const Domain& domain, Sites& sites) : domain_(domain), sites_
 }
 
 bool Boundary::encroaches(const Point2<double>& x, const Sym2<double>& Mx, int s) const {
-  if (!in_box(x, s)) return false;
+  if (!boxes_.box(s).contains(x)) return false;
   const auto [a, b] = segments_[s];
   for (const Sym2<double>* M : std::array<const Sym2<double>*, 3>{&Mx, &sites_.metrics[a], &sites_.metrics[b]})
     if (predicates::encroaches(x, sites_.points[a], sites_.points[b], *M)) return true;
@@ -42,17 +42,11 @@ void Boundary::site_added() {
 }
 
 void Boundary::queue_encroached_by(int k) {
-  for (int s : index_.at(sites_.grid.cell_of(sites_.points[k])))
+  for (int s : boxes_.filed_at(sites_.points[k], sites_.grid))
     if (encroached_by_site(k, s)) queue_.push_back(s);
 }
 
-void Boundary::refile() {
-  index_.reset(sites_.grid);
-  for (int s = 0; s < static_cast<int>(segments_.size()); ++s) {
-    box_cells_[s] = {};
-    set_box(s);
-  }
-}
+void Boundary::refile() { boxes_.refile(sites_.grid); }
 
 void Boundary::set_box(int s) {
   const auto [a, b] = segments_[s];
@@ -64,16 +58,7 @@ void Boundary::set_box(int s) {
     const auto h = geometry::ellipse_half_widths(M, predicates::quadratic_form(M, pb.x - pa.x, pb.y - pa.y) / 4);
     hx = std::max(hx, h.hx), hy = std::max(hy, h.hy);
   }
-  if (static_cast<int>(boxes_.size()) <= s) boxes_.resize(s + 1), box_cells_.resize(s + 1);
-  boxes_[s] = {mx - 2 * hx, mx + 2 * hx, my - 2 * hy, my + 2 * hy};
-  const Cells cells = sites_.grid.cells_of(boxes_[s]);
-  index_.move(s, box_cells_[s], {});
-  index_.move(s, {}, cells);
-  box_cells_[s] = cells;
-}
-
-bool Boundary::in_box(const Point2<double>& x, int s) const {
-  return boxes_[s].contains(x);
+  boxes_.set(s, {mx - 2 * hx, mx + 2 * hx, my - 2 * hy, my + 2 * hy}, sites_.grid);
 }
 
 Box Boundary::search_box(int s) const {
@@ -144,7 +129,7 @@ std::optional<int> Boundary::snap(const Point2<double>& x, const Sym2<double>& M
   }
   int nearest = -1;
   double best = inf;
-  for (int s : outside ? all : index_.at(sites_.grid.cell_of(x))) {
+  for (int s : outside ? all : boxes_.filed_at(x, sites_.grid)) {
     const auto [a, b] = segments_[s];
     const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
     if (predicates::encroaches(x, pa, pb, M) || encroaches(x, Mx, s)) return s;

@@ -69,7 +69,6 @@ class Boundary {
   // The box (a prefilter) outside which no point encroaches s in its endpoints' metrics, doubled so
   // that it also serves a nearby point's own (similar) metric; filed in the grid cells it covers.
   void set_box(int s);
-  bool in_box(const Point2<double>& x, int s) const;
   // A box around subsegment s, of half-width its longer side, searched for the sites that still
   // encroach it. A heuristic: in an anisotropic metric a site outside it can encroach s (M =
   // diag(1, 1/100), s from (0, 0) to (1, 0): (1/2, 3) does), and s is then not split; searching
@@ -81,9 +80,7 @@ class Boundary {
   Sites& sites_;
   std::vector<std::pair<int, int>> segments_;
   std::vector<std::array<int, 2>> neighbours_;
-  std::vector<Box> boxes_;
-  std::vector<Cells> box_cells_;
-  BoxIndex index_;
+  FiledBoxes boxes_;
   std::vector<int> pending_;  // subsegments whose boxes wait for the new site's metric
   std::deque<int> queue_;
 };

@@ -98,4 +98,36 @@ void BoxIndex::move(int id, const Cells& from, const Cells& to) {
       if (!from.contains(i, j)) cells_[static_cast<std::size_t>(j) * g_ + i].push_back(id);
 }
 
+void FiledBoxes::reset(const SiteGrid& grid) {
+  boxes_.clear();
+  cells_.clear();
+  index_.reset(grid);
+}
+
+void FiledBoxes::set(int id, const Box& b, const SiteGrid& grid) {
+  const auto i = static_cast<std::size_t>(id);
+  if (boxes_.size() <= i) boxes_.resize(i + 1), cells_.resize(i + 1);
+  boxes_[i] = b;
+  const Cells cells = grid.cells_of(b);
+  index_.move(id, cells_[i], {});
+  index_.move(id, {}, cells);
+  cells_[i] = cells;
+}
+
+void FiledBoxes::refile(const SiteGrid& grid) {
+  index_.reset(grid);
+  for (std::size_t i = 0; i < boxes_.size(); ++i) {
+    cells_[i] = grid.cells_of(boxes_[i]);
+    index_.move(static_cast<int>(i), {}, cells_[i]);
+  }
+}
+
+const std::vector<int>& FiledBoxes::holding(const Point2<double>& q, const SiteGrid& grid) const {
+  found_.clear();
+  for (int id : filed_at(q, grid))
+    if (box(id).contains(q)) found_.push_back(id);
+  std::sort(found_.begin(), found_.end());
+  return found_;
+}
+
 }  // namespace anisocert::refiners::common

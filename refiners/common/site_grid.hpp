@@ -73,4 +73,29 @@ class BoxIndex {
   std::vector<std::vector<int>> cells_;
 };
 
+// Boxes by id (a subsegment's encroachment box), each filed in the grid cells it covers: the ids
+// whose boxes may hold a point are those filed in its cell.
+class FiledBoxes {
+ public:
+  // Forgets every box; ids are then filed in `grid`'s cells.
+  void reset(const SiteGrid& grid);
+  // Sets id's box (ids 0, 1, 2, … may come in any order), moving it to the cells it covers.
+  void set(int id, const Box& b, const SiteGrid& grid);
+  // Files every box again in `grid`'s cells, by increasing id (after the grid was rebuilt).
+  void refile(const SiteGrid& grid);
+
+  const Box& box(int id) const { return boxes_[static_cast<std::size_t>(id)]; }
+  // The ids filed in q's cell, unordered; some of their boxes may not hold q.
+  const std::vector<int>& filed_at(const Point2<double>& q, const SiteGrid& grid) const { return index_.at(grid.cell_of(q)); }
+  // The ids whose closed boxes hold q, by increasing id, in a buffer reused across calls (valid
+  // until the next call).
+  const std::vector<int>& holding(const Point2<double>& q, const SiteGrid& grid) const;
+
+ private:
+  std::vector<Box> boxes_;
+  std::vector<Cells> cells_;
+  BoxIndex index_;
+  mutable std::vector<int> found_;
+};
+
 }  // namespace anisocert::refiners::common

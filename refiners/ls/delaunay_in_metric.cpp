@@ -11,6 +11,16 @@ namespace anisocert::refiners::ls {
 
 using anisocert::Sign;
 
+Point2<double> rounded_circumcentre(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
+  const CircumcentreParts<Expansion> p = circumcentre_parts<Expansion>(a, b, c, M);
+  // x = a.x + nx / det = (a.x det + nx) / det.
+  const auto x = rounded_quotient(Expansion(a.x) * p.det + p.nx, p.det);
+  const auto y = rounded_quotient(Expansion(a.y) * p.det + p.ny, p.det);
+  if (x && y) return {*x, *y};
+  const Point2<Rational> e = circumcentre_in<Rational>(a, b, c, M);
+  return {e.x.convert_to<double>(), e.y.convert_to<double>()};
+}
+
 DelaunayInMetric::DelaunayInMetric(const Sym2<double>& M, const common::Box& extent) : M_(M) {
   const double cx = (extent.x0 + extent.x1) / 2, cy = (extent.y0 + extent.y1) / 2;
   double size = std::max(extent.x1 - extent.x0, extent.y1 - extent.y0);
@@ -23,6 +33,8 @@ DelaunayInMetric::DelaunayInMetric(const Sym2<double>& M, const common::Box& ext
   const double r = 1024 * size * (1 + stretch);
   ghosts_ = {Point2<double>{cx, cy + 2 * r}, Point2<double>{cx - 1.8 * r, cy - r}, Point2<double>{cx + 1.8 * r, cy - r}};
   triangles_.push_back({{-1, -2, -3}, {-1, -1, -1}, true});
+  box_.emplace_back();
+  has_box_.push_back(false);
 }
 
 bool DelaunayInMetric::real(int t) const {
@@ -60,9 +72,12 @@ int DelaunayInMetric::new_triangle(const std::array<int, 3>& v) {
     const int t = free_.back();
     free_.pop_back();
     triangles_[t] = tri;
+    has_box_[static_cast<std::size_t>(t)] = false;
     return t;
   }
   triangles_.push_back(tri);
+  box_.emplace_back();
+  has_box_.push_back(false);
   return static_cast<int>(triangles_.size()) - 1;
 }
 

@@ -10,6 +10,7 @@
 // triangulation. No ghost lies in the M-circumdisc of a triangle of sites whose Voronoi vertex is
 // in the box, so those triangles are exactly Del_M's; a triangle with a ghost is dual to a vertex
 // whose disc would hold every site of the box, so it is no vertex in the box.
+#include "numbers/expansion.hpp"
 #include "numbers/filter_interval.hpp"
 #include "numbers/rational.hpp"
 #include "predicates/point.hpp"
@@ -24,18 +25,31 @@ using predicates::Point2;
 using predicates::Sym2;
 
 // The M-circumcentre p of a, b, c (not collinear): 2 (b − a)ᵀM (p − a) = |b − a|²_M and likewise
-// for c, solved by Cramer's rule in T: exactly (Rational), or a box holding it (FilterInterval;
-// unbounded when the filter cannot tell the determinant from 0).
+// for c, solved by Cramer's rule: p − a = (nx, ny) / det, polynomials in the inputs.
 template <class T>
-Point2<T> circumcentre_in(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
+struct CircumcentreParts {
+  T nx, ny, det;
+};
+template <class T>
+CircumcentreParts<T> circumcentre_parts(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
   const T m11(M.m11), m12(M.m12), m22(M.m22), ax(a.x), ay(a.y);
   const T ux = T(b.x) - ax, uy = T(b.y) - ay, wx = T(c.x) - ax, wy = T(c.y) - ay;
   // Rows M u and M w; right-hand sides |u|²_M / 2 and |w|²_M / 2.
   const T r11 = m11 * ux + m12 * uy, r12 = m12 * ux + m22 * uy, r21 = m11 * wx + m12 * wy, r22 = m12 * wx + m22 * wy;
   const T U = (r11 * ux + r12 * uy) * T(0.5), W = (r21 * wx + r22 * wy) * T(0.5);
-  const T det = r11 * r22 - r12 * r21;
-  return {ax + (U * r22 - W * r12) / det, ay + (r11 * W - r21 * U) / det};
+  return {U * r22 - W * r12, r11 * W - r21 * U, r11 * r22 - r12 * r21};
 }
+// The circumcentre in T: exactly (Rational), or a box holding it (FilterInterval; unbounded when
+// the filter cannot tell the determinant from 0).
+template <class T>
+Point2<T> circumcentre_in(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
+  const CircumcentreParts<T> p = circumcentre_parts<T>(a, b, c, M);
+  return {T(a.x) + p.nx / p.det, T(a.y) + p.ny / p.det};
+}
+// The circumcentre rounded to the nearest doubles (Boost's conversion of the rational
+// circumcentre), from its parts in expansions (numbers/expansion.hpp), and in rationals only when
+// those cannot decide.
+Point2<double> rounded_circumcentre(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M);
 
 class DelaunayInMetric {
  public:
@@ -66,6 +80,12 @@ class DelaunayInMetric {
     const auto& v = triangles_[t].v;
     return circumcentre_in<T>(point(v[0]), point(v[1]), point(v[2]), M_);
   }
+  // A box holding it (circumcentre<FilterInterval>), computed once per triangle.
+  const Point2<FilterInterval>& circumcentre_box(int t) const {
+    const auto k = static_cast<std::size_t>(t);
+    if (!has_box_[k]) box_[k] = circumcentre<FilterInterval>(t), has_box_[k] = true;
+    return box_[k];
+  }
 
  private:
   int locate(const Point2<double>& p) const;
@@ -75,6 +95,8 @@ class DelaunayInMetric {
   std::array<Point2<double>, 3> ghosts_;
   std::vector<Point2<double>> points_;
   std::vector<Triangle> triangles_;
+  mutable std::vector<Point2<FilterInterval>> box_;  // per slot, while has_box_
+  mutable std::vector<bool> has_box_;
   std::vector<int> free_;  // dead slots, reused
   int recent_ = 0;         // a live triangle near the last insertion: where the next walk starts
   std::vector<int> created_, cavity_;

@@ -49,10 +49,11 @@ class LsRefinement {
                                  metric_text(M) + " at " + domain.corner_text(k));
       diagram_.insert(sites_.add(vertices[k], M), vertices[k]);
     }
+    boxes_.reset(sites_.grid);
     for (std::size_t e = 0; e < domain.segment_count(); ++e) {
       const auto [a, b] = domain.segment_ends(e);
-      subsegments_.add(a, b, static_cast<int>(e));
-      boxes_.push_back(near_segment(vertices[static_cast<std::size_t>(a)], vertices[static_cast<std::size_t>(b)], metric_));
+      const int s = subsegments_.add(a, b, static_cast<int>(e));
+      boxes_.set(s, near_segment(vertices[static_cast<std::size_t>(a)], vertices[static_cast<std::size_t>(b)], metric_), sites_.grid);
     }
     for (std::size_t t = 0; t < diagram_.slots(); ++t)
       if (diagram_.triangle(static_cast<int>(t)).alive) queue_if_violator(static_cast<int>(t));
@@ -103,7 +104,7 @@ class LsRefinement {
     for (std::size_t t = 0; t < diagram_.slots(); ++t) {
       const auto& tri = diagram_.triangle(static_cast<int>(t));
       if (!tri.alive || !diagram_.real(static_cast<int>(t))) continue;
-      if (vertex_in_domain(static_cast<int>(t), diagram_.circumcentre<FilterInterval>(static_cast<int>(t)))) r.mesh.triangles.push_back(tri.v);
+      if (vertex_in_domain(static_cast<int>(t), diagram_.circumcentre_box(static_cast<int>(t)))) r.mesh.triangles.push_back(tri.v);
       r.violators_left += violation(static_cast<int>(t)) != Rule::none;
     }
     for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
@@ -126,21 +127,21 @@ class LsRefinement {
     for (int i = 0; i < 3 && !poor; ++i)
       poor = !predicates::angle_at_least_arcsin(diagram_.point(v[(i + 2) % 3]), diagram_.point(v[i]), diagram_.point(v[(i + 1) % 3]),
                                                 metric_, s2_);
-    const Point2<FilterInterval> c = diagram_.circumcentre<FilterInterval>(t);
+    const Point2<FilterInterval>& c = diagram_.circumcentre_box(t);
     if (!poor && !too_large(t, c)) return Rule::none;
     if (!vertex_in_domain(t, c)) return Rule::none;
     return poor ? Rule::poor_angle : Rule::too_large;
   }
   // The Voronoi vertex of t as a double within two ulps of it per coordinate: a corner of its
-  // FilterInterval box when that is so tight, else the exact vertex truncated (within one ulp).
+  // FilterInterval box when that is so tight, else the exact vertex rounded to nearest.
   Point2<double> rounded_vertex(int t) const {
-    const Point2<FilterInterval> c = diagram_.circumcentre<FilterInterval>(t);
+    const Point2<FilterInterval>& c = diagram_.circumcentre_box(t);
     const auto tight = [](const FilterInterval& i) {
       return std::isfinite(i.lo) && i.hi <= FilterInterval::next_up(FilterInterval::next_up(i.lo));
     };
     if (tight(c.x) && tight(c.y)) return {c.x.lo, c.y.lo};
-    const Point2<Rational> e = diagram_.circumcentre<Rational>(t);
-    return {e.x.convert_to<double>(), e.y.convert_to<double>()};
+    const auto& v = diagram_.triangle(t).v;
+    return rounded_circumcentre(diagram_.point(v[0]), diagram_.point(v[1]), diagram_.point(v[2]), metric_);
   }
   // c: a box holding the vertex.
   // With M′ the circumcentre is equidistant in M′, whose rounded entries are not exactly a multiple
@@ -182,7 +183,7 @@ class LsRefinement {
     for (int u : sites_.in(box))
       if (!p_.filters || !outside_diametral_ellipse(pa, pb, metric_, sites_.points[u])) near.emplace_back(u, sites_.points[u]);
     if (near.size() <= 2) return {};  // a and b only
-    std::vector<CellOnSegment> by = cells_along(pa, pb, metric_, near);
+    std::vector<CellOnSegment> by = cells_along(pa, pb, metric_, near, p_.filters);
     const bool on_boundary = subsegments_.on_boundary(domain_, s);
     std::erase_if(by, [&](const CellOnSegment& c) {
       return c.site == ends.first || c.site == ends.second ||
@@ -195,19 +196,19 @@ class LsRefinement {
   // (when no subsegment is encroached, the cells along each are its endpoints' only). A violator
   // lies in Ω: a single contact is on Ω's side, which encroachers() lets pass.
   std::optional<std::pair<int, CellOnSegment>> encroached_by(const Point2<double>& q) const {
-    for (std::size_t s = 0; s < subsegments_.size(); ++s)
-      if (auto c = would_meet(static_cast<int>(s), q); c && !c->point()) return std::pair{static_cast<int>(s), *c};
+    for (int s : boxes_.holding(q, sites_.grid))
+      if (auto c = would_meet(s, q); c && !c->point()) return std::pair{s, *c};
     return std::nullopt;
   }
   // The part of s that q's closed cell would meet among q and the ends of s, perhaps a single
   // point (a site inserted on one edge of a slot can touch the other's subsegment from outside Ω:
   // that one must be tested again, by encroachers()).
   std::optional<CellOnSegment> would_meet(int s, const Point2<double>& q) const {
-    if (!boxes_[s].contains(q)) return std::nullopt;
+    if (!boxes_.box(s).contains(q)) return std::nullopt;
     const auto [a, b] = subsegments_.ends(s);
     const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
     if (p_.filters && outside_diametral_ellipse(pa, pb, metric_, q)) return std::nullopt;
-    for (const CellOnSegment& c : cells_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}))
+    for (const CellOnSegment& c : cells_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}, p_.filters))
       if (c.site == -1) return c;
     return std::nullopt;
   }
@@ -235,9 +236,9 @@ class LsRefinement {
     if (!stalled_.empty()) return;
     const int k = cause == Rule::encroached_segment ? insert(*z, cause, 0) : insert(*z, Rule::violator_encroaches, 0, 0, cause);
     if (k < 0) return;
-    subsegments_.split(s, k);
-    boxes_[s] = near_segment(sites_.points[a], sites_.points[k], metric_);
-    boxes_.push_back(near_segment(sites_.points[k], sites_.points[b], metric_));
+    const int kb = subsegments_.split(s, k);
+    boxes_.set(s, near_segment(sites_.points[a], sites_.points[k], metric_), sites_.grid);
+    boxes_.set(kb, near_segment(sites_.points[k], sites_.points[b], metric_), sites_.grid);
   }
 
   // Inserts q as a site; its index, or −1 when the run stalls.
@@ -251,10 +252,10 @@ class LsRefinement {
     const double nearest = sites_.grid.nearest_site2(q, M, sites_.points);
     record_.insertion(rule, q, nearest, radius, displacement, for_rule);
     const int k = sites_.add(q, M);
-    sites_.grow_grid();
+    if (sites_.grow_grid()) boxes_.refile(sites_.grid);
     for (int t : diagram_.insert(k, q)) queue_if_violator(t);
-    for (std::size_t s = 0; s < subsegments_.size(); ++s)
-      if (would_meet(static_cast<int>(s), q)) subsegments_.queue(static_cast<int>(s));
+    for (int s : boxes_.holding(q, sites_.grid))
+      if (would_meet(s, q)) subsegments_.queue(s);
     return k;
   }
 
@@ -268,7 +269,7 @@ class LsRefinement {
   Theorem11Conditions t11_;
   Rational size2_;
   Subsegments subsegments_;
-  std::vector<common::Box> boxes_;  // near_segment of each subsegment
+  common::FiledBoxes boxes_;  // near_segment of each subsegment
   std::deque<std::pair<int, std::array<int, 3>>> violators_;
   std::string stalled_;
   RunRecord record_;

@@ -241,7 +241,10 @@ class LsVaryingRefinement {
   std::pair<Point2<double>, double> rounded_vertex(int q) const {
     const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
     const MetricSite a = site(v.sites[0]), b = site(v.sites[1]), c = site(v.sites[2]);
-    if (a.M == b.M && a.M == c.M) return rounded(circumcentre_in<Rational>(a.p, b.p, c.p, a.M));
+    if (a.M == b.M && a.M == c.M) {
+      const Point2<double> r = rounded_circumcentre(a.p, b.p, c.p, a.M);
+      return {r, within_ulps(r, 1)};
+    }
     const Point2<double> m = v.box.approx();
     return {m, farthest_in_box(m, v.box.box.x.lo, v.box.box.x.hi, v.box.box.y.lo, v.box.box.y.hi)};
   }

@@ -1,5 +1,6 @@
 #include "refiners/ls/segment_cells.hpp"
 
+#include "numbers/expansion.hpp"
 #include "numbers/filter_interval.hpp"
 #include "refiners/common/exact_split.hpp"
 
@@ -11,10 +12,6 @@ namespace anisocert::refiners::ls {
 
 namespace {
 
-Rational form(const Sym2<double>& M, const Rational& x1, const Rational& y1, const Rational& x2, const Rational& y2) {
-  return Rational(M.m11) * x1 * x2 + Rational(M.m12) * (x1 * y2 + y1 * x2) + Rational(M.m22) * y1 * y2;
-}
-
 Integer floor_of(const Rational& q) {
   Integer n = numerator(q), d = denominator(q);  // d > 0
   Integer f = n / d;                               // truncated
@@ -22,40 +19,75 @@ Integer floor_of(const Rational& q) {
   return f;
 }
 
-}  // namespace
+// The sign of an exact number; nothing for an expansion that overflowed or underflowed.
+std::optional<Sign> sign_if_exact(const Rational& q) { return sign_of(q); }
+std::optional<Sign> sign_if_exact(const Expansion& e) {
+  if (!e.exact()) return std::nullopt;
+  return e.sign();
+}
+Rational rational(const Rational& q) { return q; }
+Rational rational(const Expansion& e) { return exact_value(e); }
 
-std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
-                                       const std::vector<std::pair<int, Point2<double>>>& sites) {
-  const Rational dx = Rational(b.x) - Rational(a.x), dy = Rational(b.y) - Rational(a.y);
+// cells_along in T (Expansion or Rational), every comparison of two ends n/d (d > 0) made as
+// sign(n₁d₂ − n₂d₁), so that no division is needed; nothing when an expansion is inexact.
+template <class T>
+std::optional<std::vector<CellOnSegment>> cells_in(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
+                                                   const std::vector<std::pair<int, Point2<double>>>& sites) {
+  const T m11(M.m11), m12(M.m12), m22(M.m22);
+  const auto form = [&](const T& x1, const T& y1, const T& x2, const T& y2) { return m11 * x1 * x2 + m12 * (x1 * y2 + y1 * x2) + m22 * y1 * y2; };
+  const T dx = T(b.x) - T(a.x), dy = T(b.y) - T(a.y);
   struct Line {
-    Rational alpha, beta;  // ℓ(t) = α + β t
+    T alpha, beta;  // ℓ(t) = α + β t
   };
   std::vector<Line> lines;
   lines.reserve(sites.size());
   for (const auto& [id, u] : sites) {
-    const Rational ux = Rational(u.x) - Rational(a.x), uy = Rational(u.y) - Rational(a.y);
-    lines.push_back({form(M, ux, uy, ux, uy), -2 * form(M, dx, dy, ux, uy)});
+    const T ux = T(u.x) - T(a.x), uy = T(u.y) - T(a.y);
+    lines.push_back({form(ux, uy, ux, uy), T(-2) * form(dx, dy, ux, uy)});
   }
+  struct End {
+    T n, d;  // n/d, d > 0
+  };
+  const auto compare = [](const End& x, const End& y) { return sign_if_exact(x.n * y.d - y.n * x.d); };
   std::vector<CellOnSegment> cells;
   for (std::size_t u = 0; u < sites.size(); ++u) {
-    Rational lo = 0, hi = 1;
+    End lo{T(0), T(1)}, hi{T(1), T(1)};
     bool empty = false;
     for (std::size_t x = 0; x < sites.size() && !empty; ++x) {
       if (x == u) continue;
       // ℓ_u(t) <= ℓ_x(t) ⇔ (β_u − β_x) t <= α_x − α_u.
-      const Rational slope = lines[u].beta - lines[x].beta, rhs = lines[x].alpha - lines[u].alpha;
-      if (slope > 0) {
-        hi = std::min(hi, rhs / slope);
-      } else if (slope < 0) {
-        lo = std::max(lo, rhs / slope);
+      const T slope = lines[u].beta - lines[x].beta, rhs = lines[x].alpha - lines[u].alpha;
+      const auto s = sign_if_exact(slope);
+      if (!s) return std::nullopt;
+      if (*s == Sign::zero) {
+        const auto r = sign_if_exact(rhs);
+        if (!r) return std::nullopt;
+        empty = *r == Sign::negative;
       } else {
-        empty = rhs < 0;
+        const End end = *s == Sign::positive ? End{rhs, slope} : End{-rhs, -slope};
+        const auto c = compare(end, *s == Sign::positive ? hi : lo);
+        if (!c) return std::nullopt;
+        if (*s == Sign::positive && *c == Sign::negative) hi = end;
+        if (*s == Sign::negative && *c == Sign::positive) lo = end;
       }
-      empty = empty || lo > hi;
+      if (!empty) {
+        const auto order = compare(lo, hi);
+        if (!order) return std::nullopt;
+        empty = *order == Sign::positive;
+      }
     }
-    if (!empty) cells.push_back({sites[u].first, lo, hi});
+    if (!empty) cells.push_back({sites[u].first, rational(lo.n) / rational(lo.d), rational(hi.n) / rational(hi.d)});
   }
   return cells;
+}
+
+}  // namespace
+
+std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
+                                       const std::vector<std::pair<int, Point2<double>>>& sites, bool expansions) {
+  if (expansions)
+    if (auto cells = cells_in<Expansion>(a, b, M, sites)) return std::move(*cells);
+  return *cells_in<Rational>(a, b, M, sites);
 }
 
 common::Box near_segment(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M) {

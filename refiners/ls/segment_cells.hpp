@@ -25,8 +25,10 @@ struct CellOnSegment {
 // The closed cells among `sites` (a and b among them, each with its id) that meet s. Sites
 // farther from s than |s|_M/2 (near_segment) or outside its diametral ellipse
 // (outside_diametral_ellipse) never do: the caller may leave them out.
+// Computed in expansions (numbers/expansion.hpp), in rationals when an expansion overflows or
+// underflows or `expansions` is false (the exact path the filters are tested against).
 std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
-                                       const std::vector<std::pair<int, Point2<double>>>& sites);
+                                       const std::vector<std::pair<int, Point2<double>>>& sites, bool expansions = true);
 
 // A box holding every point p whose M-distance to s is at most |s|_M / 2, the only sites that
 // can be nearer to a point of s than both a and b (min(d_a, d_b)(z) <= |s|_M/2 on s): s widened
