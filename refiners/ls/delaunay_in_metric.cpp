@@ -11,16 +11,6 @@ namespace anisocert::refiners::ls {
 
 using anisocert::Sign;
 
-Point2<double> rounded_circumcentre(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
-  const CircumcentreParts<Expansion> p = circumcentre_parts<Expansion>(a, b, c, M);
-  // x = a.x + nx / det = (a.x det + nx) / det.
-  const auto x = rounded_quotient(Expansion(a.x) * p.det + p.nx, p.det);
-  const auto y = rounded_quotient(Expansion(a.y) * p.det + p.ny, p.det);
-  if (x && y) return {*x, *y};
-  const Point2<Rational> e = circumcentre_in<Rational>(a, b, c, M);
-  return {e.x.convert_to<double>(), e.y.convert_to<double>()};
-}
-
 DelaunayInMetric::DelaunayInMetric(const Sym2<double>& M, const common::Box& extent) : M_(M) {
   const double cx = (extent.x0 + extent.x1) / 2, cy = (extent.y0 + extent.y1) / 2;
   double size = std::max(extent.x1 - extent.x0, extent.y1 - extent.y0);

@@ -10,10 +10,7 @@
 // triangulation. No ghost lies in the M-circumdisc of a triangle of sites whose Voronoi vertex is
 // in the box, so those triangles are exactly Del_M's; a triangle with a ghost is dual to a vertex
 // whose disc would hold every site of the box, so it is no vertex in the box.
-#include "numbers/expansion.hpp"
-#include "numbers/filter_interval.hpp"
-#include "numbers/rational.hpp"
-#include "predicates/point.hpp"
+#include "refiners/ls/circumcentre.hpp"
 #include "refiners/common/domain.hpp"
 
 #include <array>
@@ -23,33 +20,6 @@ namespace anisocert::refiners::ls {
 
 using predicates::Point2;
 using predicates::Sym2;
-
-// The M-circumcentre p of a, b, c (not collinear): 2 (b − a)ᵀM (p − a) = |b − a|²_M and likewise
-// for c, solved by Cramer's rule: p − a = (nx, ny) / det, polynomials in the inputs.
-template <class T>
-struct CircumcentreParts {
-  T nx, ny, det;
-};
-template <class T>
-CircumcentreParts<T> circumcentre_parts(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
-  const T m11(M.m11), m12(M.m12), m22(M.m22), ax(a.x), ay(a.y);
-  const T ux = T(b.x) - ax, uy = T(b.y) - ay, wx = T(c.x) - ax, wy = T(c.y) - ay;
-  // Rows M u and M w; right-hand sides |u|²_M / 2 and |w|²_M / 2.
-  const T r11 = m11 * ux + m12 * uy, r12 = m12 * ux + m22 * uy, r21 = m11 * wx + m12 * wy, r22 = m12 * wx + m22 * wy;
-  const T U = (r11 * ux + r12 * uy) * T(0.5), W = (r21 * wx + r22 * wy) * T(0.5);
-  return {U * r22 - W * r12, r11 * W - r21 * U, r11 * r22 - r12 * r21};
-}
-// The circumcentre in T: exactly (Rational), or a box holding it (FilterInterval; unbounded when
-// the filter cannot tell the determinant from 0).
-template <class T>
-Point2<T> circumcentre_in(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M) {
-  const CircumcentreParts<T> p = circumcentre_parts<T>(a, b, c, M);
-  return {T(a.x) + p.nx / p.det, T(a.y) + p.ny / p.det};
-}
-// The circumcentre rounded to the nearest doubles (Boost's conversion of the rational
-// circumcentre), from its parts in expansions (numbers/expansion.hpp), and in rationals only when
-// those cannot decide.
-Point2<double> rounded_circumcentre(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M);
 
 class DelaunayInMetric {
  public:
@@ -80,11 +50,20 @@ class DelaunayInMetric {
     const auto& v = triangles_[t].v;
     return circumcentre_in<T>(point(v[0]), point(v[1]), point(v[2]), M_);
   }
-  // A box holding it (circumcentre<FilterInterval>), computed once per triangle.
+  // A box holding it (ls::circumcentre_box), computed once per triangle.
   const Point2<FilterInterval>& circumcentre_box(int t) const {
     const auto k = static_cast<std::size_t>(t);
-    if (!has_box_[k]) box_[k] = circumcentre<FilterInterval>(t), has_box_[k] = true;
+    if (!has_box_[k]) {
+      const auto& v = triangles_[t].v;
+      box_[k] = ls::circumcentre_box(point(v[0]), point(v[1]), point(v[2]), M_);
+      has_box_[k] = true;
+    }
     return box_[k];
+  }
+  // It rounded to the nearest doubles (rounded_circumcentre).
+  Point2<double> rounded_circumcentre(int t) const {
+    const auto& v = triangles_[t].v;
+    return ls::rounded_circumcentre(point(v[0]), point(v[1]), point(v[2]), M_);
   }
 
  private:

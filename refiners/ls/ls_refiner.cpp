@@ -77,7 +77,7 @@ class LsRefinement {
       if (!current(t, v)) continue;
       const Rule rule = violation(t);
       if (rule == Rule::none) continue;
-      const Point2<double> q = rounded_vertex(t);
+      const Point2<double> q = diagram_.rounded_circumcentre(t);  // the vertex rounded to nearest
       // LS §9: "A new site is never permitted to encroach upon a segment".
       if (const auto s = encroached_by(q)) {
         split(s->first, {s->second}, rule);
@@ -89,9 +89,8 @@ class LsRefinement {
                    " rounds to " + point_text(q) + ", outside Ω, and encroaches no subsegment";
         return true;
       }
-      // q is within two next_up steps of the vertex, which are up to three of q's own ulps (q just
-      // below a power of two, the vertex above it); four are recorded.
-      insert(q, rule, std::sqrt(squared_length(metric_, q, diagram_.point(v[0]))), within_ulps(q, 4));
+      // Rounded to nearest, q is within half an ulp of the vertex's binade, one of its own.
+      insert(q, rule, std::sqrt(squared_length(metric_, q, diagram_.point(v[0]))), within_ulps(q, 1));
       return true;
     }
     return false;
@@ -131,17 +130,6 @@ class LsRefinement {
     if (!poor && !too_large(t, c)) return Rule::none;
     if (!vertex_in_domain(t, c)) return Rule::none;
     return poor ? Rule::poor_angle : Rule::too_large;
-  }
-  // The Voronoi vertex of t as a double within two ulps of it per coordinate: a corner of its
-  // FilterInterval box when that is so tight, else the exact vertex rounded to nearest.
-  Point2<double> rounded_vertex(int t) const {
-    const Point2<FilterInterval>& c = diagram_.circumcentre_box(t);
-    const auto tight = [](const FilterInterval& i) {
-      return std::isfinite(i.lo) && i.hi <= FilterInterval::next_up(FilterInterval::next_up(i.lo));
-    };
-    if (tight(c.x) && tight(c.y)) return {c.x.lo, c.y.lo};
-    const auto& v = diagram_.triangle(t).v;
-    return rounded_circumcentre(diagram_.point(v[0]), diagram_.point(v[1]), diagram_.point(v[2]), metric_);
   }
   // c: a box holding the vertex.
   // With M′ the circumcentre is equidistant in M′, whose rounded entries are not exactly a multiple
