@@ -19,6 +19,7 @@ bool even(double y) {
 
 std::optional<double> rounded_quotient(const Expansion& X, const Expansion& D) {
   if (!X.exact() || !D.exact() || D.sign() == Sign::zero) return std::nullopt;
+  if (X.sign() == Sign::zero) return 0.0;  // a vertex on an axis of symmetry, say
   // Rounding X/D is rounding |X|/|D|, with X/D's sign (ties to even are symmetric).
   const bool negative = X.sign() != D.sign() && X.sign() != Sign::zero;
   const Expansion x = X.sign() == Sign::negative ? -X : X, d = D.sign() == Sign::negative ? -D : D;

@@ -12,8 +12,9 @@
 // is still the exact one; when it is not, the caller evaluates in rationals.
 //
 // Operations, with IEEE 754 round-to-nearest-even doubles:
-//   two_sum (Knuth; Shewchuk Theorem 7): a + b = s + e exactly when s is finite (sums are exact
-//     under gradual underflow);
+//   two_sum (Knuth; Shewchuk Theorem 7): a + b = s + e exactly when s and e are finite (sums are
+//     exact under gradual underflow; e can be NaN with s finite: s − a overflows when b is near
+//     the largest double);
 //   two_product (via fma): a · b = p + e exactly when p is finite and |p| >= 2^−968 (below);
 //   sum: Fast-Expansion-Sum with zero elimination (Shewchuk Theorem 13), with two_sum at
 //     every step (its result is Fast-Two-Sum's wherever that one's precondition holds);
@@ -83,7 +84,8 @@ class Expansion {
   }
 
   // Merges e and ±f by increasing magnitude, then sums them with a running two_sum. An overflow
-  // leaves an infinity or a NaN in the running sum, which every later step keeps.
+  // leaves an infinity or a NaN in the running sum, which every later step keeps, or a NaN error
+  // term (two_sum above).
   static Expansion sum(const Expansion& ee, const Expansion& ff, bool negate_f) {
     const Components &e = ee.c_, &f = ff.c_;
     Expansion r;
@@ -99,7 +101,7 @@ class Expansion {
       two_sum(e[0], negate_f ? -f[0] : f[0], s, h);
       if (h != 0) r.c_.push_back(h);
       if (s != 0) r.c_.push_back(s);
-      r.exact_ = r.exact_ && std::isfinite(s);
+      r.exact_ = r.exact_ && std::isfinite(s) && std::isfinite(h);
       return r;
     }
     Components g;
@@ -113,20 +115,22 @@ class Expansion {
         g.push_back(sf * f[j++]);
     }
     double q = g[0];
+    bool finite = true;
     for (std::size_t k = 1; k < g.size(); ++k) {
       double s, h;
       two_sum(q, g[k], s, h);
       if (h != 0) r.c_.push_back(h);
+      finite = finite && std::isfinite(h);
       q = s;
     }
     if (q != 0) r.c_.push_back(q);
-    r.exact_ = r.exact_ && std::isfinite(q);
+    r.exact_ = r.exact_ && finite && std::isfinite(q);
     return r;
   }
 
   // two_product's error term is exact: a = A 2^i, b = B 2^j with |A|, |B| < 2^53, so a · b is a
-  // multiple of 2^(i+j) > |a · b| 2^−106, and a · b − p a multiple of both it and ulp(p); with
-  // |p| >= 2^−968 both are at least 2^−1074 (and the term has at most 53 bits, no underflow).
+  // multiple of 2^(i+j) > |a · b| 2^−106, and a · b − p a multiple of the smaller of 2^(i+j) and
+  // ulp(p); with |p| >= 2^−968 both are at least 2^−1074 (and the term has at most 53 bits).
   static bool product_exact(double p) { return std::isfinite(p) && std::fabs(p) >= 0x1p-968; }
 
   // e · b for b != 0 and e's components non-zero, so that every product is non-zero.
@@ -157,8 +161,8 @@ class Expansion {
 
 // X/D rounded to the nearest double, ties to even (what Boost's conversion of the rational X/D
 // gives), from the quotient of the approximations by exact comparisons with the midpoints between
-// neighbouring doubles; nothing when an expansion is not exact, the quotient is 0, subnormal or
-// near overflow, or a few steps do not reach it.
+// neighbouring doubles (+0 for X = 0); nothing when an expansion is not exact, the quotient is
+// subnormal or near overflow, or a few steps do not reach it.
 std::optional<double> rounded_quotient(const Expansion& X, const Expansion& D);
 
 // The value of an exact expansion as a rational.

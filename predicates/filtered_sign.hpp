@@ -229,10 +229,11 @@ template <class K>
   for (std::size_t i = 0; i < K::arity; ++i)
     if (!std::isfinite(x[i])) throw_non_finite(K::name, K::inputs[i], x[i]);
   // The interval stage, unless the double evaluation is exactly 0: round-to-nearest is monotone,
-  // so that value lies in the interval evaluation (each end rounded to nearest, then widened),
-  // which cannot then decide. Such a call is most often an exact zero (a right angle, four
-  // cocircular points of a grid), which expansions decide at little cost. Either way the exact
-  // stage gives the answer: this only chooses the faster path.
+  // so that value lies in the interval evaluation (each end rounded to nearest, then widened;
+  // barring contractions into fma, which the build does not make), which then holds 0 and does
+  // not decide. Such a call is most often an exact zero (a right angle, four cocircular points of
+  // a grid), which expansions decide at little cost. Either way the exact stage gives the
+  // answer: this only chooses the faster path.
   if (K::template eval<double>(x) != 0) {
     ++filter_stats().interval_stage;
     std::array<FilterInterval, K::arity> xi;

@@ -109,6 +109,10 @@ TEST(Expansion, SaysWhenItOverflowedOrUnderflowed) {
   EXPECT_FALSE((Expansion(0x1p1000) * Expansion(0x1p100)).exact());
   EXPECT_FALSE((Expansion(0x1.fffffffffffffp1023) + Expansion(0x1.fffffffffffffp1023)).exact());
   EXPECT_FALSE(Expansion(NAN).exact());
+  // Review finding: −3·2^970 + the largest double is finite, but two_sum's error term overflows
+  // (s − a rounds to ∞): a NaN component.
+  EXPECT_FALSE((Expansion(-0x3p970) + Expansion(0x1.fffffffffffffp1023)).exact());
+  EXPECT_FALSE((Expansion(-0x3p970) + Expansion(0x1p-10) + Expansion(0x1.fffffffffffffp1023)).exact());
   EXPECT_TRUE((Expansion(0x1p-600) * Expansion(0) + Expansion(1)).exact());
 }
 
@@ -134,8 +138,8 @@ TEST(RoundedQuotient, IsBoostsCorrectlyRoundedConversion) {
     const auto y = anisocert::rounded_quotient(x, d);
     const double expected = Rational(qx / qd).convert_to<double>();
     if (!y) {
-      // Only a zero, subnormal or huge quotient may be left to the rationals.
-      ASSERT_TRUE(expected == 0 || std::fabs(expected) < 0x1p-1020 || std::fabs(expected) > 0x1p1021) << "case " << t;
+      // Only a subnormal or huge quotient may be left to the rationals.
+      ASSERT_TRUE(std::fabs(expected) < 0x1p-1020 || std::fabs(expected) > 0x1p1021) << "case " << t;
       continue;
     }
     ++answered;
@@ -153,5 +157,5 @@ TEST(RoundedQuotient, TiesGoToTheEvenNeighbour) {
   // The same ties, negative, and scaled through the divisor: (6 + 3·2^-52) / −6 = −(1 + 2^-53).
   EXPECT_EQ(rounded_quotient(Expansion(6) + Expansion(3 * 0x1p-52), Expansion(-6)), -1.0);
   EXPECT_EQ(rounded_quotient(Expansion(1), Expansion(3)), 1.0 / 3);
-  EXPECT_EQ(rounded_quotient(Expansion(0), Expansion(3)), std::nullopt);
+  EXPECT_EQ(rounded_quotient(Expansion(0), Expansion(3)), 0.0);
 }

@@ -21,6 +21,8 @@ Point2<FilterInterval> circumcentre_box(const Point2<double>& a, const Point2<do
   const auto max = predicates::group_maxima<Nx>(t);
   if (!predicates::in_static_range<Nx>(max)) return circumcentre_in<FilterInterval>(a, b, c, M);
   const FilterInterval det = within_bound<Det>(t, max);
+  // A thin triangle's det can be tighter in FilterInterval than within the static bound.
+  if (det.has_zero()) return circumcentre_in<FilterInterval>(a, b, c, M);
   return {FilterInterval(a.x) + within_bound<Nx>(t, max) / det, FilterInterval(a.y) + within_bound<Ny>(t, max) / det};
 }
 

@@ -69,7 +69,7 @@ struct CircumcentrePartKernel {
 
 // A box holding the circumcentre: nx, ny and det in doubles on the rounded differences, each
 // within its static bound (predicates::translated_error_model), when the differences and M are
-// in the static range; in FilterInterval otherwise.
+// in the static range and det's box is clear of 0; in FilterInterval otherwise.
 Point2<FilterInterval> circumcentre_box(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M);
 
 // The circumcentre rounded to the nearest doubles (Boost's conversion of the rational

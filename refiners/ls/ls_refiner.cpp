@@ -77,7 +77,7 @@ class LsRefinement {
       if (!current(t, v)) continue;
       const Rule rule = violation(t);
       if (rule == Rule::none) continue;
-      const Point2<double> q = diagram_.rounded_circumcentre(t);  // the vertex rounded to nearest
+      const Point2<double> q = diagram_.rounded_circumcentre(t);  // the vertex rounded to nearest (below the normal range, by Boost's conversion: within an ulp)
       // LS §9: "A new site is never permitted to encroach upon a segment".
       if (const auto s = encroached_by(q)) {
         split(s->first, {s->second}, rule);
