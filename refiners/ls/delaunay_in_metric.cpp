@@ -24,7 +24,6 @@ DelaunayInMetric::DelaunayInMetric(const Sym2<double>& M, const common::Box& ext
   ghosts_ = {Point2<double>{cx, cy + 2 * r}, Point2<double>{cx - 1.8 * r, cy - r}, Point2<double>{cx + 1.8 * r, cy - r}};
   triangles_.push_back({{-1, -2, -3}, {-1, -1, -1}, true});
   box_.emplace_back();
-  has_box_.push_back(false);
 }
 
 bool DelaunayInMetric::real(int t) const {
@@ -62,12 +61,11 @@ int DelaunayInMetric::new_triangle(const std::array<int, 3>& v) {
     const int t = free_.back();
     free_.pop_back();
     triangles_[t] = tri;
-    has_box_[static_cast<std::size_t>(t)] = false;
+    box_[static_cast<std::size_t>(t)].reset();
     return t;
   }
   triangles_.push_back(tri);
   box_.emplace_back();
-  has_box_.push_back(false);
   return static_cast<int>(triangles_.size()) - 1;
 }
 

@@ -14,6 +14,7 @@
 #include "refiners/common/domain.hpp"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace anisocert::refiners::ls {
@@ -52,13 +53,12 @@ class DelaunayInMetric {
   }
   // A box holding it (ls::circumcentre_box), computed once per triangle.
   const Point2<FilterInterval>& circumcentre_box(int t) const {
-    const auto k = static_cast<std::size_t>(t);
-    if (!has_box_[k]) {
+    auto& box = box_[static_cast<std::size_t>(t)];
+    if (!box) {
       const auto& v = triangles_[t].v;
-      box_[k] = ls::circumcentre_box(point(v[0]), point(v[1]), point(v[2]), M_);
-      has_box_[k] = true;
+      box = ls::circumcentre_box(point(v[0]), point(v[1]), point(v[2]), M_);
     }
-    return box_[k];
+    return *box;
   }
   // It rounded to the nearest doubles (rounded_circumcentre).
   Point2<double> rounded_circumcentre(int t) const {
@@ -74,8 +74,7 @@ class DelaunayInMetric {
   std::array<Point2<double>, 3> ghosts_;
   std::vector<Point2<double>> points_;
   std::vector<Triangle> triangles_;
-  mutable std::vector<Point2<FilterInterval>> box_;  // per slot, while has_box_
-  mutable std::vector<bool> has_box_;
+  mutable std::vector<std::optional<Point2<FilterInterval>>> box_;  // per slot, once asked for
   std::vector<int> free_;  // dead slots, reused
   int recent_ = 0;         // a live triangle near the last insertion: where the next walk starts
   std::vector<int> created_, cavity_;

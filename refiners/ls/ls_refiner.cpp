@@ -77,7 +77,7 @@ class LsRefinement {
       if (!current(t, v)) continue;
       const Rule rule = violation(t);
       if (rule == Rule::none) continue;
-      const Point2<double> q = diagram_.rounded_circumcentre(t);  // the vertex rounded to nearest (below the normal range, by Boost's conversion: within an ulp)
+      const Point2<double> q = diagram_.rounded_circumcentre(t);
       // LS §9: "A new site is never permitted to encroach upon a segment".
       if (const auto s = encroached_by(q)) {
         split(s->first, {s->second}, rule);
@@ -89,7 +89,8 @@ class LsRefinement {
                    " rounds to " + point_text(q) + ", outside Ω, and encroaches no subsegment";
         return true;
       }
-      // Rounded to nearest, q is within half an ulp of the vertex's binade, one of its own.
+      // q is the vertex rounded to nearest (below the normal range by Boost's conversion, which
+      // rounds twice): within one of q's own ulps.
       insert(q, rule, std::sqrt(squared_length(metric_, q, diagram_.point(v[0]))), within_ulps(q, 1));
       return true;
     }
