@@ -163,23 +163,17 @@ Box2<FilterInterval> search_for(const Case& c) { return {{-4 * c.scale, 4 * c.sc
 
 }  // namespace
 
-RC_GTEST_PROP(RefinerVoronoiVertex, BoxesHoldExactlyTheEquidistantPoints, ()) {
-  const Case c = *scaled_case();
-  RC_PRE(distinct(c));
-  RC_TAG(c.kind);
-  const auto exact = anisocert::oracle::intersect(bisector(c.t[0], c.t[1]), bisector(c.t[0], c.t[2]));
-  const VertexSearch ours = vertices_in(c.t, search_for(c));
-  if (exact.shared_component) {  // infinitely many points: no search may call itself complete
-    RC_TAG("shared component");
-    RC_ASSERT(!ours.complete || ours.vertices.empty());
-    return;
-  }
+namespace {
+
+// A search of `box` against the exact points: every box it gives holds exactly one of them, and so
+// does its isolating box; a complete search finds every point strictly inside `box`; only a
+// tangency (a multiple point) can leave it incomplete.
+void check_search(const VertexSearch& ours, const anisocert::oracle::ConicIntersection& exact, const Box2<FilterInterval>& box) {
   bool multiple = false;
   for (const auto& p : exact.points) multiple = multiple || p.multiplicity > 1;
-  RC_TAG(std::to_string(ours.vertices.size()) + " found");
   if (!ours.complete) {
     RC_TAG("incomplete");
-    RC_ASSERT(multiple);  // only a tangency can hold the search up
+    RC_ASSERT(multiple);
   }
   for (const VertexBox& v : ours.vertices) {
     int held = 0;
@@ -191,11 +185,43 @@ RC_GTEST_PROP(RefinerVoronoiVertex, BoxesHoldExactlyTheEquidistantPoints, ()) {
   }
   if (ours.complete)
     for (const auto& p : exact.points) {
-      if (!strictly_in(p.point, search_for(c))) continue;
+      if (!strictly_in(p.point, box)) continue;
       int found = 0;
       for (const VertexBox& v : ours.vertices) found += in_box(p.point, v.box);
       RC_ASSERT(found == 1);
     }
+}
+
+}  // namespace
+
+RC_GTEST_PROP(RefinerVoronoiVertex, BoxesHoldExactlyTheEquidistantPoints, ()) {
+  const Case c = *scaled_case();
+  RC_PRE(distinct(c));
+  RC_TAG(c.kind);
+  const auto exact = anisocert::oracle::intersect(bisector(c.t[0], c.t[1]), bisector(c.t[0], c.t[2]));
+  const VertexSearch ours = vertices_in(c.t, search_for(c));
+  if (exact.shared_component) {  // infinitely many points: no search may call itself complete
+    RC_TAG("shared component");
+    RC_ASSERT(!ours.complete || ours.vertices.empty());
+    return;
+  }
+  RC_TAG(std::to_string(ours.vertices.size()) + " found");
+  check_search(ours, exact, search_for(c));
+}
+
+// Three sites on the line x = 0 with metrics diag(1, dᵢ): d_a² − d_b² is a function of y alone,
+// so det ½J vanishes everywhere (VertexSearch::singular). Here the pairs' equidistant lines are
+// y = 2 ± √2 (sites 0, 1) and y = 2, 6 (sites 0, 2), closed forms: no point is equidistant from
+// all three. A search over y ∈ [0, 4], where each difference has zeros, used to stop undecided at
+// the first box (found by RefinerVoronoiVertex.BoxesHoldExactlyTheEquidistantPoints, seed 115);
+// halving the box now excludes it.
+TEST(RefinerVoronoiVertex, SingularTrioWithNoEquidistantPointIsExcluded) {
+  const Trio t{{{{0, 0}, {1, 0, 1}}, {{0, 1}, {1, 0, 2}}, {{0, 3}, {1, 0, 4}}}};
+  EXPECT_TRUE(anisocert::oracle::intersect(bisector(t[0], t[1]), bisector(t[0], t[2])).points.empty());
+  const VertexSearch search = vertices_in(t, {FilterInterval(-1, 1), FilterInterval(0, 4)});
+  EXPECT_TRUE(search.singular);
+  EXPECT_TRUE(search.complete);
+  EXPECT_TRUE(search.vertices.empty());
 }
 
 RC_GTEST_PROP(RefinerVoronoiVertex, SignsAtVerticesAreTheExactSigns, ()) {

@@ -38,9 +38,11 @@ Box2<FI> tighten(const Equidistance<FI>& s, Box2<FI> K) {
   return K;
 }
 
-// Newton's method in doubles from X's midpoint; when it settles within reach of X, a small box
-// around where it lands, certified by Krawczyk (the box may reach beyond X).
-std::optional<VertexBox> newton_box(const Trio& t, const Equidistance<FI>& s, const Box2<FI>& X) {
+// Newton's method in doubles from X's midpoint; when it settles within reach of X and not in the
+// isolating box of a point already found, a small box around where it lands, certified by
+// Krawczyk (the box may reach beyond X). It only speeds the search up: a point it misses is found
+// by halving.
+std::optional<VertexBox> newton_box(const Trio& t, const Equidistance<FI>& s, const Box2<FI>& X, const std::vector<VertexBox>& found) {
   double x = X.x.midpoint().lo, y = X.y.midpoint().lo, step = 0;
   bool settled = false;
   for (int i = 0; i < 12 && !settled; ++i) {
@@ -65,6 +67,8 @@ std::optional<VertexBox> newton_box(const Trio& t, const Equidistance<FI>& s, co
   if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
   const double reach_x = width(X.x), reach_y = width(X.y);
   if (x < X.x.lo - reach_x || x > X.x.hi + reach_x || y < X.y.lo - reach_y || y > X.y.hi + reach_y) return std::nullopt;
+  const auto isolated = [x, y](const VertexBox& v) { return v.isolating.x.lo <= x && x <= v.isolating.x.hi && v.isolating.y.lo <= y && y <= v.isolating.y.hi; };
+  if (std::any_of(found.begin(), found.end(), isolated)) return std::nullopt;
   double r = 8 * step + 0x1p-44 * (std::abs(x) + std::abs(y)) + 0x1p-1000;
   for (int attempt = 0; attempt < 3; ++attempt, r *= 1024) {
     const Box2<FI> R{FI::widen(x - r, x + r), FI::widen(y - r, y + r)};
@@ -72,12 +76,15 @@ std::optional<VertexBox> newton_box(const Trio& t, const Equidistance<FI>& s, co
     if (k.verdict == KrawczykVerdict::no_zero) return std::nullopt;
     if (k.verdict != KrawczykVerdict::unique_zero) continue;
     // Isolate it in as large a box as Krawczyk certifies (fewer boxes to search, and a box
-    // another search finds this vertex in is more likely to lie inside it).
+    // another search finds this vertex in is more likely to lie inside it): tried from the
+    // search box's width down, so that the first try usually covers all of X and ends its search.
     Box2<FI> isolating = R;
-    for (double grown = 16 * r; grown < 0x1p-10 * (1 + std::abs(x) + std::abs(y)); grown *= 16) {
+    const double widest = std::min(0x1p-10 * (1 + std::abs(x) + std::abs(y)), std::max(width(X.x), width(X.y)));
+    for (double grown = widest; grown > 8 * r; grown /= 16) {
       const Box2<FI> G{FI::widen(x - grown, x + grown), FI::widen(y - grown, y + grown)};
-      if (krawczyk(s, G, FI(1.0)).verdict != KrawczykVerdict::unique_zero) break;
+      if (krawczyk(s, G, FI(1.0)).verdict != KrawczykVerdict::unique_zero) continue;
       isolating = G;
+      break;
     }
     return VertexBox{tighten(s, k.box), isolating};
   }
@@ -97,6 +104,39 @@ bool singular_everywhere(const Trio& t, const Equidistance<FI>& s) {
   const Equidistance<Rational> exact({lift<Rational>(t[0], of), lift<Rational>(t[1], of), lift<Rational>(t[2], of)});
   const auto c = exact.jacobian_determinant();
   return std::all_of(c.begin(), c.end(), [](const Rational& x) { return x == 0; });
+}
+
+// Y halved across its wider side (the other when no double splits the wider one); nothing when no
+// double splits either.
+std::optional<std::array<Box2<FI>, 2>> halved(const Box2<FI>& Y) {
+  const auto splits = [](const FI& side) {
+    const double m = side.midpoint().lo;
+    return m > side.lo && m < side.hi;
+  };
+  bool along_x = width(Y.x) >= width(Y.y);
+  if (!splits(along_x ? Y.x : Y.y)) along_x = !along_x;
+  const FI& side = along_x ? Y.x : Y.y;
+  if (!splits(side)) return std::nullopt;
+  const double m = side.midpoint().lo;
+  if (along_x) return std::array<Box2<FI>, 2>{Box2<FI>{FI(side.lo, m), Y.y}, Box2<FI>{FI(m, side.hi), Y.y}};
+  return std::array<Box2<FI>, 2>{Box2<FI>{Y.x, FI(side.lo, m)}, Box2<FI>{Y.x, FI(m, side.hi)}};
+}
+
+// Whether F has no zero in X, shown by the centred form on X or on the parts of X halved up to
+// `budget` boxes (counted in `boxes`).
+bool excluded(const Equidistance<FI>& s, const Box2<FI>& X, int budget, int& boxes) {
+  std::vector<Box2<FI>> pending{X};
+  for (; !pending.empty(); ++boxes) {
+    if (boxes >= budget) return false;
+    const Box2<FI> Y = pending.back();
+    pending.pop_back();
+    const auto F = s.on(Y);
+    if (!F[0].has_zero() || !F[1].has_zero()) continue;
+    const auto halves = halved(Y);
+    if (!halves) return false;
+    pending.insert(pending.end(), halves->begin(), halves->end());
+  }
+  return true;
 }
 
 // Adds a certified vertex unless it is one already found; false when that cannot be decided.
@@ -133,8 +173,7 @@ VertexSearch vertices_in(const Trio& t, const Box2<FilterInterval>& search, int 
   const Equidistance<FI> s = in_doubles(t);
   if (singular_everywhere(t, s)) {
     out.singular = true;
-    const auto F = s.on(search);
-    out.complete = !F[0].has_zero() || !F[1].has_zero();
+    out.complete = excluded(s, search, std::min(budget, 256), out.boxes);
     return out;
   }
   std::vector<Box2<FI>> pending{search};
@@ -146,9 +185,8 @@ VertexSearch vertices_in(const Trio& t, const Box2<FilterInterval>& search, int 
     if (out.boxes >= budget) return undecided();
     const Box2<FI> X = pending.back();
     pending.pop_back();
-    bool known = false;
-    for (const VertexBox& v : out.vertices) known = known || inside(X, v.isolating);
-    if (known) continue;  // at most the point already found
+    if (std::any_of(out.vertices.begin(), out.vertices.end(), [&X](const VertexBox& v) { return inside(X, v.isolating); }))
+      continue;  // at most the point already found
     const auto F = s.on(X);
     if (!F[0].has_zero() || !F[1].has_zero()) continue;
     const KrawczykStep<FI> k = krawczyk(s, X, FI(1.0));
@@ -157,27 +195,12 @@ VertexSearch vertices_in(const Trio& t, const Box2<FilterInterval>& search, int 
       if (!add(s, out.vertices, {tighten(s, k.box), X})) return undecided();
       continue;
     }
-    if (auto v = newton_box(t, s, X))
+    if (auto v = newton_box(t, s, X, out.vertices))
       if (!add(s, out.vertices, *v)) return undecided();
-    // Halve the wider side of K(X) ∩ X (the other when no double splits the wider one); a box
-    // that no double splits ends the search undecided.
-    const Box2<FI>& Y = k.box;
-    const auto splits = [](const FI& side) {
-      const double m = side.midpoint().lo;
-      return m > side.lo && m < side.hi;
-    };
-    bool along_x = width(Y.x) >= width(Y.y);
-    if (!splits(along_x ? Y.x : Y.y)) along_x = !along_x;
-    const FI& side = along_x ? Y.x : Y.y;
-    if (!splits(side)) return undecided();
-    const double m = side.midpoint().lo;
-    if (along_x) {
-      pending.push_back({FI(side.lo, m), Y.y});
-      pending.push_back({FI(m, side.hi), Y.y});
-    } else {
-      pending.push_back({Y.x, FI(side.lo, m)});
-      pending.push_back({Y.x, FI(m, side.hi)});
-    }
+    // K(X) ∩ X halved; a box that no double splits ends the search undecided.
+    const auto halves = halved(k.box);
+    if (!halves) return undecided();
+    pending.insert(pending.end(), halves->begin(), halves->end());
   }
   return out;
 }

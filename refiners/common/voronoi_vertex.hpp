@@ -30,8 +30,9 @@ struct VertexSearch {
   std::vector<VertexBox> vertices;  // disjoint boxes, one point each
   bool complete = true;             // false: some point in the search box may be missing
   // The Jacobian of F vanishes everywhere (decided exactly): no point equidistant from the three
-  // sites is a simple zero, so none can be certified, and smaller boxes do not help. The search
-  // then only excludes the box (complete, no vertex) or leaves it undecided.
+  // sites is a simple zero, so none can be certified. The search then only excludes the box
+  // (complete, no vertex: F's centred form has no zero on it or on its halves, up to 256 boxes)
+  // or leaves it undecided.
   bool singular = false;
   int boxes = 0;                    // boxes examined
 };

@@ -306,20 +306,31 @@ class LsVaryingRefinement {
   // A subsegment whose cell Q would meet, were Q inserted (no subsegment is encroached now, so only
   // its endpoints are nearest along it).
   std::optional<int> encroached_by(const MetricSite& Q) const {
+    const double least = eigenvalue_bounds(Q.M).first;
     for (std::size_t s = 0; s < subsegments_.size(); ++s)
-      if (reaches(static_cast<int>(s), Q)) return static_cast<int>(s);
+      if (reaches(static_cast<int>(s), Q, least)) return static_cast<int>(s);
     return std::nullopt;
+  }
+  // Queues the subsegments that site k, Q, reaches (their cells among their ends and Q meet).
+  void queue_reached(int k, const MetricSite& Q) {
+    const double least = eigenvalue_bounds(Q.M).first;
+    for (std::size_t s = 0; s < subsegments_.size(); ++s) {
+      const auto [a, b] = subsegments_.ends(static_cast<int>(s));
+      if (a != k && b != k && reaches(static_cast<int>(s), Q, least)) subsegments_.queue(static_cast<int>(s));
+    }
   }
   // Q's closed cell among Q and the ends of subsegment s meets s (segment_quadratics.hpp), after a
   // filter in doubles: only when λ_min(M_Q) dist(Q, s)² ≤ max λ_max(M_a, M_b) |s|² can Q be as near
-  // as a or b somewhere on s (the bounds are a factor 2 wide, more than rounding can move them).
-  bool reaches(int s, const MetricSite& Q) const {
-    const MetricSite a = site(subsegments_.ends(s).first), b = site(subsegments_.ends(s).second);
+  // as a or b somewhere on s (the bounds are a factor 2 wide, more than rounding can move them;
+  // least is the bound below λ_min(M_Q)).
+  bool reaches(int s, const MetricSite& Q, double least) const {
+    const auto [ia, ib] = subsegments_.ends(s);
+    const MetricSite a = site(ia), b = site(ib);
     const common::Box box = segment_box(s);
     const double gx = std::max({box.x0 - Q.p.x, Q.p.x - box.x1, 0.0}), gy = std::max({box.y0 - Q.p.y, Q.p.y - box.y1, 0.0});
     const double length2 = (b.p.x - a.p.x) * (b.p.x - a.p.x) + (b.p.y - a.p.y) * (b.p.y - a.p.y);
-    if (eigenvalue_bounds(Q.M).first * (gx * gx + gy * gy) > 2 * std::max(eigenvalue_bounds(a.M).second, eigenvalue_bounds(b.M).second) * length2)
-      return false;
+    const double largest = std::max(largest_[static_cast<std::size_t>(ia)], largest_[static_cast<std::size_t>(ib)]);
+    if (least * (gx * gx + gy * gy) > 2 * largest * length2) return false;
     return ls::reaches(a, b, Q, p_.filters);
   }
 
@@ -387,6 +398,7 @@ class LsVaryingRefinement {
     const MetricSite Z{*z, sites_.field.at(z->x, z->y)};
     const int k = cause == Rule::encroached_segment ? insert(Z, cause, 0) : insert(Z, Rule::violator_encroaches, 0, 0, cause);
     if (k < 0) return;
+    queue_reached(k, Z);
     subsegments_.split(s, k);
   }
 
@@ -429,6 +441,7 @@ class LsVaryingRefinement {
   void add_site(const Point2<double>& q, const Sym2<double>& M) {
     sites_.add(q, M);
     size_metrics_.push_back(p_.normalized_metric ? size_field_.at(q.x, q.y) : M);
+    largest_.push_back(eigenvalue_bounds(M).second);
     sites_.grow_grid();
     diagram_.insert({q, M});
     ties_.clear();
@@ -489,7 +502,8 @@ class LsVaryingRefinement {
     tie_of_ = std::move(known);
   }
 
-  // Inserts Q as a site; its index, or −1 when the run stalls.
+  // Inserts Q as a site; its index, or −1 when the run stalls. The caller queues the subsegments
+  // Q reaches (attack: none, or it would have split one instead).
   int insert(const MetricSite& Q, Rule rule, double radius, double displacement = 0, Rule for_rule = Rule::none) {
     const double nearest = sites_.grid.nearest_site2(Q.p, Q.M, sites_.points);
     if (nearest == 0) {  // two sites at one point: their distances tie along curves through it
@@ -500,10 +514,6 @@ class LsVaryingRefinement {
     const int k = static_cast<int>(sites_.size());
     add_site(Q.p, Q.M);
     for (int q : diagram_.created()) violators_.push_back(q);
-    for (std::size_t s = 0; s < subsegments_.size(); ++s) {
-      const auto [a, b] = subsegments_.ends(static_cast<int>(s));
-      if (a != k && b != k && reaches(static_cast<int>(s), Q)) subsegments_.queue(static_cast<int>(s));
-    }
     return stalled_.empty() ? k : -1;
   }
 
@@ -513,6 +523,7 @@ class LsVaryingRefinement {
   common::Sites sites_;                     // with the diagram's metrics (M′ with normalized_metric)
   fields::MetricField size_field_;           // the field, for the size rule
   std::vector<Sym2<double>> size_metrics_;  // the field's metric at each site
+  std::vector<double> largest_;             // a bound above each site's greatest eigenvalue
   common::VertexSubdivision diagram_;
   double s2_;
   Theorem11Conditions t11_;

@@ -37,16 +37,18 @@ FilterInterval over(const Quadratic<FilterInterval>& f, double t0, double t1) {
 // reaches() in FilterInterval: false when on every piece of [0, 1] (up to 64) f₁ > 0 or f₂ > 0;
 // true when both are negative at a piece's midpoint; nothing when that does not decide.
 std::optional<bool> reaches_filtered(const Quadratic<FilterInterval>& f1, const Quadratic<FilterInterval>& f2) {
-  std::vector<std::pair<double, double>> pieces{{0, 1}};
-  for (int visited = 0; !pieces.empty(); ++visited) {
-    if (visited == 64) return std::nullopt;
-    const auto [t0, t1] = pieces.back();
-    pieces.pop_back();
+  constexpr int most = 64;
+  std::array<std::pair<double, double>, most + 1> pieces;  // a stack: each visit pops one piece and pushes at most two
+  int pending = 0;
+  pieces[pending++] = {0, 1};
+  for (int visited = 0; pending > 0; ++visited) {
+    if (visited == most) return std::nullopt;
+    const auto [t0, t1] = pieces[--pending];
     if (over(f1, t0, t1).lo > 0 || over(f2, t0, t1).lo > 0) continue;
     const double m = t0 + (t1 - t0) / 2;
     if (over(f1, m, m).hi < 0 && over(f2, m, m).hi < 0) return true;
-    pieces.emplace_back(t0, m);
-    pieces.emplace_back(m, t1);
+    pieces[pending++] = {t0, m};
+    pieces[pending++] = {m, t1};
   }
   return false;
 }
