@@ -15,7 +15,8 @@
 // M-distance between two non-adjacent edges over the field's metrics M (a rational; the assertion
 // d² ≥ δ²/(4γ_hi²) is the theorem's, weakened only by γ's enclosure and this bound). A two-valued
 // field with τ(M_in, M_out) > γ has bdr_min = 0 (points on either side of the disc's rim), where
-// the theorem promises nothing; smooth fields' bdr_min has no certified bound here yet.
+// the theorem promises nothing. One smooth field, the linear one, has closed-form lower bounds on
+// bdr_min and lfs_min (LinearFieldRunsKeepEveryTwoSitesMuApart below); others have none here yet.
 //
 // LS.S9: a finished run (no encroached subsegment, no violator) is the dual of the exact diagram:
 // the oracle's D|Ω of the final sites has no orphans, every arc and vertex wedged, Theorem 7's
@@ -184,6 +185,13 @@ TauBoundedField tau_bounded_field(const std::vector<predicates::Point2<double>>&
   return {{in, out}, field, "two metrics", cx, cy, r};
 }
 
+// min{d_u(v)², d_v(u)²} in the sites' metrics, exactly.
+Rational d2_between(const refiners::ls::LsResult& r, std::size_t u, std::size_t v) {
+  const auto& s = r.mesh.sites;
+  const predicates::Point2<Rational> a{Rational(s[u].x), Rational(s[u].y)}, b{Rational(s[v].x), Rational(s[v].y)};
+  return std::min(d2(exact(r.mesh.metrics[u]), a, b), d2(exact(r.mesh.metrics[v]), a, b));
+}
+
 // A run under Theorem 11's conditions: θ_bound below 20.7°, no size rule, a comb (narrow slots,
 // right angles) or a random polygon, convex or not, a τ-bounded field, and the separation at every
 // corner in the corner's metric, cos(angle) ≤ 1 − γ_hi⁴/2 ≤ cos 2 arcsin(γ²/2), decided exactly.
@@ -194,12 +202,6 @@ struct Theorem11Run {
   TauBoundedField field;
   Rational delta2;  // δ², the least over the field's metrics
   refiners::ls::LsResult r;
-  // min{d_u(v)², d_v(u)²} in the sites' metrics, exactly.
-  Rational d2_between(std::size_t u, std::size_t v) const {
-    const auto& s = r.mesh.sites;
-    const predicates::Point2<Rational> a{Rational(s[u].x), Rational(s[u].y)}, b{Rational(s[v].x), Rational(s[v].y)};
-    return std::min(d2(exact(r.mesh.metrics[u]), a, b), d2(exact(r.mesh.metrics[v]), a, b));
-  }
 };
 
 Theorem11Run theorem11_run() {
@@ -234,24 +236,21 @@ Theorem11Run theorem11_run() {
   return run;
 }
 
-}  // namespace
 
-RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
-  const Theorem11Run run = theorem11_run();
-  const auto& r = run.r;
+// Theorem 11's conclusions on a run: it finished; the oracle certifies it (as in LS_S9), with every
+// angle at least θ_bound in the metrics of each triangle's vertices, points of t (the refiner also
+// judges at the dual vertex); every two sites have d_u(v)² ≥ μ² and d_v(u)² ≥ μ², exactly.
+void assert_theorem11(const refiners::ls::LsResult& r, double theta_bound, const Rational& mu2) {
   RC_LOG() << r.stop_reason;
   RC_ASSERT(r.consistent);
-  // The finished run certified by the oracle (as in LS_S9), and the theorem's angle bound in the
-  // metrics of each triangle's vertices, points of t (the refiner also judges at the dual vertex).
   if (const auto certified = gen::assert_dual_of_exact_diagram(r.mesh)) {
-    const Rational s2 = gen::sin2_above(run.p.theta_bound);
+    const Rational s2 = gen::sin2_above(theta_bound);
     const auto& m = certified->mesh;
     for (const auto& t : r.mesh.triangles)
       for (int k = 0; k < 3; ++k)
         for (int i = 0; i < 3; ++i)
           RC_ASSERT(predicates::angle_at_least_arcsin(m.sites[t[(i + 2) % 3]], m.sites[t[i]], m.sites[t[(i + 1) % 3]], m.metrics[t[k]], s2));
   }
-  const Rational mu2 = run.delta2 / (4 * Rational(run.gamma_hi) * Rational(run.gamma_hi));
   const double mu2d = mu2.convert_to<double>();
   const auto& sites = r.mesh.sites;
   std::size_t pairs_checked_exactly = 0;
@@ -262,12 +261,85 @@ RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
       least2 = std::min(least2, dist2);
       if (dist2 > 1.01 * mu2d + 1e-300) continue;  // far apart
       ++pairs_checked_exactly;
-      RC_ASSERT(run.d2_between(u, v) >= mu2);  // d_u(v) and d_v(u)
+      RC_ASSERT(d2_between(r, u, v) >= mu2);  // d_u(v) and d_v(u)
     }
   RC_CLASSIFY(pairs_checked_exactly > 0, "pairs near mu checked exactly");
   const double ratio = std::sqrt(least2 / mu2d);  // how much room the bound leaves
-  RC_TAG(ratio < 1.5 ? "closest pair under 1.5 mu" : ratio < 2 ? "closest pair 1.5 to 2 mu" : "closest pair 2 mu or more");
+  RC_TAG(ratio < 1.5 ? "closest pair under 1.5 mu" : ratio < 2 ? "closest pair 1.5 to 2 mu" : ratio < 10 ? "closest pair 2 to 10 mu" : "closest pair 10 mu or more");
   RC_TAG(sites.size() < 20 ? "under 20 sites" : sites.size() < 500 ? "20 to 499 sites" : "500 sites or more");
+}
+
+}  // namespace
+
+RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
+  const Theorem11Run run = theorem11_run();
+  assert_theorem11(run.r, run.p.theta_bound, run.delta2 / (4 * Rational(run.gamma_hi) * Rational(run.gamma_hi)));
+}
+
+// LS.T11 on a smooth field whose bdr_min and lfs_min have certified bounds in closed form: the
+// linear field (fields/linear.cpp) M(x, y) = diag(1/hx², 1/h̃(y)²), h̃ the double of
+// h(y) = h0 + k|y − ½|, k = 2(hx − h0), with hx and h0 dyadic so that k is exact. No size rule,
+// θ_bound below 20.7°, Theorem 11's separation at every corner in its metric (decided exactly), as
+// in the runs above, on random polygons (convex or not) around the origin.
+//   Rounding. h̃ = h(1 + e), |e| < 4u (u = 2⁻⁵³: a subtraction, a product, a sum of non-negative
+//   terms), and m22 = 1/h̃² rounded twice, so m22 = (1 + ε)/h², |ε| < 2⁻⁴⁹; m11 is one double for
+//   every point. With ρ = 1 + 2⁻⁴⁷: τ(p, q) ≤ ρ·max(h_p/h_q, h_q/h_p) (both metrics diagonal, equal
+//   m11), and d_p(q) ≥ |y_q − y_p|/(ρ h_p).
+//   bdr_min (LS Definition 4). If τ(p, q) > γ, h_q/h_p or h_p/h_q exceeds γ′ = γ/ρ; h is
+//   k-Lipschitz, so k|y_q − y_p| ≥ |h_q − h_p| > (1 − 1/γ′)h_p in either case, and d_p(q) >
+//   (1 − 1/γ′)/(kρ). So bdr_min(γ) ≥ β = (1 − ρ/γ)/(kρ) (γ at its lower end: bdr grows with γ).
+//   lfs_min (LS Definition 5). A disc centred at p that meets feature points q, q′ has radius at
+//   least d_p(q, q′)/2 ≥ √λ |q − q′|/2, λ = min(m11, 1/(ρ h_max²)) below M_p's eigenvalues (h_max:
+//   h's greatest value over Ω's y range). Points not intertwined lie on non-adjacent edges
+//   (|q − q′| ≥ δ_E, the least Euclidean distance between them), or on two edges at a corner b with
+//   τ(q, b) > γ (or q′): then |h_q − h_b| > (1 − 1/γ′)h_b, so |q − b| ≥ |y_q − y_b| > η_b =
+//   (1 − 1/γ′)h_b/k, and q′ on the other edge is at least η_b·min(1, sin φ_b) from q, φ_b the
+//   corner's angle between its edges. So lfs_min² ≥ (λ/4)·min(δ_E², min_b η_b² min(1, sin²φ_b)).
+//   μ² = min{lfs_min²/γ², β²/((γ⁵ + γ³)²(γ² + 1))}, γ at its upper end outside β.
+// Both bounds are far below the refiner's spacing (the tags say how far): the property fails only
+// for sites much closer than LS's analysis allows, such as a split or a rounding that lands on a
+// site's neighbour.
+RC_GTEST_PROP(LS_T11, LinearFieldRunsKeepEveryTwoSitesMuApart, ()) {
+  refiners::ls::LsParameters p;
+  p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20});
+  p.size = 0;
+  p.max_vertices = 20000, p.max_seconds = 1e9;
+  const double hx = *rc::gen::elementOf(std::vector<double>{0.125, 0.25, 0.5}), h0 = hx / *rc::gen::elementOf(std::vector<double>{2, 4, 8});
+  const auto field = fields::make_field("linear", {{"hx", hx}, {"h0", h0}});
+  const bool reflex = *rc::gen::arbitrary<bool>();
+  const auto corners = gen::random_domain(reflex, true);
+  const Interval gamma = theory::ls_t11_gamma(rational_from_double(p.theta_bound), 256);
+  const Rational g_lo(gamma.lower_double()), g_hi(gamma.upper_double());
+  const Rational rho = 1 + Rational(std::ldexp(1.0, -47)), k = 2 * (Rational(hx) - Rational(h0));
+  const std::size_t n = corners.size();
+  std::vector<predicates::Point2<Rational>> q;
+  for (const auto& v : corners) q.push_back({Rational(v.x), Rational(v.y)});
+  RC_ASSERT(Rational(2 * (hx - h0)) == k);  // exact, as the field computes it
+  const Rational rate = (1 - rho / g_lo) / k;   // η_b / h_b
+  Rational far_y(0), corner_least;              // h's greatest |y − ½| over Ω; min_b η_b² min(1, sin²φ_b)
+  bool first = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto &before = q[(i + n - 1) % n], &at = q[i], &after = q[(i + 1) % n];
+    RC_PRE(cos_at_most(exact(field.at(corners[i].x, corners[i].y)), before.x - at.x, before.y - at.y, after.x - at.x, after.y - at.y,
+                       1 - g_hi * g_hi * g_hi * g_hi / 2));
+    far_y = std::max(far_y, abs(at.y - Rational(1, 2)));
+    const Rational ux = before.x - at.x, uy = before.y - at.y, vx = after.x - at.x, vy = after.y - at.y, cross = ux * vy - uy * vx;
+    const Rational sin2 = ux * vx + uy * vy > 0 ? cross * cross / ((ux * ux + uy * uy) * (vx * vx + vy * vy)) : Rational(1);
+    const Rational eta = rate * (Rational(h0) + k * abs(at.y - Rational(1, 2)));
+    if (first || eta * eta * sin2 < corner_least) corner_least = eta * eta * sin2;
+    first = false;
+  }
+  RC_ASSERT(g_lo > rho);
+  const Rational h_max = Rational(h0) + k * far_y, m11(field.at(0, 0).m11);
+  const Rational lambda = std::min(m11, 1 / (rho * h_max * h_max));
+  const Rational beta = rate / rho;
+  const Rational delta_e2 = *nonadjacent_edges_distance2({1, 0, 1}, q);
+  const Rational lfs2 = lambda / 4 * std::min(delta_e2, corner_least);
+  const Rational g2 = g_hi * g_hi, g3 = g2 * g_hi, g5 = g3 * g2;
+  const Rational mu2 = std::min(lfs2 / g2, beta * beta / ((g5 + g3) * (g5 + g3) * (g2 + 1)));
+  RC_TAG(reflex ? "non-convex" : "convex", "theta_bound " + std::to_string(static_cast<int>(p.theta_bound)),
+         lfs2 / g2 < beta * beta / ((g5 + g3) * (g5 + g3) * (g2 + 1)) ? "mu from lfs_min" : "mu from bdr_min");
+  assert_theorem11(refiners::ls::refine_ls(refiners::common::Domain(corners), field, p), p.theta_bound, mu2);
 }
 
 // LS Lemmas 17, 21 and 23 on the traces of the runs above (bdr = ∞, every τ ≤ γ, size rule off,
@@ -307,7 +379,7 @@ RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
   for (std::size_t u = 0; u < first; ++u)
     for (std::size_t v = u + 1; v < first; ++v) {
       m = std::min(m, dist(u, v));
-      if (const Rational x = run.d2_between(u, v); !m2 || x < *m2) m2 = x;
+      if (const Rational x = d2_between(run.r, u, v); !m2 || x < *m2) m2 = x;
     }
   const Rational lfs_over_gamma2 = run.delta2 / (4 * Rational(run.gamma_hi) * Rational(run.gamma_hi));
   std::array<int, 9> checked{};
@@ -322,7 +394,7 @@ RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
     std::optional<Rational> nearest2;
     for (std::size_t w = 0; w < z; ++w)
       if (dist(z, w) <= nearest * (1 + 1e-6L))
-        if (const Rational x = run.d2_between(z, w); !nearest2 || x < *nearest2) nearest2 = x;
+        if (const Rational x = d2_between(run.r, z, w); !nearest2 || x < *nearest2) nearest2 = x;
     RC_LOG() << "insertion " << k << " (site " << z << ") rule " << t.rule << " for rule " << t.for_rule << " at (" << t.x << ", " << t.y << "), nearest " << nearest
              << ", m " << m << "\n";
     if (t.rule == 1) RC_ASSERT(*nearest2 >= std::min(*m2, lfs_over_gamma2));  // Lemma 17
