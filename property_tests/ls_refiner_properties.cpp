@@ -276,6 +276,32 @@ RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
   assert_theorem11(run.r, run.p.theta_bound, run.delta2 / (4 * Rational(run.gamma_hi) * Rational(run.gamma_hi)));
 }
 
+namespace {
+
+// The linear field (fields/linear.cpp) with dyadic hx and h0, so that k = 2(hx − h0) is exact as
+// the field computes it, and the bounds on it that the properties below use (the argument is in
+// the comment of LS_T11.LinearFieldRunsKeepEveryTwoSitesMuApart).
+struct LinearField {
+  double hx, h0;
+  Rational k;
+  fields::MetricField field;
+  // ρ = 1 + 2⁻⁴⁷ covers the field's rounding: τ(p, q) ≤ ρ·max(h_p/h_q, h_q/h_p), d_p(q) ≥ |y_q − y_p|/(ρ h_p).
+  static Rational rho() { return 1 + Rational(std::ldexp(1.0, -47)); }
+  // h(y) = h0 + k|y − ½|, exactly.
+  Rational h(const Rational& y) const { return Rational(h0) + k * abs(y - Rational(1, 2)); }
+  // bdr_min(γ) ≥ (1 − ρ/γ)/(kρ), for γ > ρ.
+  Rational bdr_min_below(const Rational& gamma) const { return (1 - rho() / gamma) / (k * rho()); }
+};
+
+LinearField linear_field() {
+  const double hx = *rc::gen::elementOf(std::vector<double>{0.125, 0.25, 0.5}), h0 = hx / *rc::gen::elementOf(std::vector<double>{2, 4, 8});
+  LinearField f{hx, h0, 2 * (Rational(hx) - Rational(h0)), fields::make_field("linear", {{"hx", hx}, {"h0", h0}})};
+  RC_ASSERT(Rational(2 * (hx - h0)) == f.k);
+  return f;
+}
+
+}  // namespace
+
 // LS.T11 on a smooth field whose bdr_min and lfs_min have certified bounds in closed form: the
 // linear field (fields/linear.cpp) M(x, y) = diag(1/hx², 1/h̃(y)²), h̃ the double of
 // h(y) = h0 + k|y − ½|, k = 2(hx − h0), with hx and h0 dyadic so that k is exact. No size rule,
@@ -304,42 +330,38 @@ RC_GTEST_PROP(LS_T11, LinearFieldRunsKeepEveryTwoSitesMuApart, ()) {
   p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20});
   p.size = 0;
   p.max_vertices = 20000, p.max_seconds = 1e9;
-  const double hx = *rc::gen::elementOf(std::vector<double>{0.125, 0.25, 0.5}), h0 = hx / *rc::gen::elementOf(std::vector<double>{2, 4, 8});
-  const auto field = fields::make_field("linear", {{"hx", hx}, {"h0", h0}});
+  const LinearField f = linear_field();
   const bool reflex = *rc::gen::arbitrary<bool>();
   const auto corners = gen::random_domain(reflex, true);
   const Interval gamma = theory::ls_t11_gamma(rational_from_double(p.theta_bound), 256);
-  const Rational g_lo(gamma.lower_double()), g_hi(gamma.upper_double());
-  const Rational rho = 1 + Rational(std::ldexp(1.0, -47)), k = 2 * (Rational(hx) - Rational(h0));
+  const Rational g_lo(gamma.lower_double()), g_hi(gamma.upper_double()), rho = LinearField::rho();
+  RC_ASSERT(g_lo > rho);
   const std::size_t n = corners.size();
   std::vector<predicates::Point2<Rational>> q;
   for (const auto& v : corners) q.push_back({Rational(v.x), Rational(v.y)});
-  RC_ASSERT(Rational(2 * (hx - h0)) == k);  // exact, as the field computes it
-  const Rational rate = (1 - rho / g_lo) / k;   // η_b / h_b
-  Rational far_y(0), corner_least;              // h's greatest |y − ½| over Ω; min_b η_b² min(1, sin²φ_b)
+  const Rational rate = (1 - rho / g_lo) / f.k;  // η_b / h_b
+  Rational h_max(0), corner_least;              // h's greatest value over Ω; min_b η_b² min(1, sin²φ_b)
   bool first = true;
   for (std::size_t i = 0; i < n; ++i) {
     const auto &before = q[(i + n - 1) % n], &at = q[i], &after = q[(i + 1) % n];
-    RC_PRE(cos_at_most(exact(field.at(corners[i].x, corners[i].y)), before.x - at.x, before.y - at.y, after.x - at.x, after.y - at.y,
+    RC_PRE(cos_at_most(exact(f.field.at(corners[i].x, corners[i].y)), before.x - at.x, before.y - at.y, after.x - at.x, after.y - at.y,
                        1 - g_hi * g_hi * g_hi * g_hi / 2));
-    far_y = std::max(far_y, abs(at.y - Rational(1, 2)));
+    h_max = std::max(h_max, f.h(at.y));
     const Rational ux = before.x - at.x, uy = before.y - at.y, vx = after.x - at.x, vy = after.y - at.y, cross = ux * vy - uy * vx;
     const Rational sin2 = ux * vx + uy * vy > 0 ? cross * cross / ((ux * ux + uy * uy) * (vx * vx + vy * vy)) : Rational(1);
-    const Rational eta = rate * (Rational(h0) + k * abs(at.y - Rational(1, 2)));
+    const Rational eta = rate * f.h(at.y);
     if (first || eta * eta * sin2 < corner_least) corner_least = eta * eta * sin2;
     first = false;
   }
-  RC_ASSERT(g_lo > rho);
-  const Rational h_max = Rational(h0) + k * far_y, m11(field.at(0, 0).m11);
-  const Rational lambda = std::min(m11, 1 / (rho * h_max * h_max));
-  const Rational beta = rate / rho;
+  const Rational lambda = std::min(Rational(f.field.at(0, 0).m11), 1 / (rho * h_max * h_max));
+  const Rational beta = f.bdr_min_below(g_lo);
   const Rational delta_e2 = *nonadjacent_edges_distance2({1, 0, 1}, q);
   const Rational lfs2 = lambda / 4 * std::min(delta_e2, corner_least);
   const Rational g2 = g_hi * g_hi, g3 = g2 * g_hi, g5 = g3 * g2;
   const Rational mu2 = std::min(lfs2 / g2, beta * beta / ((g5 + g3) * (g5 + g3) * (g2 + 1)));
   RC_TAG(reflex ? "non-convex" : "convex", "theta_bound " + std::to_string(static_cast<int>(p.theta_bound)),
          lfs2 / g2 < beta * beta / ((g5 + g3) * (g5 + g3) * (g2 + 1)) ? "mu from lfs_min" : "mu from bdr_min");
-  assert_theorem11(refiners::ls::refine_ls(refiners::common::Domain(corners), field, p), p.theta_bound, mu2);
+  assert_theorem11(refiners::ls::refine_ls(refiners::common::Domain(corners), f.field, p), p.theta_bound, mu2);
 }
 
 // LS Lemmas 17, 21 and 23 on the traces of the runs above (bdr = ∞, every τ ≤ γ, size rule off,
@@ -432,6 +454,89 @@ RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
 // the diametral-ellipse test that discards sites before the cells along a subsegment are
 // computed) only speed the refiner up: with them off, every decision in rationals, a run makes
 // the same insertions and ends with the same mesh, double for double.
+namespace {
+
+// Whether p lies in the closed polygon (winding number, exact orientations; a point on an edge is in).
+bool in_closed_polygon(const std::vector<predicates::Point2<Rational>>& poly, const predicates::Point2<Rational>& p) {
+  int winding = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const auto &a = poly[i], &b = poly[(i + 1) % poly.size()];
+    const Sign o = predicates::orientation(a, b, p);
+    if (o == Sign::zero && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
+      return true;
+    if (a.y <= p.y && b.y > p.y && o == Sign::positive) ++winding;
+    if (a.y > p.y && b.y <= p.y && o == Sign::negative) --winding;
+  }
+  return winding != 0;
+}
+
+}  // namespace
+
+// LS Lemma 12 on the traces of runs on the linear field (any θ_bound, a size rule or none: the
+// lemma holds in any Voronoi diagram). For each inserted site z (any rule: z is a point of some
+// cell), v the earlier site whose cell holds it (least d_v(z), LS §3's cells in each site's own
+// metric, exactly) and γ ∈ {5/4, 3/2, 2}: when d_v(z) ≥ bdr(v, γ), every earlier site w has
+// d(w, z) = min{d_w(z), d_z(w)} ≥ bdr_min(γ)/γ. bdr(v, γ) is bounded above by a witness, a point
+// q* of closed Ω on the vertical through v with τ(v, q*) > γ decided exactly on the metrics the
+// field gives at both (the candidates: h = γ(1 + 2⁻²⁰)h_v and h_v/(γ(1 + 2⁻²⁰)), on either side of
+// y = ½); bdr_min(γ) is bounded below by LinearField::bdr_min_below. So the premise is certain
+// where it is asserted, and the conclusion is decided exactly. Unlike Theorem 11's μ, the bound is
+// near the sites' spacing: the tags count the insertions where the premise held.
+RC_GTEST_PROP(LS_L12, InsertionFarInItsCellKeepsBdrMinOverGamma, ()) {
+  const LinearField f = linear_field();
+  refiners::ls::LsParameters p;
+  p.theta_bound = *rc::gen::elementOf(std::vector<double>{5, 10, 15, 20});
+  p.size = *rc::gen::elementOf(std::vector<double>{0, 0, 1, 2});
+  p.max_vertices = 400, p.max_seconds = 1e9;
+  const auto corners = gen::random_domain(*rc::gen::arbitrary<bool>(), true);
+  std::vector<predicates::Point2<Rational>> omega;
+  for (const auto& c : corners) omega.push_back({Rational(c.x), Rational(c.y)});
+  const Rational gamma = *rc::gen::elementOf(std::vector<Rational>{Rational(5, 4), Rational(3, 2), Rational(2)});
+  const auto r = refiners::ls::refine_ls(refiners::common::Domain(corners), f.field, p);
+  RC_LOG() << r.stop_reason << "\n";
+  const auto& sites = r.mesh.sites;
+  const auto at = [&](std::size_t u) { return predicates::Point2<Rational>{Rational(sites[u].x), Rational(sites[u].y)}; };
+  const Rational bound = f.bdr_min_below(gamma) / gamma, bound2 = bound * bound, step = 1 + Rational(std::ldexp(1.0, -20));
+  // bdr(v, γ)², bounded above by the nearest witness; nothing when none is found.
+  const auto bdr2_above = [&](std::size_t v) {
+    const auto& Mv = r.mesh.metrics[v];
+    const Rational hv = f.h(at(v).y);
+    std::optional<Rational> least;
+    for (const Rational& target : {gamma * step * hv, hv / (gamma * step)})
+      for (const int side : {-1, 1}) {
+        if (target < Rational(f.h0)) continue;
+        const double y = (Rational(1, 2) + side * (target - Rational(f.h0)) / f.k).convert_to<double>();
+        if (!in_closed_polygon(omega, {Rational(sites[v].x), Rational(y)})) continue;
+        const auto Mq = f.field.at(sites[v].x, y);
+        RC_ASSERT(Mq.m11 == Mv.m11 && Mq.m12 == 0 && Mv.m12 == 0);
+        const Rational a(Mv.m22), b(Mq.m22);
+        if (!(a > gamma * gamma * b || b > gamma * gamma * a)) continue;  // τ(v, q*) ≤ γ: no witness
+        const Rational d2 = a * (Rational(y) - at(v).y) * (Rational(y) - at(v).y);
+        if (!least || d2 < *least) least = d2;
+      }
+    return least;
+  };
+  const std::size_t first = sites.size() - r.trace.size();
+  int premise_held = 0;
+  double least_ratio = INFINITY;  // d(w, z)/bound where the premise held: how much room the lemma leaves
+  for (std::size_t z = first; z < sites.size(); ++z) {
+    std::size_t v = 0;
+    std::optional<Rational> dv2;
+    for (std::size_t w = 0; w < z; ++w)
+      if (const Rational d = d2(exact(r.mesh.metrics[w]), at(w), at(z)); !dv2 || d < *dv2) dv2 = d, v = w;
+    const auto bdr2 = bdr2_above(v);
+    if (!bdr2 || *dv2 < *bdr2) continue;
+    ++premise_held;
+    for (std::size_t w = 0; w < z; ++w) {
+      const Rational d = d2_between(r, z, w);
+      RC_ASSERT(d >= bound2);
+      least_ratio = std::min(least_ratio, std::sqrt((d / bound2).convert_to<double>()));
+    }
+  }
+  RC_TAG(premise_held == 0 ? "premise never held" : premise_held < 5 ? "premise held 1 to 4 times" : "premise held 5 times or more");
+  if (premise_held > 0) RC_TAG(least_ratio < 1.5 ? "closest under 1.5 times the bound" : least_ratio < 3 ? "closest 1.5 to 3 times the bound" : "closest 3 times the bound or more");
+}
+
 RC_GTEST_PROP(LS_Filters, FilteredRunIsTheExactRun, ()) {
   const bool reflex = *rc::gen::arbitrary<bool>();
   const auto corners = *rc::gen::arbitrary<bool>() ? gen::random_comb() : gen::random_domain(reflex, false);
