@@ -17,7 +17,9 @@ fields::Parameters parameters_of(const std::vector<std::string>& params) {
   for (const std::string& kv : params) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos) throw UsageError("--param " + quoted_excerpt(kv) + ": expected name=value");
-    p[kv.substr(0, eq)] = parse_option("--param " + excerpt(kv.substr(0, eq)), kv.substr(eq + 1)).convert_to<double>();
+    const std::string name = kv.substr(0, eq);
+    if (p.count(name)) throw UsageError("--param " + quoted_excerpt(name) + " is given twice");
+    p[name] = option_double("--param " + excerpt(name), kv.substr(eq + 1));
   }
   return p;
 }
@@ -29,9 +31,14 @@ FieldSource background_source(const std::string& text) {
   const std::string mesh_path = spec.substr(0, colon), metric_path = colon == std::string::npos ? "" : spec.substr(colon + 1);
   if (mesh_path.empty() || (colon != std::string::npos && metric_path.empty()))
     throw UsageError("--field " + quoted_excerpt(text) + ": expected background:MESH or background:MESH:METRIC");
+  if (!metric_path.empty() && !io::has_metric_extension(metric_path))
+    throw UsageError("--field " + quoted_excerpt(text) + ": " + metric_path +
+                     " is not a metric file (.sol, .solb, .mtr); a Gmsh .msh holds its metrics itself: background:MESH");
   io::MeshFile file;
   try {
-    file = io::read_mesh_file(mesh_path, "", {}, metric_path);
+    // A planar mesh saved in 3D (every z 0, as Gmsh writes Medit files) is read as 2D: a field's
+    // points are 2D, and a z that is not 0 is still refused.
+    file = io::read_mesh_file(mesh_path, "", {true}, metric_path);
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }

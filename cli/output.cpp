@@ -1,9 +1,11 @@
 #include "cli/output.hpp"
 
 #include "cli/usage_error.hpp"
+#include "numbers/excerpt.hpp"
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -19,6 +21,12 @@ Rational parse_option(const std::string& name, const std::string& text) {
   } catch (const NumberSyntaxError& e) {
     throw UsageError(name + ": " + e.what());
   }
+}
+
+double option_double(const std::string& name, const std::string& text) {
+  const double d = parse_option(name, text).convert_to<double>();
+  if (!std::isfinite(d)) throw UsageError(name + " " + quoted_excerpt(text) + " is beyond the range of doubles");
+  return d;
 }
 
 void emit(const std::string& text) {

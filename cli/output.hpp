@@ -19,6 +19,9 @@ using Json = nlohmann::ordered_json;
 // Parses the text of option `name` exactly, within the magnitudes anisocert reads
 // (parse_input_number), or throws UsageError naming the option and text.
 Rational parse_option(const std::string& name, const std::string& text);
+// The same, rounded to the nearest double (the type of refiner and field parameters); a value that
+// rounds to ±∞ is refused, naming the text as typed.
+double option_double(const std::string& name, const std::string& text);
 
 using io::as_printed;
 

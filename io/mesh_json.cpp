@@ -3,12 +3,11 @@
 #include "io/mesh_json.hpp"
 
 #include "io/json/exact_document.hpp"
+#include "io/input_file.hpp"
 #include "io/json/schema_reader.hpp"
 #include "predicates/metric.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <map>
 #include <numeric>
@@ -47,7 +46,7 @@ class MeshReader : SchemaReader {
       if (!segments.is_array()) fail("interior_segments", "expected an array of vertex-index pairs [i, j], got " + show(segments));
       for (std::size_t k = 0; k < segments.size(); ++k) {
         const std::vector<int> ends = indices(segments[k], 2, vertices, indexed("interior_segments", k),
-                                              "[i, j] with two vertex indices (the corners, then the points)");
+                                              "[i, j] with two vertex indices (the corners, then the points)", true);
         d.interior_segments.emplace_back(ends[0], ends[1]);
       }
     }
@@ -160,8 +159,7 @@ class MeshReader : SchemaReader {
 };
 
 Json parse_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open (" + std::strerror(errno) + ")");
+  std::ifstream in = open_input(path);
   return parse_exact_json(in, path);
 }
 

@@ -26,6 +26,7 @@
 // interior segments) is a union of mesh edges (decided from the domain).
 #include "fields/registry.hpp"
 #include "geometry/mesh.hpp"
+#include "geometry/polygon.hpp"
 #include "oracle/diagram/diagram.hpp"
 #include "oracle/diagram/mesh_dual.hpp"
 #include "predicates/angle.hpp"
@@ -454,24 +455,6 @@ RC_GTEST_PROP(LS_L17_L21_L23, EveryInsertionKeepsItsLemmasDistance, ()) {
 // the diametral-ellipse test that discards sites before the cells along a subsegment are
 // computed) only speed the refiner up: with them off, every decision in rationals, a run makes
 // the same insertions and ends with the same mesh, double for double.
-namespace {
-
-// Whether p lies in the closed polygon (winding number, exact orientations; a point on an edge is in).
-bool in_closed_polygon(const std::vector<predicates::Point2<Rational>>& poly, const predicates::Point2<Rational>& p) {
-  int winding = 0;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const auto &a = poly[i], &b = poly[(i + 1) % poly.size()];
-    const Sign o = predicates::orientation(a, b, p);
-    if (o == Sign::zero && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
-      return true;
-    if (a.y <= p.y && b.y > p.y && o == Sign::positive) ++winding;
-    if (a.y > p.y && b.y <= p.y && o == Sign::negative) --winding;
-  }
-  return winding != 0;
-}
-
-}  // namespace
-
 // LS Lemma 12 on the traces of runs on the linear field (any θ_bound, a size rule or none: the
 // lemma holds in any Voronoi diagram). For each inserted site z (any rule: z is a point of some
 // cell), v the earlier site whose cell holds it (least d_v(z), LS §3's cells in each site's own
@@ -489,8 +472,6 @@ RC_GTEST_PROP(LS_L12, InsertionFarInItsCellKeepsBdrMinOverGamma, ()) {
   p.size = *rc::gen::elementOf(std::vector<double>{0, 0, 1, 2});
   p.max_vertices = 400, p.max_seconds = 1e9;
   const auto corners = gen::random_domain(*rc::gen::arbitrary<bool>(), true);
-  std::vector<predicates::Point2<Rational>> omega;
-  for (const auto& c : corners) omega.push_back({Rational(c.x), Rational(c.y)});
   const Rational gamma = *rc::gen::elementOf(std::vector<Rational>{Rational(5, 4), Rational(3, 2), Rational(2)});
   const auto r = refiners::ls::refine_ls(refiners::common::Domain(corners), f.field, p);
   RC_LOG() << r.stop_reason << "\n";
@@ -506,7 +487,7 @@ RC_GTEST_PROP(LS_L12, InsertionFarInItsCellKeepsBdrMinOverGamma, ()) {
       for (const int side : {-1, 1}) {
         if (target < Rational(f.h0)) continue;
         const double y = (Rational(1, 2) + side * (target - Rational(f.h0)) / f.k).convert_to<double>();
-        if (!in_closed_polygon(omega, {Rational(sites[v].x), Rational(y)})) continue;
+        if (!geometry::in_closed_polygon(predicates::Point2<double>{sites[v].x, y}, corners)) continue;
         const auto Mq = f.field.at(sites[v].x, y);
         RC_ASSERT(Mq.m11 == Mv.m11 && Mq.m12 == 0 && Mv.m12 == 0);
         const Rational a(Mv.m22), b(Mq.m22);

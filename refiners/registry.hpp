@@ -47,6 +47,10 @@ struct RefinerEntry {
   std::function<Run(const common::Domain&, const fields::MetricField&, const ParameterValues&, const common::Budget&,
                     unsigned seed, const common::Progress&)>
       run;
+  // The command that checks a finished run against the refiner's own paper ("anisocert certify",
+  // LU's stars; "anisocert dual", LS Theorem 7's dual).
+  std::string check = "anisocert certify";
+  bool seeded = false;  // the run draws random points from `seed` (otherwise --seed is bad input)
 };
 
 const std::vector<RefinerEntry>& registered_refiners();

@@ -199,3 +199,47 @@ TEST(CliMesh, RefineTakesAPslg) {
 }
 
 }  // namespace
+
+// What a new user's trial of `refine --algo ls` found (2026-12-02), each refused with exit 2, one
+// line naming the problem, before the run and with nothing written: a directory given as an input
+// file (was an internal error, exit 3, in refine, certify and dual); budgets that are not positive
+// (--max-vertices -5 ran without a budget, --max-seconds -1 stopped at once and wrote a mesh); a
+// seed for a refiner that draws no random points; a --param given twice (the second won
+// silently); an output folder that does not exist (refused only after the whole run); a
+// background metric file of an unknown extension (the message named --metric-format, which
+// refine does not have); and an interior segment repeating a vertex (the message named "sites",
+// a key the domain file does not have). Fractions are read wherever the docs say numbers are.
+TEST(CliMesh, RefineRefusesBadInputBeforeTheRun) {
+  const std::string base = ::testing::TempDir() + "anisocert_refine_bad_" + std::to_string(getpid());
+  std::filesystem::create_directories(base + "_dir.json");
+  std::ofstream(base + "_seg.json") << R"({"domain": [[0,0],[1,0],[1,1],[0,1]], "interior_segments": [[0,0]]})";
+  std::ofstream(base + "_bg.json") << R"({"sites": [{"x": "0", "y": "0", "metric": ["1","0","1"]}, {"x": "1", "y": "0", "metric": ["1","0","1"]},
+                                                    {"x": "0", "y": "1", "metric": ["1","0","1"]}], "triangles": [[0, 1, 2]]})";
+  const std::string never = base + "_never.json";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"refine --algo ls --domain " + base + "_dir.json -o " + never, "it is a directory"},
+      {"refine --algo ls --field background:" + base + "_dir.json -o " + never, "it is a directory"},
+      {"certify " + base + "_dir.json", "it is a directory"},
+      {"dual " + base + "_dir.json", "it is a directory"},
+      {"refine --algo ls --max-vertices -5 -o " + never, "--max-vertices \"-5\": expected a positive whole number"},
+      {"refine --algo ls --max-vertices 2.5 -o " + never, "--max-vertices \"2.5\": expected a positive whole number"},
+      {"refine --algo ls --max-seconds -1 -o " + never, "--max-seconds \"-1\": expected a positive number"},
+      {"refine --algo ls --max-seconds 0 -o " + never, "--max-seconds \"0\": expected a positive number"},
+      {"refine --algo ls --seed 3 -o " + never, "--seed is not a parameter of --algo ls"},
+      {"refine --algo ls --param alpha=1 --param alpha=2 -o " + never, "--param \"alpha\" is given twice"},
+      {"refine --algo ls -o /nonexistent/x.json", "cannot write /nonexistent/x.json"},
+      {"refine --algo ls --field background:" + base + "_bg.json:" + base + "_bg.json -o " + never, "is not a metric file"},
+      {"refine --algo ls --domain " + base + "_seg.json -o " + never, "interior_segments[0]: repeats vertex 0"}};
+  for (const auto& [args, why] : cases) {
+    const Outcome r = run(args.rfind("certify", 0) == 0 ? args : args + " --quiet");  // certify prints no progress
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(why), std::string::npos) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.out.empty()) << args;
+    EXPECT_FALSE(std::filesystem::exists(never)) << args;
+  }
+  const Outcome fractions = run("refine --algo ls --field constant --size 1/3 --theta-bound 40/3 --max-seconds 30/2 --quiet -o " + base + ".json");
+  EXPECT_EQ(fractions.exit_code, 0) << fractions.err;
+  EXPECT_NE(fractions.out.find("θ_bound = 13.3333°, size = 0.333333"), std::string::npos) << fractions.out;
+  EXPECT_NE(fractions.out.find("check it with anisocert dual"), std::string::npos) << fractions.out;
+}

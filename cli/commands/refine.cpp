@@ -13,8 +13,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include <memory>
+#include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 
 namespace anisocert::cli {
@@ -30,22 +31,47 @@ std::string names_of(const std::vector<std::string>& names) {
 struct RefineOptions {
   std::string algo = "star", domain = "square", field = "shock", output, output_format, svg;
   std::vector<std::string> params;
-  std::map<std::string, double> values;            // every refiner parameter, defaults first
+  std::map<std::string, double> values;            // every refiner parameter's default
+  std::map<std::string, std::string> texts;        // the values given, as typed (exact decimals or fractions)
   std::map<std::string, bool> flags;               // the parameters that are flags (refiners::ParameterSpec::flag)
   std::map<std::string, CLI::Option*> options;    // their options, to tell which were given
-  refiners::common::Budget budget;
+  std::string max_vertices, max_seconds;           // the budget as typed, when given
+  CLI::Option* seed_option = nullptr;
   unsigned seed = 1;
   bool quiet = false;
 };
+
+// The budget: the defaults of refiners::common::Budget, or a positive whole number of vertices and
+// a positive number of seconds.
+refiners::common::Budget budget_of(const RefineOptions& o) {
+  refiners::common::Budget b;
+  if (!o.max_vertices.empty()) {
+    const Rational v = parse_option("--max-vertices", o.max_vertices);
+    if (v < 1 || denominator(v) != 1 || v > Rational(std::numeric_limits<std::size_t>::max()))
+      throw UsageError("--max-vertices " + quoted_excerpt(o.max_vertices) + ": expected a positive whole number");
+    b.max_vertices = v.convert_to<std::size_t>();
+  }
+  if (!o.max_seconds.empty()) {
+    b.max_seconds = option_double("--max-seconds", o.max_seconds);
+    if (!(b.max_seconds > 0)) throw UsageError("--max-seconds " + quoted_excerpt(o.max_seconds) + ": expected a positive number");
+  }
+  return b;
+}
 
 int run_refine(const RefineOptions& o) {
   const refiners::RefinerEntry* entry = refiners::find_refiner(o.algo);
   if (!entry) throw UsageError("--algo: unknown refiner " + quoted_excerpt(o.algo) + " (" + names_of(refiners::refiner_names()) + ")");
   refiners::ParameterValues values;
-  for (const auto& spec : entry->parameters) values[spec.name] = spec.flag ? double(o.flags.at(spec.name)) : o.values.at(spec.name);
+  for (const auto& spec : entry->parameters)
+    values[spec.name] = spec.flag                              ? double(o.flags.at(spec.name))
+                        : o.options.at(spec.name)->count() > 0 ? option_double("--" + spec.name, o.texts.at(spec.name))
+                                                               : o.values.at(spec.name);
   for (const auto& [name, option] : o.options)
     if (option->count() > 0 && !values.count(name))
       throw UsageError("--" + name + " is not a parameter of --algo " + o.algo);
+  if (o.seed_option->count() > 0 && !entry->seeded) throw UsageError("--seed is not a parameter of --algo " + o.algo + " (it draws no random points)");
+  const refiners::common::Budget budget = budget_of(o);
+  check_outputs({o.output, o.svg});  // before the run, which may be long
   io::DomainFile input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, {}};
   if (o.domain != "square") {
     try {
@@ -59,7 +85,7 @@ int run_refine(const RefineOptions& o) {
   refiners::Run run;
   try {
     const refiners::common::Domain domain = refiners::common::Domain::from_exact(input.corners, input.points, input.interior_segments);
-    run = entry->run(domain, field, values, o.budget, o.seed, progress);
+    run = entry->run(domain, field, values, budget, o.seed, progress);
   } catch (const refiners::common::DomainError& e) {  // e.g. a domain the refiner cannot split exactly
     throw UsageError(o.domain + ": " + e.what());
   } catch (const refiners::common::FieldError& e) {
@@ -70,12 +96,15 @@ int run_refine(const RefineOptions& o) {
   const geometry::Mesh<double>& m = run.result.mesh;
   std::vector<OutputFile> files;
   std::string written;
+  bool readable = false;  // whether anisocert reads the format written back
   if (!o.output.empty()) {
     io::MeshFile file;
     file.mesh = geometry::exact(m);
     file.mesh.edges = file.mesh.segments;  // the boundary subsegments, as every mesher's file declares them
     try {
-      for (io::FileText& f : io::mesh_format_to_write(o.output, o.output_format).write(file, o.output)) {
+      const io::MeshFormat& format = io::mesh_format_to_write(o.output, o.output_format);
+      readable = format.read != nullptr;
+      for (io::FileText& f : format.write(file, o.output)) {
         written += (written.empty() ? "" : ", ") + f.path;
         files.push_back({std::move(f.path), std::move(f.content)});
       }
@@ -89,8 +118,9 @@ int run_refine(const RefineOptions& o) {
   std::string text = "refine: domain " + o.domain + ", field " + o.field + "\n" + report_text(run);
   if (!o.output.empty())
     text += "  mesh: " + written +
-            (run.result.consistent ? " (check it with anisocert certify)\n"
-                                   : " (the run stopped early: the mesh as it stood, not necessarily a triangulation of the domain)\n");
+            (!run.result.consistent ? " (the run stopped early: the mesh as it stood, not necessarily a triangulation of the domain)\n"
+             : readable             ? " (check it with " + entry->check + ")\n"
+                                    : " (a file anisocert does not read back: write .json, .mesh or .msh to check it with " + entry->check + ")\n");
   emit(text);
   return run.result.consistent ? 0 : 1;
 }
@@ -140,10 +170,11 @@ void add_refine(CLI::App& app, int& exit_code) {
     }
   for (const auto& [name, h] : help)
     o->options[name] = o->flags.count(name) ? c->add_flag("--" + name, o->flags[name], h.second + ")")
-                                            : c->add_option("--" + name, o->values[name], h.second + ")")->capture_default_str();
-  c->add_option("--max-vertices", o->budget.max_vertices, "vertex budget")->capture_default_str();
-  c->add_option("--max-seconds", o->budget.max_seconds, "time budget")->capture_default_str();
-  c->add_option("--seed", o->seed, "random seed of the picking regions (--algo star)")->capture_default_str();
+                                            : c->add_option("--" + name, o->texts[name], h.second + ")")->default_str(as_printed(o->values[name]));
+  const refiners::common::Budget budget;
+  c->add_option("--max-vertices", o->max_vertices, "vertex budget")->default_str(std::to_string(budget.max_vertices));
+  c->add_option("--max-seconds", o->max_seconds, "time budget, read between insertions")->default_str(as_printed(budget.max_seconds));
+  o->seed_option = c->add_option("--seed", o->seed, "random seed of the picking regions (--algo star)")->capture_default_str();
   c->add_option("-o,--output", o->output,
                 "write the mesh with its metrics, in the format of its extension (.json, .mesh/.meshb with .sol/.solb,\n"
                 ".msh Gmsh, .node/.ele/.poly; see certify --help)");

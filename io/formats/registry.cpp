@@ -6,6 +6,7 @@
 #include "io/formats/medit.hpp"
 #include "io/formats/text_reader.hpp"
 #include "io/formats/triangle.hpp"
+#include "io/input_file.hpp"
 #include "io/mesh_json.hpp"
 #include "numbers/excerpt.hpp"
 
@@ -34,8 +35,7 @@ std::string extension_of(const std::string& path) {
 }
 
 std::string head_of(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file");
+  std::ifstream in = open_input(path);
   std::string head(256, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
@@ -104,6 +104,12 @@ std::vector<std::string> mesh_format_names() {
 
 const MeshFormat& mesh_format_of(const std::string& path, const std::string& forced) {
   return format_of(mesh_formats(), path, forced, "mesh", "--format");
+}
+
+bool has_metric_extension(const std::string& path) {
+  const std::string ext = extension_of(path);
+  return std::any_of(metric_formats().begin(), metric_formats().end(),
+                     [&ext](const MetricFormat& f) { return std::find(f.extensions.begin(), f.extensions.end(), ext) != f.extensions.end(); });
 }
 
 const MetricFormat& metric_format_of(const std::string& path, const std::string& forced) {

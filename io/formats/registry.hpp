@@ -38,6 +38,8 @@ struct MetricFormat {
 
 const std::vector<MeshFormat>& mesh_formats();
 const std::vector<MetricFormat>& metric_formats();
+// Whether some metric format has the extension of path.
+bool has_metric_extension(const std::string& path);
 std::vector<std::string> mesh_format_names();
 
 // The format of path: by `forced` when not empty (its name), else by extension (and content for

@@ -1,5 +1,6 @@
 #include "io/formats/text_reader.hpp"
 
+#include "io/input_file.hpp"
 #include "numbers/excerpt.hpp"
 
 #include <fstream>
@@ -101,8 +102,7 @@ void TextReader::fail(const std::string& what) const {
 }
 
 std::string read_whole_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file");
+  std::ifstream in = open_input(path);
   std::ostringstream s;
   s << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read the file");

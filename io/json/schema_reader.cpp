@@ -74,14 +74,16 @@ std::vector<Rational> SchemaReader::numbers(const Json& v, std::size_t n, const 
 }
 
 std::vector<int> SchemaReader::indices(const Json& s, std::size_t count, std::size_t n, const std::string& path,
-                                       const char* what) const {
+                                       const char* what, bool vertices) const {
   if (!s.is_array() || s.size() != count) fail(path, std::string("expected ") + what + ", got " + show(s));
   std::vector<int> ends;
   for (std::size_t e = 0; e < count; ++e) {
     if (!s[e].is_number_unsigned() || s[e].get<std::uint64_t>() >= n)
-      fail(indexed(path, e), "expected a site index from 0 to " + std::to_string(n - 1) + ", got " + show(s[e]));
+      fail(indexed(path, e), std::string("expected a ") + (vertices ? "vertex" : "site") + " index from 0 to " + std::to_string(n - 1) +
+                                 ", got " + show(s[e]));
     const int v = static_cast<int>(s[e].get<std::uint64_t>());
-    if (std::find(ends.begin(), ends.end(), v) != ends.end()) fail(path, "repeats " + indexed("sites", v));
+    if (std::find(ends.begin(), ends.end(), v) != ends.end())
+      fail(path, "repeats " + (vertices ? "vertex " + std::to_string(v) : indexed("sites", v)));
     ends.push_back(v);
   }
   return ends;

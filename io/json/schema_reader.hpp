@@ -27,7 +27,9 @@ class SchemaReader {
   // An array of exactly n numbers; `expected` names the shape in messages ("[m11, m12, m22]").
   std::vector<Rational> numbers(const Json& v, std::size_t n, const std::string& path, const std::string& expected) const;
   // An array of `count` distinct indices from 0 to n − 1 (`what` names the shape in messages).
-  std::vector<int> indices(const Json& v, std::size_t count, std::size_t n, const std::string& path, const char* what) const;
+  // vertices: the indices are of a domain's vertices (its corners, then its points), not of "sites".
+  std::vector<int> indices(const Json& v, std::size_t count, std::size_t n, const std::string& path, const char* what,
+                           bool vertices = false) const;
 
  private:
   std::string source_;

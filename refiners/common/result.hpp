@@ -40,7 +40,7 @@ struct RefineResult {
   // refiner's output condition holds (star sets: every star triangle is in its vertices' stars).
   bool consistent = false;
   std::string stop_reason;      // that condition's name, the budget that stopped it, or why it cannot go on
-  std::string last_rule = "none";                            // the rule still firing when it stopped
+  std::string last_rule = "none";                            // the rule of the last insertion (a stall may be another's)
   std::vector<std::pair<std::string, std::size_t>> rule_counts;  // insertions per rule, in priority order
   double seconds = 0;
   std::vector<Insertion> trace;

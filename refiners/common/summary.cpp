@@ -14,7 +14,7 @@ std::string size_line(const RefineResult& r, const std::string& name) {
 
 std::string stop_line(const RefineResult& r, const std::string& unfinished) {
   std::string s = "  stopped: " + r.stop_reason;
-  if (!r.consistent) s += "; rule still firing: " + r.last_rule + "; " + unfinished;
+  if (!r.consistent) s += "; last insertion by rule: " + r.last_rule + "; " + unfinished;
   return s;
 }
 

@@ -31,8 +31,9 @@ std::string corner_list(const std::vector<int>& corners) {
 std::vector<std::string> report(const LsResult& r, const LsParameters& p, const common::Domain& domain, bool one_metric) {
   std::vector<std::string> lines{
       common::size_line(r, "LS refiner"),
-      common::stop_line(r, "encroached subsegments: " + std::to_string(r.encroached_left) +
-                               ", violators: " + std::to_string(r.violators_left))};
+      common::stop_line(r, r.left_counted ? "encroached subsegments: " + std::to_string(r.encroached_left) +
+                                                ", violators: " + std::to_string(r.violators_left)
+                                          : "encroached subsegments and violators not counted (the time budget is spent)")};
   std::vector<predicates::Sym2<double>> metrics(r.mesh.metrics.begin(), r.mesh.metrics.begin() + static_cast<long>(domain.vertices().size()));
   const Theorem11Conditions c = theorem11_conditions(domain, metrics, p.theta_bound);
   std::ostringstream o;
@@ -83,7 +84,8 @@ RefinerEntry entry() {
             LsResult r = refine_ls(domain, field, p, progress);
             std::vector<std::string> lines = report(r, p, domain, field.name == "constant");
             return Run{std::move(r), std::move(lines)};
-          }};
+          },
+          "anisocert dual"};
 }
 
 }  // namespace anisocert::refiners::ls

@@ -97,18 +97,20 @@ class LsRefinement {
     return false;
   }
 
-  LsResult result(std::string stop_reason, bool finished) const {
+  LsResult result(const common::Stop& stop) const {
     LsResult r;
     r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
     r.mesh.segments = subsegments_.all();
+    r.left_counted = !stop.out_of_time;
     for (std::size_t t = 0; t < diagram_.slots(); ++t) {
       const auto& tri = diagram_.triangle(static_cast<int>(t));
       if (!tri.alive || !diagram_.real(static_cast<int>(t))) continue;
       if (vertex_in_domain(static_cast<int>(t), diagram_.circumcentre_box(static_cast<int>(t)))) r.mesh.triangles.push_back(tri.v);
-      r.violators_left += violation(static_cast<int>(t)) != Rule::none;
+      if (r.left_counted) r.violators_left += violation(static_cast<int>(t)) != Rule::none;
     }
-    for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
-    record_.fill(r, std::move(stop_reason), finished);
+    if (r.left_counted)
+      for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
+    record_.fill(r, stop.reason, stop.finished);
     return r;
   }
 

@@ -22,8 +22,11 @@
 namespace anisocert::refiners::ls {
 
 struct LsResult : common::RefineResult {
-  // What a stopped run leaves: subsegments still encroached, Voronoi vertices in Ω still violators.
+  // What a stopped run leaves: subsegments still encroached, Voronoi vertices in Ω still violators;
+  // not counted (left_counted false) when the time budget stopped it, since counting is as long as
+  // a pass over the whole mesh.
   std::size_t encroached_left = 0, violators_left = 0;
+  bool left_counted = true;
 };
 
 // Throws common::FieldError when the field's metric at a corner of Ω is not finite and positive

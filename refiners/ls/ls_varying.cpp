@@ -109,10 +109,11 @@ class LsVaryingRefinement {
     return island();
   }
 
-  LsResult result(std::string stop_reason, bool finished) {
+  LsResult result(const common::Stop& stop) {
     LsResult r;
     r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
     r.mesh.segments = subsegments_.all();
+    r.left_counted = !stop.out_of_time;
     const std::string stalled = stalled_;
     for (std::size_t q = 0; q < diagram_.vertices().size(); ++q) {
       const auto& v = diagram_.vertices()[q];
@@ -121,15 +122,16 @@ class LsVaryingRefinement {
       if (common::in_closed_domain(domain_, P) != std::optional<bool>(true)) continue;
       const auto order = cell_order(static_cast<int>(q));
       r.mesh.triangles.push_back(order == Sign::negative ? std::array<int, 3>{v.sites[0], v.sites[2], v.sites[1]} : v.sites);
-      r.violators_left += violation(static_cast<int>(q)) != Rule::none;
+      if (r.left_counted) r.violators_left += violation(static_cast<int>(q)) != Rule::none;
     }
     for (const JudgedTie& judged : exact_ties_) {
       for (const auto& t : judged.triangles) r.mesh.triangles.push_back(t);
       r.violators_left += judged.rule != Rule::none;
     }
-    for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
+    if (r.left_counted)
+      for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
     stalled_ = stalled;
-    record_.fill(r, std::move(stop_reason), finished);
+    record_.fill(r, stop.reason, stop.finished);
     return r;
   }
 

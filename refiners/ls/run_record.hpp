@@ -35,9 +35,9 @@ class RunRecord {
     last_ = rule;
   }
   // r's stop, counts, last rule and trace.
-  void fill(LsResult& r, std::string stop_reason, bool finished) const {
+  void fill(LsResult& r, const std::string& stop_reason, bool finished) const {
     r.consistent = finished;
-    r.stop_reason = std::move(stop_reason);
+    r.stop_reason = stop_reason;
     for (Rule rule : rules_by_priority) r.rule_counts.emplace_back(rule_name(rule), counts_[static_cast<std::size_t>(rule)]);
     r.last_rule = rule_name(last_);
     r.trace = trace_;

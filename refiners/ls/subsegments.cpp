@@ -59,7 +59,15 @@ std::string Subsegments::too_fine(const common::Domain& domain, const Theorem11C
   const auto [a, b] = ends(s);
   const std::size_t n = domain.size();
   const std::string what = static_cast<std::size_t>(e) < n ? "edge " + std::to_string(e) : "interior segment " + std::to_string(static_cast<std::size_t>(e) - n);
-  return "a split of " + what + " would leave a piece below 2⁻³⁰ of its length" + corner_note(domain, t11, a, b);
+  // The corner refinement runs into: an end of the subsegment, or else the edge's end nearer z
+  // (pieces shrink towards it from a few subsegments away).
+  std::string note = corner_note(domain, t11, a, b);
+  if (note.empty()) {
+    const auto [k0, k1] = domain.segment_ends(static_cast<std::size_t>(e));
+    const int k = std::hypot(z.x - c0.x, z.y - c0.y) <= std::hypot(z.x - c1.x, z.y - c1.y) ? k0 : k1;
+    note = corner_note(domain, t11, k, k);
+  }
+  return "a split of " + what + " would leave a piece below 2⁻³⁰ of its length" + note;
 }
 
 }  // namespace anisocert::refiners::ls

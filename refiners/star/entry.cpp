@@ -92,7 +92,9 @@ RefinerEntry entry() {
             StarResult r = refine_star(domain, field, p, progress);
             std::vector<std::string> lines = report(r, p);
             return Run{std::move(r), std::move(lines)};
-          }};
+          },
+          "anisocert certify",
+          true};
 }
 
 }  // namespace anisocert::refiners::star

@@ -189,9 +189,9 @@ StarResult refine_star(const common::Domain& domain, const fields::MetricField& 
                        const common::Progress& progress) {
   const common::Stopwatch clock;
   StarRefiner r(domain, field, p);
-  std::string stop = common::refine_until_done(r, p, clock, progress);
-  const bool finished = r.stalled().empty() && r.queued() == 0 && stop == r.done();
-  StarResult result = r.result(std::move(stop), finished);
+  const common::Stop stop = common::refine_until_done(r, p, clock, progress);
+  const bool finished = stop.finished && r.stalled().empty() && r.queued() == 0;
+  StarResult result = r.result(stop.reason, finished);
   result.seconds = clock.seconds();
   return result;
 }
