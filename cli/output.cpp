@@ -24,8 +24,10 @@ Rational parse_option(const std::string& name, const std::string& text) {
 }
 
 double option_double(const std::string& name, const std::string& text) {
-  const double d = parse_option(name, text).convert_to<double>();
+  const Rational q = parse_option(name, text);
+  const double d = q.convert_to<double>();
   if (!std::isfinite(d)) throw UsageError(name + " " + quoted_excerpt(text) + " is beyond the range of doubles");
+  if (d == 0 && q != 0) throw UsageError(name + " " + quoted_excerpt(text) + " is below the range of doubles (it would read as 0)");
   return d;
 }
 

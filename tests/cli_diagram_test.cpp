@@ -228,6 +228,9 @@ TEST(CliMesh, RefineRefusesBadInputBeforeTheRun) {
       {"refine --algo ls --seed 3 -o " + never, "--seed is not a parameter of --algo ls"},
       {"refine --algo ls --param alpha=1 --param alpha=2 -o " + never, "--param \"alpha\" is given twice"},
       {"refine --algo ls -o /nonexistent/x.json", "cannot write /nonexistent/x.json"},
+      {"refine --algo ls -o " + base + ".xyz", "no mesh format has the extension"},
+      {"refine --algo ls --output-format bogus -o " + never, "unknown mesh format"},
+      {"refine --algo ls --size 1e-330 -o " + never, "is below the range of doubles"},
       {"refine --algo ls --field background:" + base + "_bg.json:" + base + "_bg.json -o " + never, "is not a metric file"},
       {"refine --algo ls --domain " + base + "_seg.json -o " + never, "interior_segments[0]: repeats vertex 0"}};
   for (const auto& [args, why] : cases) {

@@ -49,8 +49,9 @@ TEST(RefinementLoop, NamesWhatEndedTheRun) {
 
 // Steps of 20 ms against a budget of 0.1 s: the clock is read after every step once steps are seen
 // to be slow, so the run stops one or two steps after the budget is spent (about 5 or 6 steps; a
-// slower machine only makes fewer). Reading it every 64 steps, as the loop once did, ran 64 steps:
-// 1.3 s, and a 5 s budget of LS refinement running into a corner took 14 s.
+// loaded machine, whose sleeps overshoot, only makes fewer). Reading it every 64 steps, as the
+// loop once did, ran 64 steps: 1.3 s, and a 5 s budget of LS refinement running into a corner took
+// 14 s.
 TEST(RefinementLoop, SlowStepsOverrunTheTimeBudgetByAboutOneStep) {
   Counting r{1000, 0, {}, {}};
   r.pause = std::chrono::milliseconds(20);
@@ -58,5 +59,5 @@ TEST(RefinementLoop, SlowStepsOverrunTheTimeBudgetByAboutOneStep) {
   EXPECT_TRUE(s.out_of_time) << s.reason;
   EXPECT_FALSE(s.finished);
   EXPECT_LE(r.steps, 8u);
-  EXPECT_GE(r.steps, 5u);
+  EXPECT_GE(r.steps, 1u);
 }

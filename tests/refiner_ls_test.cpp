@@ -437,6 +437,22 @@ TEST(LsRefiner, SitesTyingAlongALineDoNotStopTheRun) {
   EXPECT_TRUE(oracle::compare_with_dual(d, r.mesh.triangles, 3).is_dual());
 }
 
+// The same field at its defaults (hx = 0.1, h0 = 10⁻³) on the L, as a new user ran it: the sites on
+// the right edge x = 1 tie along the line y = ½ + h0/(2(hx − h0)) ≈ 0.505, which crosses the L's
+// notch, outside Ω, where rule 8 can put no site. The subdivision halved leaves along it until it
+// reached its bound on boxes after 32 sites. It now leaves the leaves outside closed Ω alone
+// (VertexSubdivision's omega), and the run finishes (292 vertices) and is the exact diagram's dual.
+TEST(LsRefiner, TiesOutsideOmegaDoNotStopTheRun) {
+  refiners::ls::LsParameters p;
+  p.theta_bound = 20, p.size = 1;
+  const refiners::common::Domain domain({{0, 0}, {1, 0}, {1, 0.5}, {0.5, 0.5}, {0.5, 1}, {0, 1}});
+  const auto r = refiners::ls::refine_ls(domain, fields::make_field("linear", {}), p);
+  ASSERT_TRUE(r.consistent) << r.stop_reason;
+  const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
+  EXPECT_TRUE(d.theorem7.preconditions_hold);
+  EXPECT_TRUE(oracle::compare_with_dual(d, r.mesh.triangles, 3).is_dual());
+}
+
 // A field that gives the sites different metrics takes the true-diagram path (ls_varying.hpp). The
 // linear field depends on y alone and this trapezoid is symmetric about x = 1/2, so its corners'
 // diagram has a vertex of degree 4 among two metrics: the oracle (the independent engine) finds one

@@ -71,7 +71,16 @@ int run_refine(const RefineOptions& o) {
       throw UsageError("--" + name + " is not a parameter of --algo " + o.algo);
   if (o.seed_option->count() > 0 && !entry->seeded) throw UsageError("--seed is not a parameter of --algo " + o.algo + " (it draws no random points)");
   const refiners::common::Budget budget = budget_of(o);
-  check_outputs({o.output, o.svg});  // before the run, which may be long
+  // Before the run, which may be long: the output's format and every path it is written to.
+  const io::MeshFormat* format = nullptr;
+  if (!o.output.empty()) {
+    try {
+      format = &io::mesh_format_to_write(o.output, o.output_format);
+    } catch (const io::InputError& e) {
+      throw UsageError(e.what());
+    }
+  }
+  check_outputs({o.output, o.svg});
   io::DomainFile input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, {}};
   if (o.domain != "square") {
     try {
@@ -96,15 +105,12 @@ int run_refine(const RefineOptions& o) {
   const geometry::Mesh<double>& m = run.result.mesh;
   std::vector<OutputFile> files;
   std::string written;
-  bool readable = false;  // whether anisocert reads the format written back
-  if (!o.output.empty()) {
+  if (format) {
     io::MeshFile file;
     file.mesh = geometry::exact(m);
     file.mesh.edges = file.mesh.segments;  // the boundary subsegments, as every mesher's file declares them
     try {
-      const io::MeshFormat& format = io::mesh_format_to_write(o.output, o.output_format);
-      readable = format.read != nullptr;
-      for (io::FileText& f : format.write(file, o.output)) {
+      for (io::FileText& f : format->write(file, o.output)) {
         written += (written.empty() ? "" : ", ") + f.path;
         files.push_back({std::move(f.path), std::move(f.content)});
       }
@@ -116,10 +122,10 @@ int run_refine(const RefineOptions& o) {
     files.push_back({o.svg, io::mesh_svg(m, entry->name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices")});
   write_files_atomically(files);
   std::string text = "refine: domain " + o.domain + ", field " + o.field + "\n" + report_text(run);
-  if (!o.output.empty())
+  if (format)
     text += "  mesh: " + written +
             (!run.result.consistent ? " (the run stopped early: the mesh as it stood, not necessarily a triangulation of the domain)\n"
-             : readable             ? " (check it with " + entry->check + ")\n"
+             : format->read         ? " (check it with " + entry->check + ")\n"
                                     : " (a file anisocert does not read back: write .json, .mesh or .msh to check it with " + entry->check + ")\n");
   emit(text);
   return run.result.consistent ? 0 : 1;

@@ -117,7 +117,7 @@ const MetricFormat& metric_format_of(const std::string& path, const std::string&
 }
 
 const MeshFormat& mesh_format_to_write(const std::string& path, const std::string& forced) {
-  if (!forced.empty()) return mesh_format_of(path, forced);
+  if (!forced.empty()) return format_of(mesh_formats(), path, forced, "mesh", "--output-format");
   const std::string ext = extension_of(path);
   for (const MeshFormat& f : mesh_formats())
     if (std::find(f.extensions.begin(), f.extensions.end(), ext) != f.extensions.end()) return f;

@@ -33,8 +33,10 @@ class Stopwatch {
 
 // The clock is read at most every this many steps (reading it costs more than a step of a small
 // mesh), and more often when steps are slow: the next reading is due after as many steps as took
-// about clock_reading_seconds before, so that the time budget is overrun by about one step. (Every
-// 64 steps, a run of 50 ms steps, refinement running into a corner, overran a 5 s budget by 9 s.)
+// about clock_reading_seconds before, so that the time budget is overrun by about one step while
+// steps take about as long as the last ones (when fast steps turn slow at once, by up to 64 of
+// them, once). Every 64 steps, a run of 50 ms steps, refinement running into a corner, overran a
+// 5 s budget by 9 s.
 inline constexpr std::size_t steps_per_clock_reading = 64;
 inline constexpr double clock_reading_seconds = 0.01;
 

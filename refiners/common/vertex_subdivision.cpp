@@ -44,7 +44,7 @@ std::optional<bool> in_closed_box(const Trio& t, const VertexBox& v, const Box& 
 
 }  // namespace
 
-VertexSubdivision::VertexSubdivision(const Box& R, double min_width) : min_width_(min_width) {
+VertexSubdivision::VertexSubdivision(const Box& R, double min_width, const Domain* omega) : min_width_(min_width), omega_(omega) {
   if (!(R.x0 < R.x1 && R.y0 < R.y1 && min_width > 0)) throw std::invalid_argument("VertexSubdivision: an empty box or min_width <= 0");
   nodes_.push_back({R, {}, INFINITY, -1, {}, false});
 }
@@ -159,6 +159,7 @@ void VertexSubdivision::settle(int n, bool first_small) {
   const std::vector<int> cands = nodes_[static_cast<std::size_t>(n)].candidates;
   if (cands.size() < 3) return;
   const Box b = nodes_[static_cast<std::size_t>(n)].box;
+  if (omega_ && omega_->contains(b) == std::optional<bool>(false)) return;  // outside closed Ω
   // Small: no wider than 2⁻⁴ of the least distance between two candidates. Three candidates
   // whose search is undecided tie along a curve (VertexSearch::singular), or nearly: their
   // equidistant points are double points, or so ill-conditioned that doubles cannot isolate them

@@ -42,7 +42,13 @@ class VertexSubdivision {
   // bound on memory and time, which a curve of ties, such as two sites at one point with different
   // metrics, would otherwise exhaust; the shock and radial runs of docs/refiners.md end with about
   // 40 nodes per site, and none of their insertions made more than 412).
-  VertexSubdivision(const Box& R, double min_width);
+  //
+  // With omega, a leaf whose closed box misses closed Ω (Domain::contains, exactly) is left as it
+  // is: neither resolved nor split, holding no vertex and not unresolved. The vertices kept are then
+  // D's vertices in Ω and near it, which is what D|Ω needs, and ties outside Ω cost nothing: in an
+  // L with the linear field, the sites on its right edge tie along a line through the notch, where
+  // no site can break the tie, and the tree reached its bound on boxes after 32 sites.
+  VertexSubdivision(const Box& R, double min_width, const Domain* omega = nullptr);
 
   // Adds site s as the next id (0, 1, 2, …).
   void insert(const MetricSite& s);
@@ -104,6 +110,7 @@ class VertexSubdivision {
   static constexpr std::size_t max_nodes_per_insertion = std::size_t(1) << 16;
 
   double min_width_;
+  const Domain* omega_;
   std::vector<MetricSite> sites_;
   std::vector<Node> nodes_;
   std::vector<Vertex> vertices_;

@@ -49,8 +49,9 @@ class LsVaryingRefinement {
         p_(p),
         sites_(domain, p.normalized_metric ? fields::normalized(field) : field),
         size_field_(field),
-        diagram_(domain.bounding_box(), std::ldexp(std::max(domain.bounding_box().x1 - domain.bounding_box().x0,
-                                                            domain.bounding_box().y1 - domain.bounding_box().y0), -40)),
+        diagram_(domain.bounding_box(),
+                 std::ldexp(std::max(domain.bounding_box().x1 - domain.bounding_box().x0, domain.bounding_box().y1 - domain.bounding_box().y0), -40),
+                 &domain_),
         s2_(sin2_above(p.theta_bound)) {
     const auto& vertices = domain.vertices();  // X's: Ω's corners, then its points
     std::vector<Sym2<double>> metrics;
@@ -126,7 +127,7 @@ class LsVaryingRefinement {
     }
     for (const JudgedTie& judged : exact_ties_) {
       for (const auto& t : judged.triangles) r.mesh.triangles.push_back(t);
-      r.violators_left += judged.rule != Rule::none;
+      if (r.left_counted) r.violators_left += judged.rule != Rule::none;
     }
     if (r.left_counted)
       for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
@@ -405,7 +406,7 @@ class LsVaryingRefinement {
   }
 
   // Rule 6, when nothing else applies: a site whose cell holds no Voronoi vertex (of degree 3, or an
-  // exact tie).
+  // exact tie) that the diagram keeps, i.e. in or near Ω.
   bool island() {
     std::vector<char> has(sites_.size(), 0);
     for (const auto& v : diagram_.vertices())
