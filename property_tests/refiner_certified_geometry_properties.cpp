@@ -222,6 +222,16 @@ TEST(RefinerVoronoiVertex, SingularTrioWithNoEquidistantPointIsExcluded) {
   EXPECT_TRUE(search.singular);
   EXPECT_TRUE(search.complete);
   EXPECT_TRUE(search.vertices.empty());
+  // The third site at (0, c), c = 0.87867, with diag(1, 4): the lines of sites 0 and 2 are
+  // y = 2c/3 and y = 2c, and 2c/3 = 0.58578 is 6·10⁻⁶ from 2 − √2. Halving each box across its
+  // wider side needed more than the 256 boxes (a rare failure of BoxesHoldExactlyTheEquidistantPoints
+  // in a ctest run); across the side along which F changes, 37.
+  const Trio close{{{{0, 0}, {1, 0, 1}}, {{0, 1}, {1, 0, 2}}, {{0, 0.87867}, {1, 0, 4}}}};
+  EXPECT_TRUE(anisocert::oracle::intersect(bisector(close[0], close[1]), bisector(close[0], close[2])).points.empty());
+  const VertexSearch near = vertices_in(close, {FilterInterval(-1, 1), FilterInterval(0, 4)});
+  EXPECT_TRUE(near.singular);
+  EXPECT_TRUE(near.complete) << near.boxes;
+  EXPECT_TRUE(near.vertices.empty());
 }
 
 RC_GTEST_PROP(RefinerVoronoiVertex, SignsAtVerticesAreTheExactSigns, ()) {
