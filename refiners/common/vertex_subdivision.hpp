@@ -14,7 +14,8 @@
 // tell apart, lie there (down to `min_width`), or when three sites tie along a curve through it, or
 // nearly (their search is undecided in a small leaf; see settle).
 //
-// Orphans and islands (LS Definition 1) need no special case: D is found wherever it is. Adding a
+// Orphans and islands (LS Definition 1) need no special case: D is found wherever it is in R (with
+// omega, in Ω and the leaves that meet it: see the constructor). Adding a
 // site touches only the nodes where it is a candidate, which are near its cell. This is what the
 // refiners that keep the true diagram use (LS §9 allows it: "The algorithm works equally well
 // whether D is a true anisotropic Voronoi diagram or a loose anisotropic Voronoi diagram"; BWY
@@ -54,7 +55,8 @@ class VertexSubdivision {
   void insert(const MetricSite& s);
 
   const std::vector<MetricSite>& sites() const { return sites_; }
-  // Every vertex ever found; those with holders > 0 are D's vertices in R (and perhaps a little
+  // Every vertex ever found; those with holders > 0 are D's vertices in R, or with omega in the
+  // leaves that meet Ω (and perhaps a little
   // beyond: a leaf's search may certify a point just outside its box).
   const std::vector<Vertex>& vertices() const { return vertices_; }
   // The vertices found by the last insertion, ordered by their sites, then by where they are.
@@ -62,7 +64,7 @@ class VertexSubdivision {
   // The sites that can be nearest somewhere in b: the candidates of every leaf that meets b.
   std::vector<int> candidates_near(const Box& b) const;
   // The leaves where D could not be resolved (see above), with their candidates; empty when every
-  // vertex in R is known.
+  // vertex in R (with omega, in the leaves that meet Ω) is known.
   struct Leaf {
     Box box;
     std::vector<int> candidates;

@@ -123,10 +123,12 @@ std::optional<std::array<Box2<FI>, 2>> halved(const Box2<FI>& Y, bool along_x) {
 
 // Whether F has no zero in X, shown by the centred form on X or on the parts of X halved up to
 // `budget` boxes (counted in `boxes`). Each part is halved across the side along which F changes
-// more (|∂F/∂x| times the width against |∂F/∂y| times the height, at its midpoint): for three sites
-// on a line x = c with metrics diag(a, dᵢ), F depends on y alone, and halving across x as well
-// would spend the budget on splits that change nothing (lines 6·10⁻⁶ apart in a box 4 high needed
-// more than 256 boxes that way).
+// more (|∂F/∂x| times the width against |∂F/∂y| times the height, ½J enclosed over the part; the
+// wider side when they tie): for three sites on a line x = c with metrics diag(a, dᵢ), F depends
+// on y alone, and halving across x as well would spend the budget on splits that change nothing
+// (lines 6·10⁻⁶ apart in a box 4 high needed more than 256 boxes that way). Over the part, not at
+// its midpoint: both ∂F/∂y can vanish there (sites at y = 0, 1, 1.5, midpoint y = 2), and x would
+// be chosen every time.
 bool excluded(const Equidistance<FI>& s, const Box2<FI>& X, int budget, int& boxes) {
   std::vector<Box2<FI>> pending{X};
   for (; !pending.empty(); ++boxes) {
@@ -135,10 +137,12 @@ bool excluded(const Equidistance<FI>& s, const Box2<FI>& X, int budget, int& box
     pending.pop_back();
     const auto F = s.on(Y);
     if (!F[0].has_zero() || !F[1].has_zero()) continue;
-    const auto J = s.half_jacobian(Y.x.midpoint(), Y.y.midpoint());
+    const FI mx = Y.x.midpoint(), my = Y.y.midpoint();
+    const auto J = s.half_jacobian(s.half_jacobian(mx, my), Y.x - mx, Y.y - my);
     const auto magnitude = [](const FI& v) { return std::max(std::abs(v.lo), std::abs(v.hi)); };
     const double across_x = (magnitude(J[0]) + magnitude(J[2])) * width(Y.x), across_y = (magnitude(J[1]) + magnitude(J[3])) * width(Y.y);
-    const auto halves = halved(Y, !(across_x < across_y));
+    const bool tie = !(across_x < across_y) && !(across_x > across_y);  // equal, or a NaN
+    const auto halves = halved(Y, tie ? width(Y.x) >= width(Y.y) : across_x > across_y);
     if (!halves) return false;
     pending.insert(pending.end(), halves->begin(), halves->end());
   }
