@@ -60,6 +60,37 @@ std::map<std::array<int, 3>, int> triples(const VertexSubdivision& s, const std:
 
 constexpr refiners::common::Box unit{0, 1, 0, 1};
 
+// The sites as an exact mesh on the domain with these corners, for the oracle.
+geometry::Mesh<Rational> exact_mesh(const std::vector<MetricSite>& sites, const std::vector<predicates::Point2<double>>& corners) {
+  geometry::Mesh<Rational> m;
+  for (const auto& site : sites) {
+    m.sites.push_back({Rational(site.p.x), Rational(site.p.y)});
+    m.metrics.push_back({Rational(site.M.m11), Rational(site.M.m12), Rational(site.M.m22)});
+  }
+  for (const auto& c : corners) m.domain.push_back({Rational(c.x), Rational(c.y)});
+  return m;
+}
+
+// The oracle's Voronoi vertices of D|Ω as increasing site triples with their counts, asserting
+// each of degree 3 (more would have left a leaf unresolved) and held by a live vertex of s with
+// its triple: the oracle's point, rounded to its grid, is within a grid step of the box.
+std::map<std::array<int, 3>, int> exact_vertices_held(const oracle::Diagram& d, const VertexSubdivision& s) {
+  std::map<std::array<int, 3>, int> exact;
+  for (const auto& n : d.nodes) {
+    if (n.kind != oracle::Node::Kind::voronoi) continue;
+    RC_ASSERT(n.sites.size() == 3u);
+    ++exact[{n.sites[0], n.sites[1], n.sites[2]}];
+    const auto [x, y] = d.original_xy(n.at);
+    bool held = false;
+    for (const auto& v : s.vertices())
+      if (v.holders > 0 && v.sites == std::array<int, 3>{n.sites[0], n.sites[1], n.sites[2]})
+        held = held || (x >= v.box.box.x.lo - d.grid && x <= v.box.box.x.hi + d.grid && y >= v.box.box.y.lo - d.grid &&
+                        y <= v.box.box.y.hi + d.grid);
+    RC_ASSERT(held);
+  }
+  return exact;
+}
+
 }  // namespace
 
 RC_GTEST_PROP(RefinerVertexSubdivision, VerticesAreTheExactDiagramsOrphansIncluded, ()) {
@@ -69,31 +100,11 @@ RC_GTEST_PROP(RefinerVertexSubdivision, VerticesAreTheExactDiagramsOrphansInclud
   for (const auto& site : sites) s.insert(site);
   RC_PRE(s.unresolved().empty());
 
-  geometry::Mesh<Rational> m;
-  for (const auto& site : sites) {
-    m.sites.push_back({Rational(site.p.x), Rational(site.p.y)});
-    m.metrics.push_back({Rational(site.M.m11), Rational(site.M.m12), Rational(site.M.m22)});
-  }
-  m.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  const auto exact_diagram = gen::oracle_diagram(m);
+  const auto exact_diagram = gen::oracle_diagram(exact_mesh(sites, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}));
   if (!exact_diagram) return;
   const oracle::Diagram& d = *exact_diagram;
   RC_TAG(std::any_of(d.faces.begin(), d.faces.end(), [](const auto& face) { return face.orphan; }) ? "D|Ω has orphans" : "no orphans");
-
-  std::map<std::array<int, 3>, int> exact;
-  for (const auto& n : d.nodes) {
-    if (n.kind != oracle::Node::Kind::voronoi) continue;
-    RC_ASSERT(n.sites.size() == 3u);  // more would have left a leaf unresolved
-    ++exact[{n.sites[0], n.sites[1], n.sites[2]}];
-    // Its box holds it: the oracle's point, rounded to its grid, is within a grid step of the box.
-    const auto [x, y] = d.original_xy(n.at);
-    bool held = false;
-    for (const auto& v : s.vertices())
-      if (v.holders > 0 && v.sites == std::array<int, 3>{n.sites[0], n.sites[1], n.sites[2]})
-        held = held || (x >= v.box.box.x.lo - d.grid && x <= v.box.box.x.hi + d.grid && y >= v.box.box.y.lo - d.grid &&
-                        y <= v.box.box.y.hi + d.grid);
-    RC_ASSERT(held);
-  }
+  const std::map<std::array<int, 3>, int> exact = exact_vertices_held(d, s);
   std::size_t count = 0;
   for (const auto& [t, k] : exact) count += static_cast<std::size_t>(k);
   RC_TAG(count == 0 ? "no vertex in Ω" : count < 5 ? "1–4 vertices" : "5 or more vertices");
@@ -111,28 +122,9 @@ RC_GTEST_PROP(RefinerVertexSubdivision, WithOmegaTheVerticesInOmegaAreTheExactDi
   VertexSubdivision s(unit, 0x1p-40, &L);
   for (const auto& site : sites) s.insert(site);
   RC_PRE(s.unresolved().empty());
-  geometry::Mesh<Rational> m;
-  for (const auto& site : sites) {
-    m.sites.push_back({Rational(site.p.x), Rational(site.p.y)});
-    m.metrics.push_back({Rational(site.M.m11), Rational(site.M.m12), Rational(site.M.m22)});
-  }
-  for (const auto& c : L.corners()) m.domain.push_back({Rational(c.x), Rational(c.y)});
-  const auto exact_diagram = gen::oracle_diagram(m);
+  const auto exact_diagram = gen::oracle_diagram(exact_mesh(sites, L.corners()));
   if (!exact_diagram) return;
-  const oracle::Diagram& d = *exact_diagram;
-  std::map<std::array<int, 3>, int> exact;
-  for (const auto& n : d.nodes) {
-    if (n.kind != oracle::Node::Kind::voronoi) continue;
-    RC_ASSERT(n.sites.size() == 3u);
-    ++exact[{n.sites[0], n.sites[1], n.sites[2]}];
-    const auto [x, y] = d.original_xy(n.at);
-    bool held = false;
-    for (const auto& v : s.vertices())
-      if (v.holders > 0 && v.sites == std::array<int, 3>{n.sites[0], n.sites[1], n.sites[2]})
-        held = held || (x >= v.box.box.x.lo - d.grid && x <= v.box.box.x.hi + d.grid && y >= v.box.box.y.lo - d.grid &&
-                        y <= v.box.box.y.hi + d.grid);
-    RC_ASSERT(held);
-  }
+  const std::map<std::array<int, 3>, int> exact = exact_vertices_held(*exact_diagram, s);
   std::map<std::array<int, 3>, int> inside;
   std::size_t near = 0;
   for (const auto& v : s.vertices()) {

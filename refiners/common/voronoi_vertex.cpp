@@ -127,8 +127,8 @@ std::optional<std::array<Box2<FI>, 2>> halved(const Box2<FI>& Y, bool along_x) {
 // wider side when they tie): for three sites on a line x = c with metrics diag(a, dᵢ), F depends
 // on y alone, and halving across x as well would spend the budget on splits that change nothing
 // (lines 6·10⁻⁶ apart in a box 4 high needed more than 256 boxes that way). Over the part, not at
-// its midpoint: both ∂F/∂y can vanish there (sites at y = 0, 1, 1.5, midpoint y = 2), and x would
-// be chosen every time.
+// its midpoint, where both ∂F/∂y can vanish (sites at y = 0, 1, 1.5, midpoint y = 2): the choice
+// then rests on the rounding of F's derivatives at one point.
 bool excluded(const Equidistance<FI>& s, const Box2<FI>& X, int budget, int& boxes) {
   std::vector<Box2<FI>> pending{X};
   for (; !pending.empty(); ++boxes) {
