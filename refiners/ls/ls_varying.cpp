@@ -36,10 +36,31 @@ double squared_distance(const MetricSite& s, const Point2<double>& p) {
   return common::distance2(common::lift<double>(s, [](double x) { return x; }), p.x, p.y);
 }
 
-// A lower bound on λ_min and an upper bound on λ_max of M (within a factor 2 of the doubles').
-std::pair<double, double> eigenvalue_bounds(const Sym2<double>& M) {
-  const double m = (M.m11 + M.m22) / 2, r = std::hypot((M.m11 - M.m22) / 2, M.m12);
-  return {(m - r) / 2, (m + r) * 2};
+// Lower bounds on d_Q(z)² over the points z at least gx away from Q in x and gy in y:
+// λ_min(M_Q)(gx² + gy²), (det M_Q / m22) gx² and (det M_Q / m11) gy² (d_Q² least over the other
+// coordinate), the three factors bounded below in intervals. The last two are what make the
+// filter of `reaches` work for the linear field's sites, a hundred times narrower in y than in x:
+// λ_min alone is the x factor.
+struct ReachBounds {
+  double least, across_x, across_y;
+
+  explicit ReachBounds(const Sym2<double>& M) {
+    using FI = FilterInterval;
+    const FI m11(M.m11), m12(M.m12), m22(M.m22);
+    const FI m = (m11 + m22) * 0.5, r = sqrt(sqr((m11 - m22) * 0.5) + sqr(m12));
+    least = std::max(0.0, (m - r).lo);
+    across_x = std::max(0.0, (m11 - sqr(m12) / m22).lo);
+    across_y = std::max(0.0, (m22 - sqr(m12) / m11).lo);
+  }
+  double below(double gx, double gy) const { return std::max({least * (gx * gx + gy * gy), across_x * gx * gx, across_y * gy * gy}); }
+};
+
+// An upper bound on |b − a|²_M: the quadratic form in doubles plus a bound on its rounding error
+// (under 2⁻⁵⁰ of the sum of its terms' magnitudes).
+double squared_length_above(const Sym2<double>& M, const Point2<double>& a, const Point2<double>& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double xx = M.m11 * dx * dx, xy = 2 * M.m12 * dx * dy, yy = M.m22 * dy * dy;
+  return xx + xy + yy + std::ldexp(xx + std::abs(xy) + yy, -50);
 }
 
 class LsVaryingRefinement {
@@ -309,31 +330,30 @@ class LsVaryingRefinement {
   // A subsegment whose cell Q would meet, were Q inserted (no subsegment is encroached now, so only
   // its endpoints are nearest along it).
   std::optional<int> encroached_by(const MetricSite& Q) const {
-    const double least = eigenvalue_bounds(Q.M).first;
+    const ReachBounds near(Q.M);
     for (std::size_t s = 0; s < subsegments_.size(); ++s)
-      if (reaches(static_cast<int>(s), Q, least)) return static_cast<int>(s);
+      if (reaches(static_cast<int>(s), Q, near)) return static_cast<int>(s);
     return std::nullopt;
   }
   // Queues the subsegments that site k, Q, reaches (their cells among their ends and Q meet).
   void queue_reached(int k, const MetricSite& Q) {
-    const double least = eigenvalue_bounds(Q.M).first;
+    const ReachBounds near(Q.M);
     for (std::size_t s = 0; s < subsegments_.size(); ++s) {
       const auto [a, b] = subsegments_.ends(static_cast<int>(s));
-      if (a != k && b != k && reaches(static_cast<int>(s), Q, least)) subsegments_.queue(static_cast<int>(s));
+      if (a != k && b != k && reaches(static_cast<int>(s), Q, near)) subsegments_.queue(static_cast<int>(s));
     }
   }
   // Q's closed cell among Q and the ends of subsegment s meets s (segment_quadratics.hpp), after a
-  // filter in doubles: only when λ_min(M_Q) dist(Q, s)² ≤ max λ_max(M_a, M_b) |s|² can Q be as near
-  // as a or b somewhere on s (the bounds are a factor 2 wide, more than rounding can move them;
-  // least is the bound below λ_min(M_Q)).
-  bool reaches(int s, const MetricSite& Q, double least) const {
+  // filter in doubles: Q is as near as a and b at a point z of s only if d_Q(z)² ≤ min{d_a(z)²,
+  // d_b(z)²} ≤ min{|s|²_a, |s|²_b}, and d_Q(z)² is at least `near`'s bound over the box of s
+  // (the filter leaves a factor 2 to the rounding of the bound below).
+  bool reaches(int s, const MetricSite& Q, const ReachBounds& near) const {
     const auto [ia, ib] = subsegments_.ends(s);
     const MetricSite a = site(ia), b = site(ib);
     const common::Box box = segment_box(s);
     const double gx = std::max({box.x0 - Q.p.x, Q.p.x - box.x1, 0.0}), gy = std::max({box.y0 - Q.p.y, Q.p.y - box.y1, 0.0});
-    const double length2 = (b.p.x - a.p.x) * (b.p.x - a.p.x) + (b.p.y - a.p.y) * (b.p.y - a.p.y);
-    const double largest = std::max(largest_[static_cast<std::size_t>(ia)], largest_[static_cast<std::size_t>(ib)]);
-    if (least * (gx * gx + gy * gy) > 2 * largest * length2) return false;
+    const double length2 = std::min(squared_length_above(a.M, a.p, b.p), squared_length_above(b.M, a.p, b.p));
+    if (near.below(gx, gy) > 2 * length2) return false;
     return ls::reaches(a, b, Q, p_.filters);
   }
 
@@ -444,7 +464,6 @@ class LsVaryingRefinement {
   void add_site(const Point2<double>& q, const Sym2<double>& M) {
     sites_.add(q, M);
     size_metrics_.push_back(p_.normalized_metric ? size_field_.at(q.x, q.y) : M);
-    largest_.push_back(eigenvalue_bounds(M).second);
     sites_.grow_grid();
     diagram_.insert({q, M});
     ties_.clear();
@@ -526,7 +545,6 @@ class LsVaryingRefinement {
   common::Sites sites_;                     // with the diagram's metrics (M′ with normalized_metric)
   fields::MetricField size_field_;           // the field, for the size rule
   std::vector<Sym2<double>> size_metrics_;  // the field's metric at each site
-  std::vector<double> largest_;             // a bound above each site's greatest eigenvalue
   common::VertexSubdivision diagram_;
   double s2_;
   Theorem11Conditions t11_;
