@@ -54,6 +54,12 @@ using namespace anisocert;
 
 namespace {
 
+// θ_bound's band of five degrees, for the tags ("theta_bound 15° to 20°").
+std::string theta_bucket(double theta) {
+  const int from = static_cast<int>(theta / 5) * 5;
+  return "theta_bound " + std::to_string(from) + "° to " + std::to_string(from + 5) + "°";
+}
+
 struct Run {
   refiners::ls::LsParameters p;
   refiners::ls::LsResult r;
@@ -77,7 +83,7 @@ Run random_run() {
   const double angle = kind == 4 ? 0 : *rc::gen::inRange(0, 180) * M_PI / 180;
   const double c = std::cos(angle), s = std::sin(angle);
   run.M = {l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c};
-  run.p.theta_bound = *rc::gen::elementOf(std::vector<double>{5, 10, 15, 20, 20.5, 25, 30});
+  run.p.theta_bound = *rc::gen::inRange(50, 301) / 10.0;  // 5° to 30°, in tenths: Theorem 11's range and beyond
   run.p.size = *rc::gen::elementOf(std::vector<double>{0, 0, 0.5, 1, 2});
   run.p.max_vertices = 400, run.p.max_seconds = 1e9;
   run.X.emplace(kind == 4 ? refiners::common::Domain(corners) : gen::domain_with_interior(corners));
@@ -207,7 +213,7 @@ struct Theorem11Run {
 
 Theorem11Run theorem11_run() {
   Theorem11Run run;
-  run.p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20, 20.5});
+  run.p.theta_bound = *rc::gen::inRange(10, 206) / 10.0;  // 1° to 20.5°, in tenths
   run.p.size = 0;
   run.p.max_vertices = 20000, run.p.max_seconds = 1e9;
   const int kind = *rc::gen::inRange(0, 3);
@@ -230,7 +236,7 @@ Theorem11Run theorem11_run() {
   RC_PRE(delta2.has_value());  // a triangle: every pair intertwined, no bound
   run.delta2 = *delta2;
   RC_TAG(kind == 0 ? "comb" : kind == 2 ? "non-convex" : "convex", run.field.kind,
-         "theta_bound " + std::to_string(static_cast<int>(run.p.theta_bound)));
+         theta_bucket(run.p.theta_bound));
   run.r = refiners::ls::refine_ls(refiners::common::Domain(corners), run.field.field, run.p);
   for (const auto& M : run.r.mesh.metrics)  // the test's field, as the refiner evaluated it
     RC_ASSERT(std::find(run.field.metrics.begin(), run.field.metrics.end(), M) != run.field.metrics.end());
@@ -271,6 +277,67 @@ void assert_theorem11(const refiners::ls::LsResult& r, double theta_bound, const
 }
 
 }  // namespace
+
+// LS.T11's corner report (refiners/ls/theorem11_conditions, behind the report's "holds at every
+// corner" or "fails at corners …" and the stop messages' corner notes) against an independent
+// computation in long double: γ(θ_bound) by bisection on γ⁸ + 2γ⁴√(γ²+1) sin θ − γ⁴ − 1 (LS
+// Theorem 11), the required separation 2 arcsin(γ²/2), and the angle between every two segments
+// that meet at a vertex of X, in the metric there, by its arccosine. A vertex with an angle within
+// 10⁻⁹° of the separation is not judged here. Random polygons, convex or not, with interior points
+// and segments, a random metric at every vertex, θ_bound from 1° to 20.6° in tenths.
+RC_GTEST_PROP(LS_T11, CornerReportAgreesWithAnglesInLongDouble, ()) {
+  using L = long double;
+  const auto corners = gen::random_domain(*rc::gen::arbitrary<bool>(), *rc::gen::arbitrary<bool>());
+  const refiners::common::Domain domain = gen::domain_with_interior(corners);
+  const double theta = *rc::gen::inRange(10, 207) / 10.0;
+  const auto& X = domain.vertices();
+  std::vector<predicates::Sym2<double>> metrics;
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    const double l1 = *rc::gen::inRange(1, 101), l2 = *rc::gen::inRange(1, 101), a = *rc::gen::inRange(0, 180) * M_PI / 180;
+    const double c = std::cos(a), s = std::sin(a);
+    metrics.push_back({l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c});
+  }
+  const auto t11 = refiners::ls::theorem11_conditions(domain, metrics, theta);
+  RC_ASSERT(t11.theta_admissible);
+  const L sin_theta = std::sin(static_cast<L>(theta) * std::acos(L(-1)) / 180);
+  L lo = 1, hi = 2;  // the polynomial is negative at 1 (sin θ < 1/(2√2)) and positive at 2
+  for (int i = 0; i < 200; ++i) {
+    const L g = (lo + hi) / 2, g4 = g * g * g * g;
+    (g4 * g4 + 2 * g4 * std::sqrt(g * g + 1) * sin_theta - g4 - 1 < 0 ? lo : hi) = g;
+  }
+  RC_ASSERT(lo >= static_cast<L>(t11.gamma_lo) - 1e-15L && lo <= static_cast<L>(t11.gamma_hi) + 1e-15L);
+  const L degrees = 180 / std::acos(L(-1)), separation = 2 * std::asin(lo * lo / 2) * degrees;
+  RC_ASSERT(separation >= static_cast<L>(t11.separation_lo) - 1e-9L && separation <= static_cast<L>(t11.separation_hi) + 1e-9L);
+  std::vector<std::vector<std::size_t>> ends(X.size());  // the far ends of the segments at each vertex
+  for (std::size_t e = 0; e < domain.segment_count(); ++e) {
+    const auto [a, b] = domain.segment_ends(e);
+    ends[static_cast<std::size_t>(a)].push_back(static_cast<std::size_t>(b));
+    ends[static_cast<std::size_t>(b)].push_back(static_cast<std::size_t>(a));
+  }
+  const auto failing = [&](std::size_t k) { return std::find(t11.corners_failing.begin(), t11.corners_failing.end(), static_cast<int>(k)) != t11.corners_failing.end(); };
+  const auto undecided = [&](std::size_t k) { return std::find(t11.corners_undecided.begin(), t11.corners_undecided.end(), static_cast<int>(k)) != t11.corners_undecided.end(); };
+  int judged_failing = 0;
+  for (std::size_t k = 0; k < X.size(); ++k) {
+    const auto& M = metrics[k];
+    const auto inner = [&](std::size_t u, std::size_t w) {
+      const L ux = X[u].x - X[k].x, uy = X[u].y - X[k].y, wx = X[w].x - X[k].x, wy = X[w].y - X[k].y;
+      return ux * (M.m11 * wx + M.m12 * wy) + uy * (M.m12 * wx + M.m22 * wy);
+    };
+    L least = 180;
+    for (std::size_t i = 0; i < ends[k].size(); ++i)
+      for (std::size_t j = i + 1; j < ends[k].size(); ++j) {
+        const std::size_t u = ends[k][i], w = ends[k][j];
+        least = std::min(least, std::acos(inner(u, w) / std::sqrt(inner(u, u) * inner(w, w))) * degrees);
+      }
+    if (least < separation - 1e-9L) {
+      RC_ASSERT(failing(k));
+      ++judged_failing;
+    } else if (least > separation + 1e-9L) {
+      RC_ASSERT(!failing(k) && !undecided(k));
+    }
+  }
+  RC_TAG(judged_failing == 0 ? "separation holds at every vertex" : "separation fails somewhere");
+}
 
 RC_GTEST_PROP(LS_T11, RunsEndAndKeepEveryTwoSitesMuApart, ()) {
   const Theorem11Run run = theorem11_run();
@@ -328,7 +395,7 @@ LinearField linear_field() {
 // site's neighbour.
 RC_GTEST_PROP(LS_T11, LinearFieldRunsKeepEveryTwoSitesMuApart, ()) {
   refiners::ls::LsParameters p;
-  p.theta_bound = *rc::gen::elementOf(std::vector<double>{1, 5, 10, 15, 20});
+  p.theta_bound = *rc::gen::inRange(10, 201) / 10.0;  // 1° to 20°, in tenths
   p.size = 0;
   p.max_vertices = 20000, p.max_seconds = 1e9;
   const LinearField f = linear_field();
@@ -360,7 +427,7 @@ RC_GTEST_PROP(LS_T11, LinearFieldRunsKeepEveryTwoSitesMuApart, ()) {
   const Rational lfs2 = lambda / 4 * std::min(delta_e2, corner_least);
   const Rational g2 = g_hi * g_hi, g3 = g2 * g_hi, g5 = g3 * g2;
   const Rational mu2 = std::min(lfs2 / g2, beta * beta / ((g5 + g3) * (g5 + g3) * (g2 + 1)));
-  RC_TAG(reflex ? "non-convex" : "convex", "theta_bound " + std::to_string(static_cast<int>(p.theta_bound)),
+  RC_TAG(reflex ? "non-convex" : "convex", theta_bucket(p.theta_bound),
          lfs2 / g2 < beta * beta / ((g5 + g3) * (g5 + g3) * (g2 + 1)) ? "mu from lfs_min" : "mu from bdr_min");
   assert_theorem11(refiners::ls::refine_ls(refiners::common::Domain(corners), f.field, p), p.theta_bound, mu2);
 }

@@ -4,11 +4,12 @@
 // LS.S9: a finished run (no encroached subsegment, no violator) is the dual of the exact diagram:
 // the oracle's D|Ω of the final sites has no orphans, every arc and vertex wedged, Theorem 7's
 // preconditions, a dual that is a triangulation of Ω and equals the mesh triangle for triangle;
-// every angle is at least θ_bound in the metric of each of the triangle's three vertices, decided
-// here exactly; every Voronoi vertex of D|Ω is within `size` of each of its three sites in the
+// every angle is at least θ_bound in the metric of each of the triangle's three vertices and in
+// the field's at its Voronoi vertex, decided here exactly; every Voronoi vertex of D|Ω is within `size` of each of its three sites in the
 // field's metric at that site, decided exactly at the oracle's vertex; every segment of the PSLG
 // is a union of mesh edges (decided from the domain). Random domains (convex or not, with or without interior points and segments), smooth
-// random fields (generators/fields.hpp, mild and strong), θ_bound from 5° to 20°, a size bound or none; half the runs in LS §9's variation
+// random fields (generators/fields.hpp, mild and strong), θ_bound from 5° to 20.7° in tenths (tagged by Theorem 11's
+// separation at the corners, in the field's metrics there), a size bound or none; half the runs in LS §9's variation
 // (--normalized-metric), whose mesh metrics must be M′ = det(M)^(−1/2) M (fields/normalized.hpp) at
 // every site, the field's M elsewhere. A stopped run names its budget or a stall the refiner documents.
 #include "fields/normalized.hpp"
@@ -22,6 +23,8 @@
 #include "property_tests/generators/domains.hpp"
 #include "property_tests/generators/fields.hpp"
 #include "refiners/ls/ls_refiner.hpp"
+#include "refiners/ls/rules.hpp"
+#include "refiners/ls/theorem11_conditions.hpp"
 #include "theory/ls_theorem11.hpp"
 
 #include <gtest/gtest.h>
@@ -56,12 +59,16 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
   const auto corners = gen::random_domain(reflex, false);
   RC_TAG(reflex ? "non-convex" : "convex");
   refiners::ls::LsParameters p;
-  p.theta_bound = *rc::gen::elementOf(std::vector<double>{5, 10, 15, 20});
+  p.theta_bound = *rc::gen::inRange(50, 208) / 10.0;  // 5° to 20.7°, in tenths
   p.size = *rc::gen::elementOf(std::vector<double>{0, 1, 2, 4});
   p.max_vertices = 250, p.max_seconds = 5;
   p.normalized_metric = *rc::gen::arbitrary<bool>();
   RC_TAG(p.normalized_metric ? "normalized metric" : "metric");
   const refiners::common::Domain domain = gen::domain_with_interior(corners);
+  std::vector<predicates::Sym2<double>> at_vertices;
+  for (const auto& v : domain.vertices()) at_vertices.push_back(f.at(v.x, v.y));
+  const auto t11 = refiners::ls::theorem11_conditions(domain, at_vertices, p.theta_bound);
+  RC_TAG(!t11.theta_admissible ? "theta_bound above Theorem 11's" : t11.corners_failing.empty() ? "separation holds" : "separation fails");
   const refiners::ls::LsResult r = refiners::ls::refine_ls(domain, f.field(), p);
   if (!r.consistent) {
     RC_LOG() << r.stop_reason << "\n";
@@ -91,7 +98,66 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
     for (int i = 0; i < 3; ++i)
       for (int k : t)  // in the metric of each vertex
         RC_ASSERT(predicates::angle_at_least_arcsin(m.sites[t[(i + 2) % 3]], m.sites[t[i]], m.sites[t[(i + 1) % 3]], m.metrics[k], s2));
+  // … and in the field's metric at the triangle's Voronoi vertex (of degree 3, or an exact tie's),
+  // as the refiner judges it: the field at the oracle's vertex rounded to doubles. The refiner
+  // rounds its own certified box, so the two points can differ in their last bits, and an angle
+  // within about 10⁻¹⁵ of θ_bound could be judged differently by the two; none was (2,000 runs).
+  const oracle::Diagram& d = certified->diagram;
+  for (const auto& t : r.mesh.triangles) {
+    const auto owns = [&t](const oracle::Node& n) {
+      return n.kind == oracle::Node::Kind::voronoi &&
+             std::all_of(t.begin(), t.end(), [&n](int k) { return std::binary_search(n.sites.begin(), n.sites.end(), k); });
+    };
+    const auto node = std::find_if(d.nodes.begin(), d.nodes.end(), owns);
+    RC_ASSERT(node != d.nodes.end());
+    const auto [x, y] = d.original_xy(node->at);
+    const auto F = f.at(x, y);
+    const predicates::Sym2<Rational> M{Rational(F.m11), Rational(F.m12), Rational(F.m22)};
+    for (int i = 0; i < 3; ++i)
+      RC_ASSERT(predicates::angle_at_least_arcsin(m.sites[t[(i + 2) % 3]], m.sites[t[i]], m.sites[t[(i + 1) % 3]], M, s2));
+  }
   gen::assert_pslg_segments_are_edges(m, domain);
+}
+
+// The trace (issue 16: "the trace records every insertion (rule, point, distances)"): the k-th
+// entry is the k-th inserted site, at its place exactly; its distance is the nearest earlier
+// site's in the new site's metric (the diagram's: M′ with --normalized-metric), by brute force
+// here in long double against the refiner's grid search; the rule is one of rules.hpp's, a
+// violator's radius is positive and a split's zero; only rule 2's splits name the rule of the
+// point that would have encroached.
+RC_GTEST_PROP(LsRefiner, TraceRecordsEveryInsertionWithItsNearestSite, ()) {
+  const gen::SmoothField f = gen::random_smooth_field();
+  refiners::ls::LsParameters p;
+  p.theta_bound = *rc::gen::inRange(50, 208) / 10.0;
+  p.size = *rc::gen::elementOf(std::vector<double>{0, 1, 2});
+  p.normalized_metric = *rc::gen::arbitrary<bool>();
+  p.max_vertices = 120, p.max_seconds = 1e9;
+  const auto r = refiners::ls::refine_ls(gen::domain_with_interior(gen::random_domain(*rc::gen::arbitrary<bool>(), false)), f.field(), p);
+  const auto& sites = r.mesh.sites;
+  RC_ASSERT(r.trace.size() <= sites.size());
+  const std::size_t first = sites.size() - r.trace.size();
+  using Rule = refiners::ls::Rule;
+  for (std::size_t i = 0; i < r.trace.size(); ++i) {
+    const auto& e = r.trace[i];
+    const std::size_t z = first + i;
+    RC_ASSERT(e.x == sites[z].x && e.y == sites[z].y);
+    const auto& M = r.mesh.metrics[z];
+    long double least = INFINITY;
+    for (std::size_t w = 0; w < z; ++w) {
+      const long double dx = static_cast<long double>(sites[w].x) - sites[z].x, dy = static_cast<long double>(sites[w].y) - sites[z].y;
+      least = std::min(least, dx * dx * M.m11 + 2 * dx * dy * M.m12 + dy * dy * M.m22);
+    }
+    const long double recorded = static_cast<long double>(e.nearest_distance) * e.nearest_distance;
+    RC_ASSERT(std::abs(recorded - least) <= 1e-12L * least);
+    const Rule rule = static_cast<Rule>(e.rule);
+    RC_ASSERT(std::find(refiners::ls::rules_by_priority.begin(), refiners::ls::rules_by_priority.end(), rule) != refiners::ls::rules_by_priority.end());
+    const bool split = rule == Rule::encroached_segment || rule == Rule::violator_encroaches;
+    const bool at_vertex = rule == Rule::poor_angle || rule == Rule::too_large || rule == Rule::inverted || rule == Rule::unwedged;
+    if (split) RC_ASSERT(e.radius == 0);
+    if (at_vertex) RC_ASSERT(e.radius > 0);
+    RC_ASSERT((e.for_rule != 0) == (rule == Rule::violator_encroaches));
+  }
+  RC_TAG(r.trace.size() < 40 ? "under 40 insertions" : "40 insertions or more");
 }
 
 // The filters only speed up (DESIGN.md): with LsParameters::filters off, encroachment along

@@ -47,9 +47,13 @@ struct RefinerEntry {
   std::function<Run(const common::Domain&, const fields::MetricField&, const ParameterValues&, const common::Budget&,
                     unsigned seed, const common::Progress&)>
       run;
-  // The command that checks a finished run against the refiner's own paper ("anisocert certify",
-  // LU's stars; "anisocert dual", LS Theorem 7's dual).
-  std::string check = "anisocert certify";
+  // Whether a finished run's mesh is the dual of the exact anisotropic Voronoi diagram of its
+  // vertices (LS §7, Theorem 7): then `anisocert dual` checks it and `refine --svg` draws that
+  // diagram with its dual; otherwise `anisocert certify` checks it (LU's stars) and --svg draws
+  // the mesh.
+  bool dual_of_diagram = false;
+  // The command that checks a finished run against the refiner's own paper.
+  std::string check() const { return dual_of_diagram ? "anisocert dual" : "anisocert certify"; }
   bool seeded = false;  // the run draws random points from `seed` (otherwise --seed is bad input)
 };
 

@@ -161,6 +161,37 @@ TEST(CliMesh, NormalizedMetricWritesMPrime) {
   EXPECT_FALSE(std::filesystem::exists(base + "_never.json"));
 }
 
+// The LS refiner on a background-mesh field (an earlier LS mesh of the linear field, its metrics
+// interpolated P1), written as Medit .mesh/.sol, with --svg: the picture is the exact D|Ω of the
+// final sites with its dual, every arc of it drawn (as many as `anisocert dual` counts in the mesh
+// read back), and the mesh its dual, which `dual` confirms from the Medit files. The star
+// refiner's picture is its mesh (no arcs).
+TEST(CliMesh, LsOnABackgroundMeshDrawsTheExactDiagram) {
+  const std::string base = ::testing::TempDir() + "anisocert_ls_background_" + std::to_string(getpid());
+  const Outcome bg = run("refine --algo ls --field linear --param hx=0.5 --param h0=0.125 --size 0.5 --quiet -o " + base + "_bg.json");
+  ASSERT_EQ(bg.exit_code, 0) << bg.out << bg.err;
+  const Outcome r = run("refine --algo ls --field background:" + base + "_bg.json --size 0.3 --quiet -o " + base + ".mesh --svg " + base + ".svg");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("(the exact D|Ω of the final sites with its dual; the mesh is its dual)"), std::string::npos) << r.out;
+  std::ifstream s(base + ".svg");
+  const std::string picture((std::istreambuf_iterator<char>(s)), std::istreambuf_iterator<char>());
+  EXPECT_NE(picture.find("its dual (dashed): the mesh is its dual"), std::string::npos);
+  std::size_t arcs = 0;
+  for (std::size_t at = picture.find("<title>arc "); at != std::string::npos; at = picture.find("<title>arc ", at + 1)) ++arcs;
+  const Outcome dual = run("dual " + base + ".mesh --quiet");
+  ASSERT_EQ(dual.exit_code, 0) << dual.out << dual.err;
+  EXPECT_NE(dual.out.find("metrics from " + base + ".sol"), std::string::npos) << dual.out;
+  EXPECT_GT(arcs, 0u);
+  EXPECT_NE(dual.out.find(", " + std::to_string(arcs) + " arcs, 0 orphans"), std::string::npos) << arcs << " arcs drawn\n" << dual.out;
+
+  const Outcome star = run("refine --field constant --max-vertices 40 --quiet --svg " + base + "_star.svg");
+  ASSERT_LE(star.exit_code, 1) << star.err;
+  std::ifstream t(base + "_star.svg");
+  const std::string mesh_picture((std::istreambuf_iterator<char>(t)), std::istreambuf_iterator<char>());
+  EXPECT_NE(mesh_picture.find("star refiner, field constant"), std::string::npos);
+  EXPECT_EQ(mesh_picture.find("<title>arc "), std::string::npos);
+}
+
 // `refine --domain` with the rest of a PSLG (io/mesh_json.hpp: "points", "interior_segments"): a
 // slit y = ½ from x = ¼ to ¾ and a point below it. The LS refiner's mesh has every input vertex as
 // a site, and the certifier finds its segments (the slit's pieces among them) unions of edges and

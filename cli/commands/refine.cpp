@@ -1,6 +1,7 @@
 // `anisocert refine --algo NAME`: a refiner of the registry (refiners/registry.hpp) on a domain and a
 // metric field (cli/field_source.hpp: a built-in field or a background mesh); writes the mesh for
 // `anisocert certify`, Medit .mesh/.sol and SVG.
+#include "cli/diagram_job.hpp"
 #include "cli/field_source.hpp"
 #include "cli/output.hpp"
 #include "cli/reports/refine_report.hpp"
@@ -8,8 +9,10 @@
 #include "fields/registry.hpp"
 #include "io/formats/registry.hpp"
 #include "io/mesh_json.hpp"
+#include "io/svg/diagram_svg.hpp"
 #include "io/svg/mesh_svg.hpp"
 #include "numbers/excerpt.hpp"
+#include "oracle/diagram/mesh_dual.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -40,6 +43,34 @@ struct RefineOptions {
   unsigned seed = 1;
   bool quiet = false;
 };
+
+// The picture for --svg, the line that names it, and the exit code of what drawing it found. For a
+// refiner whose mesh is meant to be the dual of the exact diagram of its vertices, that diagram,
+// D|Ω, computed by the oracle after the run, with its dual, and whether the mesh is that dual (LS
+// §7: when D|Ω has no orphans, every loose diagram restricted to Ω is D|Ω); exit 3 when Theorem 7's
+// preconditions hold and its conclusion fails, as for `anisocert dual`. The mesh otherwise, or
+// when the oracle declines the sites (the caption says why).
+struct Picture {
+  std::string svg, line;
+  int exit_code = 0;
+};
+Picture picture(const refiners::RefinerEntry& entry, const geometry::Mesh<double>& m, const RefineOptions& o) {
+  const std::string what = entry.name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices";
+  if (!entry.dual_of_diagram) return {io::mesh_svg(m, what), "  picture: " + o.svg + "\n"};
+  std::string declined;
+  try {
+    oracle::DiagramOptions options;
+    options.progress = progress_printer(o.quiet);
+    const oracle::Diagram d = oracle::compute_diagram(geometry::exact(m), options);
+    const std::string verdict = oracle::compare_with_dual(d, m.triangles, 0).is_dual() ? "the mesh is its dual" : "the mesh is not its dual";
+    return {io::diagram_svg(d, what + "; the exact D|Ω of its vertices and its dual (dashed): " + verdict),
+            "  picture: " + o.svg + " (the exact D|Ω of the final sites with its dual; " + verdict + ")\n", theorem7_exit_code(d)};
+  } catch (const std::domain_error& e) {
+    declined = e.what();
+  }
+  return {io::mesh_svg(m, what + " (the diagram is not drawn: " + declined + ")"),
+          "  picture: " + o.svg + " (the mesh only: the oracle declined its sites: " + declined + ")\n"};
+}
 
 // The budget: the defaults of refiners::common::Budget, or a positive whole number of vertices and
 // a positive number of seconds.
@@ -118,16 +149,21 @@ int run_refine(const RefineOptions& o) {
       throw UsageError(e.what());
     }
   }
-  if (!o.svg.empty())
-    files.push_back({o.svg, io::mesh_svg(m, entry->name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices")});
+  Picture drawn;
+  if (!o.svg.empty()) {
+    drawn = picture(*entry, m, o);
+    files.push_back({o.svg, std::move(drawn.svg)});
+  }
   write_files_atomically(files);
   std::string text = "refine: domain " + o.domain + ", field " + o.field + "\n" + report_text(run);
   if (format)
     text += "  mesh: " + written +
             (!run.result.consistent ? " (the run stopped early: the mesh as it stood, not necessarily a triangulation of the domain)\n"
-             : format->read         ? " (check it with " + entry->check + ")\n"
-                                    : " (a file anisocert does not read back: write .json, .mesh or .msh to check it with " + entry->check + ")\n");
+             : format->read         ? " (check it with " + entry->check() + ")\n"
+                                    : " (a file anisocert does not read back: write .json, .mesh or .msh to check it with " + entry->check() + ")\n");
+  text += drawn.line;
   emit(text);
+  if (drawn.exit_code) return drawn.exit_code;
   return run.result.consistent ? 0 : 1;
 }
 
@@ -145,7 +181,8 @@ std::string description() {
   }
   o << "  " << background_field_help << "\n";
   o << "Exit 0 when the refiner's output condition holds (star: all stars consistent), 1 when a budget or a stall\n"
-       "stopped it (the mesh written is what it had), 2 bad input.";
+       "stopped it (the mesh written is what it had), 2 bad input, 3 the diagram --svg draws contradicts Theorem 7\n"
+       "(its preconditions hold and its dual is no triangulation: a bug or a counterexample, said on standard error).";
   return o.str();
 }
 
@@ -185,7 +222,9 @@ void add_refine(CLI::App& app, int& exit_code) {
                 "write the mesh with its metrics, in the format of its extension (.json, .mesh/.meshb with .sol/.solb,\n"
                 ".msh Gmsh, .node/.ele/.poly; see certify --help)");
   c->add_option("--output-format", o->output_format, "the format of --output when its extension does not tell (e.g. freefem)");
-  c->add_option("--svg", o->svg, "write a picture of the mesh");
+  c->add_option("--svg", o->svg,
+                "write a picture: --algo ls, the exact diagram D|Ω of the final sites with its dual, computed by the oracle after\n"
+                "the run (seconds for 10k vertices, minutes for 100k); --algo star, the mesh");
   c->add_flag("--quiet", o->quiet, "no progress lines");
   c->callback([o, &exit_code] { exit_code = run_refine(*o); });
 }

@@ -73,7 +73,7 @@ std::string colour_of_site(int s) {
 
 }  // namespace
 
-std::string diagram_svg(const Diagram& d) {
+std::string diagram_svg(const Diagram& d, const std::string& caption) {
   geometry::Polygon<double> frame;
   for (const auto& p : d.input.domain) frame.push_back({p.x.convert_to<double>(), p.y.convert_to<double>()});
   const Canvas canvas(frame, 0.04);
@@ -82,7 +82,7 @@ std::string diagram_svg(const Diagram& d) {
   const double size = canvas.size(), px = canvas.scale(), H = canvas.height();
   std::ostringstream o;
   o.precision(7);
-  canvas.open(o, 40);
+  canvas.open(o, caption.empty() ? 40 : 56);
   o << "<defs><pattern id=\"hatch\" width=\"6\" height=\"6\" patternUnits=\"userSpaceOnUse\" "
        "patternTransform=\"rotate(45)\"><rect width=\"6\" height=\"6\" fill=\"#fbd5d5\"/>"
        "<line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"6\" stroke=\"#d62728\" stroke-width=\"2\"/></pattern></defs>\n"
@@ -161,7 +161,10 @@ std::string diagram_svg(const Diagram& d) {
   o << "<text x=\"8\" y=\"" << H + 16 << "\" font-family=\"sans-serif\" font-size=\"12\">"
     << "arcs: wedged (blue), not wedged (red, witness circled); orphans hatched; dual dashed green</text>\n"
     << "<text x=\"8\" y=\"" << H + 32 << "\" font-family=\"sans-serif\" font-size=\"12\">"
-    << "sites black with their metric's unit ellipse (common scale); Voronoi vertices dots</text>\n</svg>\n";
+    << "sites black with their metric's unit ellipse (common scale); Voronoi vertices dots</text>\n";
+  if (!caption.empty())
+    o << "<text x=\"8\" y=\"" << H + 48 << "\" font-family=\"sans-serif\" font-size=\"12\">" << xml_text(caption) << "</text>\n";
+  o << "</svg>\n";
   return o.str();
 }
 

@@ -85,7 +85,7 @@ RefinerEntry entry() {
             std::vector<std::string> lines = report(r, p, domain, field.name == "constant");
             return Run{std::move(r), std::move(lines)};
           },
-          "anisocert dual"};
+          /*dual_of_diagram=*/true};
 }
 
 }  // namespace anisocert::refiners::ls

@@ -93,8 +93,8 @@ RefinerEntry entry() {
             std::vector<std::string> lines = report(r, p);
             return Run{std::move(r), std::move(lines)};
           },
-          "anisocert certify",
-          true};
+          /*dual_of_diagram=*/false,
+          /*seeded=*/true};
 }
 
 }  // namespace anisocert::refiners::star
