@@ -164,8 +164,9 @@ TEST(CliMesh, NormalizedMetricWritesMPrime) {
 // The LS refiner on a background-mesh field (an earlier LS mesh of the linear field, its metrics
 // interpolated P1), written as Medit .mesh/.sol, with --svg: the picture is the exact D|Ω of the
 // final sites with its dual, every arc of it drawn (as many as `anisocert dual` counts in the mesh
-// read back), and the mesh its dual, which `dual` confirms from the Medit files. The star
-// refiner's picture is its mesh (no arcs).
+// read back), and the mesh its dual, which `dual` confirms from the Medit files, and from Gmsh's
+// when written as .msh. Triangle's files hold no metric, and the summary says how to check instead.
+// The star refiner's picture is its mesh (no arcs).
 TEST(CliMesh, LsOnABackgroundMeshDrawsTheExactDiagram) {
   const std::string base = ::testing::TempDir() + "anisocert_ls_background_" + std::to_string(getpid());
   const Outcome bg = run("refine --algo ls --field linear --param hx=0.5 --param h0=0.125 --size 0.5 --quiet -o " + base + "_bg.json");
@@ -183,6 +184,15 @@ TEST(CliMesh, LsOnABackgroundMeshDrawsTheExactDiagram) {
   EXPECT_NE(dual.out.find("metrics from " + base + ".sol"), std::string::npos) << dual.out;
   EXPECT_GT(arcs, 0u);
   EXPECT_NE(dual.out.find(", " + std::to_string(arcs) + " arcs, 0 orphans"), std::string::npos) << arcs << " arcs drawn\n" << dual.out;
+
+  // Gmsh's .msh keeps the metrics ($NodeData) too; Triangle's files hold none, and the summary says so.
+  const Outcome gmsh = run("refine --algo ls --field background:" + base + "_bg.json --size 0.3 --quiet -o " + base + ".msh");
+  ASSERT_EQ(gmsh.exit_code, 0) << gmsh.err;
+  EXPECT_EQ(run("dual " + base + ".msh --quiet").exit_code, 0);
+  const Outcome triangle = run("refine --algo ls --field background:" + base + "_bg.json --size 0.3 --quiet -o " + base + ".node");
+  ASSERT_EQ(triangle.exit_code, 0) << triangle.err;
+  EXPECT_NE(triangle.out.find("(its files hold no metrics: write .json, .mesh or .msh to check it with anisocert dual)"), std::string::npos)
+      << triangle.out;
 
   const Outcome star = run("refine --field constant --max-vertices 40 --quiet --svg " + base + "_star.svg");
   ASSERT_LE(star.exit_code, 1) << star.err;

@@ -159,8 +159,9 @@ int run_refine(const RefineOptions& o) {
   if (format)
     text += "  mesh: " + written +
             (!run.result.consistent ? " (the run stopped early: the mesh as it stood, not necessarily a triangulation of the domain)\n"
-             : format->read         ? " (check it with " + entry->check() + ")\n"
-                                    : " (a file anisocert does not read back: write .json, .mesh or .msh to check it with " + entry->check() + ")\n");
+             : !format->read        ? " (a file anisocert does not read back: write .json, .mesh or .msh to check it with " + entry->check() + ")\n"
+             : !format->holds_metrics ? " (its files hold no metrics: write .json, .mesh or .msh to check it with " + entry->check() + ")\n"
+                                      : " (check it with " + entry->check() + ")\n");
   text += drawn.line;
   emit(text);
   if (drawn.exit_code) return drawn.exit_code;

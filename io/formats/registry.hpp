@@ -26,6 +26,8 @@ struct MeshFormat {
   // The files of m at path (several for the formats that split a mesh, e.g. Triangle's .node and
   // .ele, or Medit's .mesh and .sol when there are metrics).
   std::vector<FileText> (*write)(const MeshFile& m, const std::string& path) = nullptr;
+  // Whether its files hold the metrics (Triangle's hold none: they are given with --metric).
+  bool holds_metrics = true;
 };
 
 struct MetricFormat {
