@@ -83,7 +83,7 @@ Run random_run() {
   const double angle = kind == 4 ? 0 : *rc::gen::inRange(0, 180) * M_PI / 180;
   const double c = std::cos(angle), s = std::sin(angle);
   run.M = {l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c};
-  run.p.theta_bound = *rc::gen::inRange(50, 301) / 10.0;  // 5° to 30°, in tenths: Theorem 11's range and beyond
+  run.p.theta_bound = *gen::theta_in_tenths(50, 300);  // 5° to 30°: Theorem 11's range and beyond
   run.p.size = *rc::gen::elementOf(std::vector<double>{0, 0, 0.5, 1, 2});
   run.p.max_vertices = 400, run.p.max_seconds = 1e9;
   run.X.emplace(kind == 4 ? refiners::common::Domain(corners) : gen::domain_with_interior(corners));
@@ -213,7 +213,7 @@ struct Theorem11Run {
 
 Theorem11Run theorem11_run() {
   Theorem11Run run;
-  run.p.theta_bound = *rc::gen::inRange(10, 206) / 10.0;  // 1° to 20.5°, in tenths
+  run.p.theta_bound = *gen::theta_in_tenths(10, 205);  // 1° to 20.5°
   run.p.size = 0;
   run.p.max_vertices = 20000, run.p.max_seconds = 1e9;
   const int kind = *rc::gen::inRange(0, 3);
@@ -289,7 +289,7 @@ RC_GTEST_PROP(LS_T11, CornerReportAgreesWithAnglesInLongDouble, ()) {
   using L = long double;
   const auto corners = gen::random_domain(*rc::gen::arbitrary<bool>(), *rc::gen::arbitrary<bool>());
   const refiners::common::Domain domain = gen::domain_with_interior(corners);
-  const double theta = *rc::gen::inRange(10, 207) / 10.0;
+  const double theta = *gen::theta_in_tenths(10, 206);
   const auto& X = domain.vertices();
   std::vector<predicates::Sym2<double>> metrics;
   for (std::size_t k = 0; k < X.size(); ++k) {
@@ -395,7 +395,7 @@ LinearField linear_field() {
 // site's neighbour.
 RC_GTEST_PROP(LS_T11, LinearFieldRunsKeepEveryTwoSitesMuApart, ()) {
   refiners::ls::LsParameters p;
-  p.theta_bound = *rc::gen::inRange(10, 201) / 10.0;  // 1° to 20°, in tenths
+  p.theta_bound = *gen::theta_in_tenths(10, 200);  // 1° to 20°
   p.size = 0;
   p.max_vertices = 20000, p.max_seconds = 1e9;
   const LinearField f = linear_field();

@@ -8,7 +8,7 @@
 // the field's at its Voronoi vertex, decided here exactly; every Voronoi vertex of D|Ω is within `size` of each of its three sites in the
 // field's metric at that site, decided exactly at the oracle's vertex; every segment of the PSLG
 // is a union of mesh edges (decided from the domain). Random domains (convex or not, with or without interior points and segments), smooth
-// random fields (generators/fields.hpp, mild and strong), θ_bound from 5° to 20.7° in tenths (tagged by Theorem 11's
+// random fields (generators/fields.hpp, mild and strong), θ_bound from 5° to 21° in tenths (tagged by Theorem 11's
 // separation at the corners, in the field's metrics there), a size bound or none; half the runs in LS §9's variation
 // (--normalized-metric), whose mesh metrics must be M′ = det(M)^(−1/2) M (fields/normalized.hpp) at
 // every site, the field's M elsewhere. A stopped run names its budget or a stall the refiner documents.
@@ -59,7 +59,7 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
   const auto corners = gen::random_domain(reflex, false);
   RC_TAG(reflex ? "non-convex" : "convex");
   refiners::ls::LsParameters p;
-  p.theta_bound = *rc::gen::inRange(50, 208) / 10.0;  // 5° to 20.7°, in tenths
+  p.theta_bound = *gen::theta_in_tenths(50, 210);  // 5° to 21°: Theorem 11's range (to 20.7048°) and a little beyond
   p.size = *rc::gen::elementOf(std::vector<double>{0, 1, 2, 4});
   p.max_vertices = 250, p.max_seconds = 5;
   p.normalized_metric = *rc::gen::arbitrary<bool>();
@@ -99,9 +99,10 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
       for (int k : t)  // in the metric of each vertex
         RC_ASSERT(predicates::angle_at_least_arcsin(m.sites[t[(i + 2) % 3]], m.sites[t[i]], m.sites[t[(i + 1) % 3]], m.metrics[k], s2));
   // … and in the field's metric at the triangle's Voronoi vertex (of degree 3, or an exact tie's),
-  // as the refiner judges it: the field at the oracle's vertex rounded to doubles. The refiner
-  // rounds its own certified box, so the two points can differ in their last bits, and an angle
-  // within about 10⁻¹⁵ of θ_bound could be judged differently by the two; none was (2,000 runs).
+  // as the refiner judges it: the field at the middle of the oracle's box of the vertex, unsheared
+  // in intervals, as the refiner takes the middle of its own certified box. Both boxes are a few
+  // ulps wide, so the two points can differ in their last bits, and an angle within about 10⁻¹⁵
+  // of θ_bound could be judged differently by the two; none was (2,000 runs).
   const oracle::Diagram& d = certified->diagram;
   for (const auto& t : r.mesh.triangles) {
     const auto owns = [&t](const oracle::Node& n) {
@@ -110,8 +111,8 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
     };
     const auto node = std::find_if(d.nodes.begin(), d.nodes.end(), owns);
     RC_ASSERT(node != d.nodes.end());
-    const auto [x, y] = d.original_xy(node->at);
-    const auto F = f.at(x, y);
+    const FilterInterval X = node->at.x - FilterInterval::around(d.shear) * node->at.y;
+    const auto F = f.at(X.lo / 2 + X.hi / 2, node->at.y.lo / 2 + node->at.y.hi / 2);
     const predicates::Sym2<Rational> M{Rational(F.m11), Rational(F.m12), Rational(F.m22)};
     for (int i = 0; i < 3; ++i)
       RC_ASSERT(predicates::angle_at_least_arcsin(m.sites[t[(i + 2) % 3]], m.sites[t[i]], m.sites[t[(i + 1) % 3]], M, s2));
@@ -128,14 +129,15 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
 RC_GTEST_PROP(LsRefiner, TraceRecordsEveryInsertionWithItsNearestSite, ()) {
   const gen::SmoothField f = gen::random_smooth_field();
   refiners::ls::LsParameters p;
-  p.theta_bound = *rc::gen::inRange(50, 208) / 10.0;
+  p.theta_bound = *gen::theta_in_tenths(50, 210);
   p.size = *rc::gen::elementOf(std::vector<double>{0, 1, 2});
   p.normalized_metric = *rc::gen::arbitrary<bool>();
   p.max_vertices = 120, p.max_seconds = 1e9;
-  const auto r = refiners::ls::refine_ls(gen::domain_with_interior(gen::random_domain(*rc::gen::arbitrary<bool>(), false)), f.field(), p);
+  const refiners::common::Domain domain = gen::domain_with_interior(gen::random_domain(*rc::gen::arbitrary<bool>(), false));
+  const auto r = refiners::ls::refine_ls(domain, f.field(), p);
   const auto& sites = r.mesh.sites;
-  RC_ASSERT(r.trace.size() <= sites.size());
-  const std::size_t first = sites.size() - r.trace.size();
+  const std::size_t first = domain.vertices().size();  // X's vertices are the first sites, then one per entry
+  RC_ASSERT(first + r.trace.size() == sites.size());
   using Rule = refiners::ls::Rule;
   for (std::size_t i = 0; i < r.trace.size(); ++i) {
     const auto& e = r.trace[i];

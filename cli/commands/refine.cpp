@@ -19,6 +19,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace anisocert::cli {
@@ -44,32 +45,34 @@ struct RefineOptions {
   bool quiet = false;
 };
 
-// The picture for --svg, the line that names it, and the exit code of what drawing it found. For a
-// refiner whose mesh is meant to be the dual of the exact diagram of its vertices, that diagram,
-// D|Ω, computed by the oracle after the run, with its dual, and whether the mesh is that dual (LS
-// §7: when D|Ω has no orphans, every loose diagram restricted to Ω is D|Ω); exit 3 when Theorem 7's
-// preconditions hold and its conclusion fails, as for `anisocert dual`. The mesh otherwise, or
-// when the oracle declines the sites (the caption says why).
+// The picture for --svg, the line that names it, and whether Theorem 7's preconditions hold in the
+// diagram drawn while its conclusion fails. For a refiner whose mesh is meant to be the dual of the
+// exact diagram of its vertices, that diagram, D|Ω, computed by the oracle after the run, with its
+// dual, and whether the mesh is that dual (LS §7: when D|Ω has no orphans, every loose diagram
+// restricted to Ω is D|Ω). The mesh otherwise, or when the oracle declines the sites or runs out
+// of memory on them (the caption says why: the run's mesh is still written).
 struct Picture {
   std::string svg, line;
-  int exit_code = 0;
+  std::optional<oracle::Diagram> diagram;  // when drawn
 };
 Picture picture(const refiners::RefinerEntry& entry, const geometry::Mesh<double>& m, const RefineOptions& o) {
   const std::string what = entry.name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices";
-  if (!entry.dual_of_diagram) return {io::mesh_svg(m, what), "  picture: " + o.svg + "\n"};
+  if (!entry.dual_of_diagram) return {io::mesh_svg(m, what), "  picture: " + o.svg + "\n", std::nullopt};
   std::string declined;
   try {
     oracle::DiagramOptions options;
     options.progress = progress_printer(o.quiet);
-    const oracle::Diagram d = oracle::compute_diagram(geometry::exact(m), options);
+    oracle::Diagram d = oracle::compute_diagram(geometry::exact(m), options);
     const std::string verdict = oracle::compare_with_dual(d, m.triangles, 0).is_dual() ? "the mesh is its dual" : "the mesh is not its dual";
-    return {io::diagram_svg(d, what + "; the exact D|Ω of its vertices and its dual (dashed): " + verdict),
-            "  picture: " + o.svg + " (the exact D|Ω of the final sites with its dual; " + verdict + ")\n", theorem7_exit_code(d)};
+    std::string svg = io::diagram_svg(d, what + "; the exact D|Ω of its vertices and its dual (dashed): " + verdict);
+    return {std::move(svg), "  picture: " + o.svg + " (the exact D|Ω of the final sites with its dual; " + verdict + ")\n", std::move(d)};
   } catch (const std::domain_error& e) {
-    declined = e.what();
+    declined = std::string("the oracle declined its sites: ") + e.what();
+  } catch (const std::bad_alloc&) {
+    declined = "the exact diagram did not fit in memory";
   }
-  return {io::mesh_svg(m, what + " (the diagram is not drawn: " + declined + ")"),
-          "  picture: " + o.svg + " (the mesh only: the oracle declined its sites: " + declined + ")\n"};
+  return {io::mesh_svg(m, what + " (the diagram is not drawn: " + declined + ")"), "  picture: " + o.svg + " (the mesh only: " + declined + ")\n",
+          std::nullopt};
 }
 
 // The budget: the defaults of refiners::common::Budget, or a positive whole number of vertices and
@@ -164,7 +167,8 @@ int run_refine(const RefineOptions& o) {
                                       : " (check it with " + entry->check() + ")\n");
   text += drawn.line;
   emit(text);
-  if (drawn.exit_code) return drawn.exit_code;
+  if (drawn.diagram)
+    if (const int code = theorem7_exit_code(*drawn.diagram)) return code;
   return run.result.consistent ? 0 : 1;
 }
 

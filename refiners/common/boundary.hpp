@@ -1,7 +1,7 @@
 #pragma once
 // The edge level of every refiner (CGAL Mesh_2's Refine_edges; LU §4.1 rule 1, LS §9, BWY §3.2.2
 // rule 1): the constrained subsegments, initially the edges of Ω, split at their exact midpoints
-// while a site encroaches them; and Insert_or_snap (BWY's "conditional insertion"): a point a
+// while a site encroaches them; and LU §4.1's Insert_or_snap: a point a
 // refiner wants to insert that lies outside Ω or encroaches a subsegment splits that subsegment
 // instead.
 //

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <map>
 
 namespace anisocert::refiners::ls {
@@ -353,7 +354,9 @@ class LsVaryingRefinement {
     const common::Box box = segment_box(s);
     const double gx = std::max({box.x0 - Q.p.x, Q.p.x - box.x1, 0.0}), gy = std::max({box.y0 - Q.p.y, Q.p.y - box.y1, 0.0});
     const double length2 = std::min(squared_length_above(a.M, a.p, b.p), squared_length_above(b.M, a.p, b.p));
-    if (near.below(gx, gy) > 2 * length2) return false;
+    // Below the least normal double the rounding errors are absolute, and the bound above may not
+    // hold: the exact test decides such tiny subsegments.
+    if (length2 >= std::numeric_limits<double>::min() && near.below(gx, gy) > 2 * length2) return false;
     return ls::reaches(a, b, Q, p_.filters);
   }
 
