@@ -33,6 +33,7 @@ inline Outcome run_command(const std::string& command_line) {
   std::stringstream ss;
   ss << e.rdbuf();
   r.err = ss.str();
+  std::remove(err_file.c_str());
   return r;
 }
 

@@ -44,8 +44,12 @@ std::vector<std::string_view> split_files(const std::uint8_t* data, std::size_t 
 }
 
 std::string scratch_path(std::string_view extension) {
+  // The folder first: statics are destroyed in the reverse order of their construction, so the
+  // remover then runs while the folder's path still exists (made the other way round, it removed
+  // a destroyed path, and every replay left its folder behind).
+  const std::filesystem::path& folder = scratch_folder();
   static RemoveAtExit remover;
-  return (scratch_folder() / ("fuzz-input" + std::string(extension))).string();
+  return (folder / ("fuzz-input" + std::string(extension))).string();
 }
 
 std::string write_scratch(std::string_view extension, std::string_view bytes) {

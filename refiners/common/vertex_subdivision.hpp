@@ -75,6 +75,10 @@ class VertexSubdivision {
   bool full() const { return nodes_.size() + 2 > max_nodes() || nodes_.size() + 2 > insertion_start_ + max_nodes_per_insertion; }
 
  private:
+  struct TrioSearch {
+    std::array<int, 3> trio;  // increasing
+    VertexSearch search;      // complete
+  };
   struct Node {
     Box box;
     std::vector<int> candidates;  // a leaf's (an inner node keeps none)
@@ -84,6 +88,9 @@ class VertexSubdivision {
     int child = -1;  // the first of two consecutive children (halves), or −1 for a leaf
     std::vector<int> vertices;
     bool unresolved = false;
+    // A leaf's complete vertex searches of its last resolution, trio by trio: they hold for its
+    // box as long as the leaf is one, and for every box inside it (see resolve).
+    std::vector<TrioSearch> searched;
   };
 
   // The sites of `from` (and `extra`, when ≥ 0) that can be nearest somewhere in b; U: the least
@@ -91,14 +98,17 @@ class VertexSubdivision {
   std::vector<int> candidates_in(const Box& b, const std::vector<int>& from, int extra, double& U) const;
   // Makes a node whose candidates are set a leaf with its vertices, or splits it; first_small:
   // false for the halves of a small node whose trios were tried already (see settle).
-  void settle(int node, bool first_small = true);
+  void settle(int node, bool first_small = true, const std::vector<TrioSearch>& inherited = {});
   // The vertices of a leaf's candidates, three by three: each point equidistant from three in the
   // closed box from which every other candidate is strictly farther (certified_point.hpp). Kept
   // when every search and sign is decided; split when a fourth candidate may be as near (a vertex of
   // degree 4, or two vertices nearer than the box can tell); unresolved when a search is undecided
   // in a small leaf (`small`, see settle), or a vertex's place in the box or identity is.
+  // A trio's search is looked up first in the node's own `searched`, then in `inherited`, the
+  // searches of the ancestor that last resolved (boxes that hold the node's), and made only when
+  // neither has it.
   enum class Resolution { resolved, split, unresolved };
-  Resolution resolve(int node, bool small);
+  Resolution resolve(int node, bool small, const std::vector<TrioSearch>& inherited);
   void update(int node, int site);
   // Lowers an inner node's least_greatest to the greatest of its children's: every point of the
   // box lies in a child, where some site is that near. Far tighter than one site's bound on a
