@@ -33,7 +33,8 @@ FieldSource background_source(const std::string& text) {
     throw UsageError("--field " + quoted_excerpt(text) + ": expected background:MESH or background:MESH:METRIC");
   if (!metric_path.empty() && !io::has_metric_extension(metric_path))
     throw UsageError("--field " + quoted_excerpt(text) + ": " + metric_path +
-                     " is not a metric file (.sol, .solb, .mtr); a Gmsh .msh holds its metrics itself: background:MESH");
+                     " is not a metric file (.sol, .solb, .mtr); a mesh whose own files hold its metrics (a Gmsh .msh with a metric view, a "
+                     "Medit .mesh with its .sol beside it) is given alone: background:MESH");
   io::MeshFile file;
   try {
     // A planar mesh saved in 3D (every z 0, as Gmsh writes Medit files) is read as 2D: a field's

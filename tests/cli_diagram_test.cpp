@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <tuple>
 
 namespace {
@@ -145,12 +147,17 @@ TEST(CliMesh, RefineThenCertify) {
 
 // `refine --algo ls --normalized-metric` (LS §9's variation): the report says so, and the mesh's
 // metrics are M′ = det(M)^(−1/2) M, here of M = diag(20, 80): diag(1/2, 2), exact in doubles. A flag
-// of another refiner is refused by name with exit 2.
+// of another refiner is refused by name with exit 2. The picture's caption names the flag: the
+// diagram drawn is that of M′, not of the field.
 TEST(CliMesh, NormalizedMetricWritesMPrime) {
   const std::string base = ::testing::TempDir() + "anisocert_normalized_" + std::to_string(getpid());
-  const Outcome r = run("refine --algo ls --field constant --param m11=20 --param m22=80 --size 0.5 --normalized-metric --quiet -o " + base + ".json");
+  const Outcome r = run("refine --algo ls --field constant --param m11=20 --param m22=80 --size 0.5 --normalized-metric --quiet -o " + base +
+                        ".json --svg " + base + ".svg");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("normalized metric (LS §9)"), std::string::npos) << r.out;
+  std::ifstream picture(base + ".svg");
+  const std::string svg{std::istreambuf_iterator<char>(picture), std::istreambuf_iterator<char>()};
+  EXPECT_NE(svg.find("ls refiner, field constant --normalized-metric: "), std::string::npos);
   std::ifstream in(base + ".json");
   const Json mesh = Json::parse(in);
   ASSERT_FALSE(mesh["sites"].empty());

@@ -227,21 +227,22 @@ TEST(BackgroundMesh, PointOutsideHasNoValue) {
 
 TEST(BackgroundMesh, RejectsMeshesThatDefineNoField) {
   std::mt19937 rng(8);
-  const Mesh good = square_mesh(1, rng, false);  // sites 0 (0,0), 1 (1,0), 2 (0,1), 3 (1,1)
+  // Sites 0 (0,0), 1 (1,0), 2 (0,1), 3 (1,1) here; messages count from 1, as Medit and FreeFem files do.
+  const Mesh good = square_mesh(1, rng, false);
   Mesh clockwise = good;
   std::swap(clockwise.triangles[1][1], clockwise.triangles[1][2]);
-  EXPECT_EQ(construction_error(clockwise), "background triangle 1 (sites 0, 2, 3) is clockwise");
+  EXPECT_EQ(construction_error(clockwise), "background triangle 2 (sites 1, 3, 4; counted from 1 in the file's order) is clockwise");
   Mesh flat = good;
   flat.sites.push_back({2, 2});
   flat.metrics.push_back({1, 0, 1});
   flat.triangles.push_back({0, 3, 4});
-  EXPECT_EQ(construction_error(flat), "background triangle 2 (sites 0, 3, 4) is flat: (0, 0), (1, 1) and (2, 2) are collinear");
+  EXPECT_EQ(construction_error(flat), "background triangle 3 (sites 1, 4, 5; counted from 1 in the file's order) is flat: (0, 0), (1, 1) and (2, 2) are collinear");
   Mesh missing = good;
   missing.metrics.pop_back();
   EXPECT_EQ(construction_error(missing), "the background mesh has 4 sites but 3 metrics");
   Mesh indefinite = good;
   indefinite.metrics[2] = {1, 2, 1};
-  EXPECT_NE(construction_error(indefinite).find("background site 2: metric [1, 2, 1] is not positive definite"), std::string::npos)
+  EXPECT_NE(construction_error(indefinite).find("background site 3 (counted from 1): metric [1, 2, 1] is not positive definite"), std::string::npos)
       << construction_error(indefinite);
   Mesh bare = good;
   bare.triangles.clear();

@@ -56,12 +56,16 @@ struct Picture {
   std::optional<oracle::Diagram> diagram;  // when drawn
 };
 Picture picture(const refiners::RefinerEntry& entry, const geometry::Mesh<double>& m, const RefineOptions& o) {
-  const std::string what = entry.name + " refiner, field " + o.field + ": " + std::to_string(m.sites.size()) + " vertices";
+  std::string what = entry.name + " refiner, field " + o.field;
+  for (const auto& [name, given] : o.flags)
+    if (given) what += " --" + name;  // --normalized-metric: the sites carry M′, and so does the diagram drawn
+  what += ": " + std::to_string(m.sites.size()) + " vertices";
   if (!entry.dual_of_diagram) return {io::mesh_svg(m, what), "  picture: " + o.svg + "\n", std::nullopt};
   std::string declined;
   try {
     oracle::DiagramOptions options;
-    options.progress = progress_printer(o.quiet);
+    if (const auto print = progress_printer(o.quiet))
+      options.progress = [print](const std::string& line) { print("--svg: " + line); };  // the run's lines are done
     oracle::Diagram d = oracle::compute_diagram(geometry::exact(m), options);
     const std::string verdict = oracle::compare_with_dual(d, m.triangles, 0).is_dual() ? "the mesh is its dual" : "the mesh is not its dual";
     std::string svg = io::diagram_svg(d, what + "; the exact D|Ω of its vertices and its dual (dashed): " + verdict);

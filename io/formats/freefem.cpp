@@ -9,6 +9,7 @@
 #include "numbers/excerpt.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <climits>
 #include <filesystem>
 
@@ -143,6 +144,31 @@ std::vector<FileText> write_freefem_file(const MeshFile& m, const std::string& p
   return files;
 }
 
+namespace {
+
+// BAMG reads the values as a stream of numbers, so "nbv 1" over lines of three values is a file of
+// 3·nbv sizes, refused only where one of them is not positive or at the end. When the first line
+// after the header holds the other kind's count of values, the message says so: the header was
+// most likely meant to declare that kind.
+std::string header_hint(std::string_view text, std::int64_t kind) {
+  int line = 1, values = 0, seen = 0;  // seen: non-blank lines; the first is the header
+  for (std::size_t i = 0; i <= text.size() && seen < 2; ++i) {
+    const bool end_of_line = i == text.size() || text[i] == '\n';
+    if (!end_of_line) {
+      if (!std::isspace(static_cast<unsigned char>(text[i])) && (i == 0 || std::isspace(static_cast<unsigned char>(text[i - 1])))) ++values;
+      continue;
+    }
+    if (values > 0 && ++seen == 2) break;
+    values = 0;
+    ++line;
+  }
+  if (seen < 2 || values == kind || (values != 1 && values != 3)) return "";
+  return " (line " + std::to_string(line) + " holds " + std::to_string(values) + (values == 1 ? " value" : " values") + ", where the header declares " +
+         std::to_string(kind) + " per vertex: should its second number be " + std::to_string(values) + "?)";
+}
+
+}  // namespace
+
 std::vector<predicates::Sym2<Rational>> read_bamg_metric(std::string_view text, const std::string& source) {
   using namespace freefem_files;
   TextReader r(text, source);
@@ -151,9 +177,13 @@ std::vector<predicates::Sym2<Rational>> read_bamg_metric(std::string_view text, 
   if (kind != 1 && kind != 3)
     r.fail("header: " + std::to_string(kind) + " values per vertex, where BAMG has 1 (a size h) or 3 (a11 a21 a22)");
   std::vector<Sym2<Rational>> metrics;
-  for (std::int64_t i = 0; i < nbv; ++i)
-    metrics.push_back(kind == 1 ? read_size(r, entry("vertex", i)) : read_tensor(r, entry("vertex", i)));
-  expect_end(r, "metrics", nbv);
+  try {
+    for (std::int64_t i = 0; i < nbv; ++i)
+      metrics.push_back(kind == 1 ? read_size(r, entry("vertex", i)) : read_tensor(r, entry("vertex", i)));
+    expect_end(r, "metrics", nbv);
+  } catch (const InputError& e) {
+    throw InputError(e.what() + header_hint(text, kind));
+  }
   return metrics;
 }
 

@@ -42,7 +42,7 @@ std::vector<std::string> report(const LsResult& r, const LsParameters& p, const 
     o << "θ_bound = " << p.theta_bound << "° is not below arcsin(1/(2√2)) ≈ 20.7°: no termination guarantee";
   } else {
     o.precision(10);
-    o << "θ_bound admissible, γ ∈ [" << c.gamma_lo << ", " << c.gamma_hi << "]; adjoining segments need ";
+    o << "θ_bound admissible, γ(θ_bound) ∈ [" << c.gamma_lo << ", " << c.gamma_hi << "]; adjoining segments need ";
     o.precision(6);
     const std::string where = domain.has_interior() ? "vertex" : "corner";  // X's vertices: the corners, then the points
     o << c.separation_hi << "° (2 arcsin(γ²/2)) in the " << where << "'s metric: ";

@@ -228,6 +228,11 @@ TEST(Bamg, RefusesWhatIsNotAMetricAndCountsThatDoNotMatch) {
       {"1 3\n1 0 inf\n", "m.mtr:2: vertex 1: a22: \"inf\" is not an exact number"},
       {"2 2\n1 1\n1 1\n", "m.mtr:1: header: 2 values per vertex, where BAMG has 1 (a size h) or 3 (a11 a21 a22)"},
       {"-2 1\n", "m.mtr:1: header: number of vertices (nbv) is -2"},
+      // The header's kind against the first vertex's line: BAMG reads a stream of numbers, so only
+      // the failure says so (the tensors read as sizes: 1, 0 is the second).
+      {"2 1\n1 0 1\n1 0 1\n", "m.mtr:2: vertex 2: size h = 0 is not positive (the metric is I/h²) (line 2 holds 3 values, "
+                               "where the header declares 1 per vertex: should its second number be 3?)"},
+      {"\n2 3\n\n0.5\n0.5\n", "(line 4 holds 1 value, where the header declares 3 per vertex: should its second number be 1?)"},
   };
   for (const auto& [text, message] : cases) {
     const std::string error = error_of([&, text = text] { read_bamg_metric(text, "m.mtr"); });
