@@ -216,6 +216,53 @@ TEST(PeerDual, ReportsEveryTriangleOfAPeerMesh) {
   }
 }
 
+// FreeFem++'s own metric as the LS refiner's background field (issue 16's inputs: every field,
+// background meshes included), an input no anisocert code made: adaptmesh three times to the layer
+// tanh(20(x + y − 1)), then the Hessian metric it adapted to, written as BAMG's .mtr ("nbv 3",
+// a11 a21 a22) beside FreeFem's .msh (as a new user made it, docs/refiners.md). The metric is
+// strongly anisotropic (eigenvalue ratio above 100 at some vertex, computed here from the file), so
+// the run takes the path of sites with different metrics. The run ends with no violator (exit 0),
+// and `anisocert dual`, reading the Medit files back, certifies the mesh the exact dual of its
+// vertices' diagram, with no orphan (exit 0: LS §7).
+TEST(PeerMetric, LsRefinesFreeFemsHessianMetricAndTheOracleCertifiesIt) {
+  const std::string d = fresh_dir("freefem_metric");
+  fs::create_directories(d);
+  std::ofstream(d + "/metric.edp") << "mesh Th = square(10, 10);\n"
+                                      "fespace Vh(Th, P1);\n"
+                                      "Vh u = tanh(20*(x + y - 1));\n"
+                                      "for (int i = 0; i < 3; i++) {\n"
+                                      "  Th = adaptmesh(Th, u, err = 0.02, hmin = 0.005);\n"
+                                      "  u = tanh(20*(x + y - 1));\n"
+                                      "}\n"
+                                      "fespace Mh(Th, P1);\n"
+                                      "Mh m11, m21, m22;\n"
+                                      "Th = adaptmesh(Th, u, err = 0.02, hmin = 0.005, metric = [m11[], m21[], m22[]], nomeshgeneration = true);\n"
+                                      "savemesh(Th, \"" + d + "/bg.msh\");\n"
+                                      "ofstream f(\"" + d + "/bg.mtr\");\n"
+                                      "f.precision(17);\n"
+                                      "f << Th.nv << \" 3\\n\";\n"
+                                      "for (int i = 0; i < Th.nv; i++) f << m11[][i] << \" \" << m21[][i] << \" \" << m22[][i] << \"\\n\";\n";
+  const Outcome ff = run_command("FreeFem++ -nw -ne -v 0 " + d + "/metric.edp");
+  ASSERT_EQ(ff.exit_code, 0) << ff.out << ff.err;
+  std::ifstream mtr(d + "/bg.mtr");
+  std::size_t nbv = 0, kind = 0;
+  mtr >> nbv >> kind;
+  ASSERT_EQ(kind, 3u);
+  double ratio = 1;
+  for (double a, b, c; mtr >> a >> b >> c;) {
+    const double mean = (a + c) / 2, radius = std::hypot((a - c) / 2, b);
+    ratio = std::max(ratio, (mean + radius) / (mean - radius));
+  }
+  EXPECT_GT(ratio, 100) << "FreeFem's metric is nearly isotropic: the test no longer exercises anisotropy";
+  const Outcome r = run("refine --algo ls --field background:" + d + "/bg.msh:" + d + "/bg.mtr --size 0.5 --quiet -o " + d + "/ls.mesh");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("stopped: no encroached subsegment and no violator"), std::string::npos) << r.out;
+  const Outcome dual = run("dual " + d + "/ls.mesh --quiet");
+  EXPECT_EQ(dual.exit_code, 0) << dual.out << dual.err;
+  EXPECT_NE(dual.out.find(" 0 orphans"), std::string::npos) << dual.out;
+  fs::remove_all(d);
+}
+
 // --- bad input: which peer, which step, why; exit 2 and nothing written ------------------------
 
 // A stand-in peer program: a shell script in a fresh folder.
