@@ -12,6 +12,7 @@
 // in Expansion (double inputs) or Rational — the same code for all.
 
 #include "predicates/error_model.hpp"
+#include "numbers/exact_double.hpp"
 #include "numbers/expansion.hpp"
 #include "numbers/filter_interval.hpp"
 #include "numbers/sign.hpp"
@@ -228,13 +229,18 @@ template <class K>
   if (const auto s = translated_static_sign<K>(x)) return *s;
   for (std::size_t i = 0; i < K::arity; ++i)
     if (!std::isfinite(x[i])) throw_non_finite(K::name, K::inputs[i], x[i]);
-  // The interval stage, unless the double evaluation is exactly 0: round-to-nearest is monotone,
-  // so that value lies in the interval evaluation (each end rounded to nearest, then widened;
-  // barring contractions into fma, which the build does not make), which then holds 0 and does
-  // not decide. Such a call is most often an exact zero (a right angle, four cocircular points of
-  // a grid), which expansions decide at little cost. Either way the exact stage gives the
-  // answer: this only chooses the faster path.
-  if (K::template eval<double>(x) != 0) {
+  // The double evaluation, each operation checked for rounding (numbers/exact_double.hpp): when
+  // none rounded, its sign is the exact sign. That is how most calls that get here end: a right
+  // angle, four cocircular points of a grid, whose value is 0 exactly and rounds nowhere.
+  std::array<ExactDouble, K::arity> xd;
+  for (std::size_t i = 0; i < K::arity; ++i) xd[i] = x[i];
+  const ExactDouble value = K::template eval<ExactDouble>(xd);
+  if (value.exact()) return value.sign();
+  // The interval stage, unless the double evaluation is 0: round-to-nearest is monotone, so that
+  // value lies in the interval evaluation (each end rounded to nearest, then widened; barring
+  // contractions into fma, which the build does not make), which then holds 0 and does not decide.
+  // Either way the exact stage gives the answer: this only chooses the faster path.
+  if (value.value() != 0) {
     ++filter_stats().interval_stage;
     std::array<FilterInterval, K::arity> xi;
     for (std::size_t i = 0; i < K::arity; ++i) xi[i] = FilterInterval(x[i]);

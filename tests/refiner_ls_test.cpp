@@ -512,6 +512,10 @@ TEST(SegmentCells, ExpansionsGiveTheRationalCells) {
   }
 }
 
+// The vertex rounded to nearest (rounded_circumcentre) against Boost's conversion of the rational
+// circumcentre, bit for bit, ties included; and the exact vertex (exact_circumcentre, by division
+// when the parts are exact doubles) against the rational solve. On grids, where the parts are
+// exact, random points and metrics, and tiny magnitudes.
 TEST(DelaunayInMetric, RoundedCircumcentreIsTheRationalOneRoundedToNearest) {
   std::mt19937 rng(13);
   std::uniform_int_distribution<int> coordinate(-16, 16), exponent(-400, 40);
@@ -528,6 +532,8 @@ TEST(DelaunayInMetric, RoundedCircumcentreIsTheRationalOneRoundedToNearest) {
     if (predicates::orientation(a, b, c) == Sign::zero) continue;
     const Point2<Rational> e = refiners::ls::circumcentre_in<Rational>(a, b, c, M);
     const Point2<double> r = refiners::ls::rounded_circumcentre(a, b, c, M);
+    const Point2<Rational> fast = refiners::ls::exact_circumcentre(a, b, c, M);  // by division, when exact
+    ASSERT_TRUE(fast.x == e.x && fast.y == e.y) << "round " << round;
     ASSERT_EQ(r.x, e.x.convert_to<double>()) << "round " << round;
     ASSERT_EQ(r.y, e.y.convert_to<double>()) << "round " << round;
     ties += Rational(r.x) == e.x && Rational(r.y) == e.y;

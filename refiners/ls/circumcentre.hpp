@@ -73,8 +73,14 @@ struct CircumcentrePartKernel {
 Point2<FilterInterval> circumcentre_box(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M);
 
 // The circumcentre rounded to the nearest doubles (Boost's conversion of the rational
-// circumcentre), from its parts in expansions (numbers/expansion.hpp), and in rationals only when
-// those cannot decide.
+// circumcentre): by one division when its parts are exact in doubles (numbers/exact_double.hpp),
+// else from its parts in expansions (numbers/expansion.hpp), and in rationals only when those
+// cannot decide.
 Point2<double> rounded_circumcentre(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M);
+
+// The circumcentre exactly: from one division per coordinate when its parts are exact in doubles
+// and the quotients too (a grid's right triangles, whose vertices lie on the grid or halfway),
+// circumcentre_in<Rational> otherwise.
+Point2<Rational> exact_circumcentre(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M);
 
 }  // namespace anisocert::refiners::ls

@@ -60,6 +60,11 @@ class DelaunayInMetric {
     }
     return *box;
   }
+  // It exactly, by the fastest exact path (exact_circumcentre).
+  Point2<Rational> exact_circumcentre(int t) const {
+    const auto& v = triangles_[t].v;
+    return ls::exact_circumcentre(point(v[0]), point(v[1]), point(v[2]), M_);
+  }
   // It rounded to the nearest doubles (rounded_circumcentre).
   Point2<double> rounded_circumcentre(int t) const {
     const auto& v = triangles_[t].v;

@@ -146,14 +146,14 @@ class LsRefinement {
           if (*s == Sign::positive) return true;
           continue;
         }
-      if (squared_length(size_metric_, diagram_.circumcentre<Rational>(t), a) > size2_) return true;
+      if (squared_length(size_metric_, diagram_.exact_circumcentre(t), a) > size2_) return true;
     }
     return false;
   }
   bool vertex_in_domain(int t, const Point2<FilterInterval>& c) const {
     if (p_.filters)
       if (const auto in = domain_.contains(common::Box{c.x.lo, c.x.hi, c.y.lo, c.y.hi})) return *in;
-    return domain_.contains(diagram_.circumcentre<Rational>(t));
+    return domain_.contains(diagram_.exact_circumcentre(t));
   }
 
   void queue_if_violator(int t) {

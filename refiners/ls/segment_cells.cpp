@@ -1,5 +1,6 @@
 #include "refiners/ls/segment_cells.hpp"
 
+#include "numbers/exact_double.hpp"
 #include "numbers/expansion.hpp"
 #include "numbers/filter_interval.hpp"
 #include "refiners/common/exact_split.hpp"
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace anisocert::refiners::ls {
 
@@ -19,17 +21,21 @@ Integer floor_of(const Rational& q) {
   return f;
 }
 
-// The sign of an exact number; nothing for an expansion that overflowed or underflowed.
+// The sign of an exact number; nothing for a double that rounded or an expansion that overflowed
+// or underflowed.
 std::optional<Sign> sign_if_exact(const Rational& q) { return sign_of(q); }
-std::optional<Sign> sign_if_exact(const Expansion& e) {
+template <class T>
+  requires std::is_same_v<T, Expansion> || std::is_same_v<T, ExactDouble>
+std::optional<Sign> sign_if_exact(const T& e) {
   if (!e.exact()) return std::nullopt;
   return e.sign();
 }
 Rational rational(const Rational& q) { return q; }
 Rational rational(const Expansion& e) { return exact_value(e); }
+Rational rational(const ExactDouble& e) { return Rational(e.value()); }
 
-// cells_along in T (Expansion or Rational), every comparison of two ends n/d (d > 0) made as
-// sign(n₁d₂ − n₂d₁), so that no division is needed; nothing when an expansion is inexact.
+// cells_along in T (ExactDouble, Expansion or Rational), every comparison of two ends n/d (d > 0)
+// made as sign(n₁d₂ − n₂d₁), so that no division is needed; nothing when a value is inexact.
 template <class T>
 std::optional<std::vector<CellOnSegment>> cells_in(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
                                                    const std::vector<std::pair<int, Point2<double>>>& sites) {
@@ -85,8 +91,10 @@ std::optional<std::vector<CellOnSegment>> cells_in(const Point2<double>& a, cons
 
 std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
                                        const std::vector<std::pair<int, Point2<double>>>& sites, bool expansions) {
-  if (expansions)
+  if (expansions) {
+    if (auto cells = cells_in<ExactDouble>(a, b, M, sites)) return std::move(*cells);  // a grid's rounds nowhere
     if (auto cells = cells_in<Expansion>(a, b, M, sites)) return std::move(*cells);
+  }
   return *cells_in<Rational>(a, b, M, sites);
 }
 

@@ -25,8 +25,9 @@ struct CellOnSegment {
 // The closed cells among `sites` (a and b among them, each with its id) that meet s. Sites
 // farther from s than |s|_M/2 (near_segment) or outside its diametral ellipse
 // (outside_diametral_ellipse) never do: the caller may leave them out.
-// Computed in expansions (numbers/expansion.hpp), in rationals when an expansion overflows or
-// underflows or `expansions` is false (the exact path the filters are tested against).
+// Computed in doubles checked for rounding (numbers/exact_double.hpp), in expansions
+// (numbers/expansion.hpp) when a double rounds, in rationals when an expansion overflows or
+// underflows or `expansions` is false (the exact path the fast ones are tested against).
 std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
                                        const std::vector<std::pair<int, Point2<double>>>& sites, bool expansions = true);
 
