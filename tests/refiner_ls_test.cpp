@@ -509,6 +509,15 @@ TEST(SegmentCells, ExpansionsGiveTheRationalCells) {
       ASSERT_EQ(fast[i].lo, exact[i].lo) << "round " << round;
       ASSERT_EQ(fast[i].hi, exact[i].hi) << "round " << round;
     }
+    // One site's cell alone (cell_along) is its cell among all, or none when it misses s.
+    for (const auto& [id, p] : sites) {
+      const auto one = refiners::ls::cell_along(a, b, M, sites, id, round % 2 == 0);
+      const auto all = std::find_if(exact.begin(), exact.end(), [id = id](const auto& c) { return c.site == id; });
+      ASSERT_EQ(one.has_value(), all != exact.end()) << "round " << round << ", site " << id;
+      if (one) {
+        ASSERT_TRUE(one->lo == all->lo && one->hi == all->hi) << "round " << round << ", site " << id;
+      }
+    }
   }
 }
 

@@ -199,9 +199,7 @@ class LsRefinement {
     const auto [a, b] = subsegments_.ends(s);
     const Point2<double>&pa = sites_.points[a], &pb = sites_.points[b];
     if (p_.filters && outside_diametral_ellipse(pa, pb, metric_, q)) return std::nullopt;
-    for (const CellOnSegment& c : cells_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}, p_.filters))
-      if (c.site == -1) return c;
-    return std::nullopt;
+    return cell_along(pa, pb, metric_, {{a, pa}, {b, pb}, {-1, q}}, -1, p_.filters);
   }
 
   // LS §9: s is split in one of the cells `in`, the one nearest its midpoint (one that meets s in

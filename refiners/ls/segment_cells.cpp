@@ -36,9 +36,10 @@ Rational rational(const ExactDouble& e) { return Rational(e.value()); }
 
 // cells_along in T (ExactDouble, Expansion or Rational), every comparison of two ends n/d (d > 0)
 // made as sign(n₁d₂ − n₂d₁), so that no division is needed; nothing when a value is inexact.
+// only: the cell of the site with that id alone.
 template <class T>
 std::optional<std::vector<CellOnSegment>> cells_in(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
-                                                   const std::vector<std::pair<int, Point2<double>>>& sites) {
+                                                   const std::vector<std::pair<int, Point2<double>>>& sites, std::optional<int> only) {
   const T m11(M.m11), m12(M.m12), m22(M.m22);
   const auto form = [&](const T& x1, const T& y1, const T& x2, const T& y2) { return m11 * x1 * x2 + m12 * (x1 * y2 + y1 * x2) + m22 * y1 * y2; };
   const T dx = T(b.x) - T(a.x), dy = T(b.y) - T(a.y);
@@ -57,6 +58,7 @@ std::optional<std::vector<CellOnSegment>> cells_in(const Point2<double>& a, cons
   const auto compare = [](const End& x, const End& y) { return sign_if_exact(x.n * y.d - y.n * x.d); };
   std::vector<CellOnSegment> cells;
   for (std::size_t u = 0; u < sites.size(); ++u) {
+    if (only && sites[u].first != *only) continue;
     End lo{T(0), T(1)}, hi{T(1), T(1)};
     bool empty = false;
     for (std::size_t x = 0; x < sites.size() && !empty; ++x) {
@@ -89,13 +91,29 @@ std::optional<std::vector<CellOnSegment>> cells_in(const Point2<double>& a, cons
 
 }  // namespace
 
+namespace {
+
+std::vector<CellOnSegment> cells_of(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
+                                    const std::vector<std::pair<int, Point2<double>>>& sites, bool expansions, std::optional<int> only) {
+  if (expansions) {
+    if (auto cells = cells_in<ExactDouble>(a, b, M, sites, only)) return std::move(*cells);  // a grid's rounds nowhere
+    if (auto cells = cells_in<Expansion>(a, b, M, sites, only)) return std::move(*cells);
+  }
+  return *cells_in<Rational>(a, b, M, sites, only);
+}
+
+}  // namespace
+
 std::vector<CellOnSegment> cells_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
                                        const std::vector<std::pair<int, Point2<double>>>& sites, bool expansions) {
-  if (expansions) {
-    if (auto cells = cells_in<ExactDouble>(a, b, M, sites)) return std::move(*cells);  // a grid's rounds nowhere
-    if (auto cells = cells_in<Expansion>(a, b, M, sites)) return std::move(*cells);
-  }
-  return *cells_in<Rational>(a, b, M, sites);
+  return cells_of(a, b, M, sites, expansions, std::nullopt);
+}
+
+std::optional<CellOnSegment> cell_along(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M,
+                                        const std::vector<std::pair<int, Point2<double>>>& sites, int site, bool expansions) {
+  auto cells = cells_of(a, b, M, sites, expansions, site);
+  if (cells.empty()) return std::nullopt;
+  return std::move(cells.front());
 }
 
 common::Box near_segment(const Point2<double>& a, const Point2<double>& b, const Sym2<double>& M) {
