@@ -13,8 +13,9 @@
 // the exact value (`ExactDouble.*` in tests/numbers_exact_double_test.cpp against rationals).
 //
 // The same evaluation order as double's: a kernel's eval<ExactDouble> computes, operation for
-// operation, the double value eval<double> computes (no contraction into fma: the build is ISO
-// C++, whose default forbids it on GCC, and the baseline x86-64 target has no fma for clang to use).
+// operation, the double value eval<double> computes, since the build forbids contracting a·b + c
+// into an fma (-ffp-contract=off, CMakeLists.txt; GCC's default for C++ allows it wherever the
+// target has an fma instruction).
 
 #include "numbers/sign.hpp"
 

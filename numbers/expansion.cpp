@@ -2,6 +2,7 @@
 
 #include "numbers/filter_interval.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -21,31 +22,28 @@ std::optional<double> rounded_quotient(const Expansion& X, const Expansion& D) {
   if (!X.exact() || !D.exact() || D.sign() == Sign::zero) return std::nullopt;
   if (X.sign() == Sign::zero) return 0.0;  // a vertex on an axis of symmetry, say
   // Rounding X/D is rounding |X|/|D|, with X/D's sign (ties to even are symmetric).
-  const bool negative = X.sign() != D.sign() && X.sign() != Sign::zero;
+  const bool negative = X.sign() != D.sign();
   const Expansion x = X.sign() == Sign::negative ? -X : X, d = D.sign() == Sign::negative ? -D : D;
-  // The sign of m − x/d for m = (y + z)/2, exactly: of (y + z) d − 2x (d > 0); nothing when
-  // inexact.
-  const auto against_midpoint = [&](double y, double z) -> std::optional<Sign> {
-    const Expansion e = (Expansion(y) + Expansion(z)) * d - (x + x);
-    if (!e.exact()) return std::nullopt;
-    return e.sign();
-  };
   double y = x.approx() / d.approx();
   for (int step = 0; step < 8; ++step) {
     // Normal doubles only, where the rounding is a 53-bit significand's (as Boost's conversion).
     if (!(y >= 0x1p-1021 && y <= 0x1p1022)) return std::nullopt;
-    const double up = FilterInterval::next_up(y), down = FilterInterval::next_down(y);
-    const auto above = against_midpoint(y, up), below = against_midpoint(down, y);
-    if (!above || !below) return std::nullopt;
-    if (*above == Sign::negative) {  // x/d beyond the midpoint to up
-      y = up;
-    } else if (*below == Sign::positive) {  // x/d below the midpoint to down
-      y = down;
-    } else {
-      if (*above == Sign::zero && !even(y)) y = up;  // a tie: the even neighbour
-      if (*below == Sign::zero && !even(y)) y = down;
-      return negative ? -y : y;
+    // r = x − y d, exactly: x/d against y. Then against the midpoint m = y ± h to the neighbour
+    // on that side, h half their gap (a power of two, so h d is exact): x − m d = r ∓ h d.
+    const Expansion r = x - d * Expansion(y);
+    if (!r.exact()) return std::nullopt;
+    if (r.sign() == Sign::zero) return negative ? -y : y;
+    const bool above = r.sign() == Sign::positive;
+    const double neighbour = above ? FilterInterval::next_up(y) : FilterInterval::next_down(y);
+    const double h = std::fabs(neighbour - y) / 2;
+    const Expansion t = above ? r - d * Expansion(h) : r + d * Expansion(h);
+    if (!t.exact()) return std::nullopt;
+    if (t.sign() == Sign::zero) {  // a tie: the even one of y and its neighbour
+      const double even_one = even(y) ? y : neighbour;
+      return negative ? -even_one : even_one;
     }
+    if ((t.sign() == Sign::negative) == above) return negative ? -y : y;  // x/d within half a gap of y
+    y = neighbour;
   }
   return std::nullopt;
 }

@@ -160,9 +160,10 @@ class Expansion {
 };
 
 // X/D rounded to the nearest double, ties to even (what Boost's conversion of the rational X/D
-// gives), from the quotient of the approximations by exact comparisons with the midpoints between
-// neighbouring doubles (+0 for X = 0); nothing when an expansion is not exact, the quotient is
-// subnormal or near overflow, or a few steps do not reach it.
+// gives), from the quotient y of the approximations: the exact remainder x − y·d tells on which
+// side of y the quotient lies, and it less or plus half the gap to that neighbour times d, against
+// the midpoint (+0 for X = 0); nothing when an expansion is not exact, the quotient is subnormal
+// or near overflow, or a few steps do not reach it.
 std::optional<double> rounded_quotient(const Expansion& X, const Expansion& D);
 
 // The value of an exact expansion as a rational.

@@ -237,8 +237,8 @@ template <class K>
   const ExactDouble value = K::template eval<ExactDouble>(xd);
   if (value.exact()) return value.sign();
   // The interval stage, unless the double evaluation is 0: round-to-nearest is monotone, so that
-  // value lies in the interval evaluation (each end rounded to nearest, then widened; barring
-  // contractions into fma, which the build does not make), which then holds 0 and does not decide.
+  // value lies in the interval evaluation (each end rounded to nearest, then widened; no
+  // contraction into fma: -ffp-contract=off, CMakeLists.txt), which then holds 0 and does not decide.
   // Either way the exact stage gives the answer: this only chooses the faster path.
   if (value.value() != 0) {
     ++filter_stats().interval_stage;

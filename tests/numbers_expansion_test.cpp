@@ -156,6 +156,10 @@ TEST(RoundedQuotient, TiesGoToTheEvenNeighbour) {
   EXPECT_EQ(rounded_quotient(Expansion(1) + Expansion(3 * 0x1p-53), Expansion(1)), 1 + 0x1p-51);
   // The same ties, negative, and scaled through the divisor: (6 + 3·2^-52) / −6 = −(1 + 2^-53).
   EXPECT_EQ(rounded_quotient(Expansion(6) + Expansion(3 * 0x1p-52), Expansion(-6)), -1.0);
+  // Below a power of two the gap halves: 1 − 2^-54 lies half-way between 1 − 2^-53 (odd) and 1
+  // (even); 1 − 3·2^-54 between 1 − 2^-52 (even) and 1 − 2^-53.
+  EXPECT_EQ(rounded_quotient(Expansion(1) - Expansion(0x1p-54), Expansion(1)), 1.0);
+  EXPECT_EQ(rounded_quotient(Expansion(1) - Expansion(3 * 0x1p-54), Expansion(1)), 1 - 0x1p-52);
   EXPECT_EQ(rounded_quotient(Expansion(1), Expansion(3)), 1.0 / 3);
   EXPECT_EQ(rounded_quotient(Expansion(0), Expansion(3)), 0.0);
 }

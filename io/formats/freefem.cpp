@@ -151,20 +151,23 @@ namespace {
 // after the header holds the other kind's count of values, the message says so: the header was
 // most likely meant to declare that kind.
 std::string header_hint(std::string_view text, std::int64_t kind) {
-  int line = 1, values = 0, seen = 0;  // seen: non-blank lines; the first is the header
-  for (std::size_t i = 0; i <= text.size() && seen < 2; ++i) {
-    const bool end_of_line = i == text.size() || text[i] == '\n';
-    if (!end_of_line) {
-      if (!std::isspace(static_cast<unsigned char>(text[i])) && (i == 0 || std::isspace(static_cast<unsigned char>(text[i - 1])))) ++values;
+  // The tokens after the header's two, on the line of the first of them (the header may span two
+  // lines, or share its line with values).
+  int line = 1, tokens = 0, data_line = 0, values = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      if (data_line) break;
+      ++line;
       continue;
     }
-    if (values > 0 && ++seen == 2) break;
-    values = 0;
-    ++line;
+    if (std::isspace(static_cast<unsigned char>(text[i])) || (i > 0 && !std::isspace(static_cast<unsigned char>(text[i - 1])))) continue;
+    if (++tokens <= 2) continue;  // a token starts here: the header's, or a value
+    if (!data_line) data_line = line;
+    ++values;
   }
-  if (seen < 2 || values == kind || (values != 1 && values != 3)) return "";
-  return " (line " + std::to_string(line) + " holds " + std::to_string(values) + (values == 1 ? " value" : " values") + ", where the header declares " +
-         std::to_string(kind) + " per vertex: should its second number be " + std::to_string(values) + "?)";
+  if (!data_line || values == kind || (values != 1 && values != 3)) return "";
+  return " (line " + std::to_string(data_line) + " holds " + std::to_string(values) + (values == 1 ? " value" : " values") +
+         ", where the header declares " + std::to_string(kind) + " per vertex: should its second number be " + std::to_string(values) + "?)";
 }
 
 }  // namespace

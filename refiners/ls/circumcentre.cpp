@@ -45,7 +45,9 @@ std::optional<DoubleQuotients> double_quotients(const Point2<double>& a, const P
   const ExactDouble X = ExactDouble(a.x) * d.det + d.nx, Y = ExactDouble(a.y) * d.det + d.ny;
   if (!X.exact() || !Y.exact() || !d.det.exact() || d.det.value() == 0) return std::nullopt;
   const auto normal = [](double v) { return v == 0 || (std::fabs(v) >= 0x1p-1021 && std::fabs(v) <= 0x1p1022); };
-  const DoubleQuotients q{X.value(), Y.value(), d.det.value(), X.value() / d.det.value(), Y.value() / d.det.value()};
+  // +0 for a zero quotient, as Boost's conversion gives (0 divided by a negative det is −0).
+  const auto plus_zero = [](double v) { return v == 0 ? 0.0 : v; };
+  const DoubleQuotients q{X.value(), Y.value(), d.det.value(), plus_zero(X.value() / d.det.value()), plus_zero(Y.value() / d.det.value())};
   if (!normal(q.x) || !normal(q.y)) return std::nullopt;
   return q;
 }

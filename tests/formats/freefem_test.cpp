@@ -233,6 +233,9 @@ TEST(Bamg, RefusesWhatIsNotAMetricAndCountsThatDoNotMatch) {
       {"2 1\n1 0 1\n1 0 1\n", "m.mtr:2: vertex 2: size h = 0 is not positive (the metric is I/h²) (line 2 holds 3 values, "
                                "where the header declares 1 per vertex: should its second number be 3?)"},
       {"\n2 3\n\n0.5\n0.5\n", "(line 4 holds 1 value, where the header declares 3 per vertex: should its second number be 1?)"},
+      // A header over two lines, or sharing its line with values: the line of the first value.
+      {"2\n1\n1 0 1\n1 0 1\n", "(line 3 holds 3 values, where the header declares 1 per vertex: should its second number be 3?)"},
+      {"2 3 0.5\n0.5\n", "(line 1 holds 1 value, where the header declares 3 per vertex: should its second number be 1?)"},
   };
   for (const auto& [text, message] : cases) {
     const std::string error = error_of([&, text = text] { read_bamg_metric(text, "m.mtr"); });
