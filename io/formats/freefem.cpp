@@ -146,28 +146,34 @@ std::vector<FileText> write_freefem_file(const MeshFile& m, const std::string& p
 
 namespace {
 
-// BAMG reads the values as a stream of numbers, so "nbv 1" over lines of three values is a file of
-// 3·nbv sizes, refused only where one of them is not positive or at the end. When the first line
-// after the header holds the other kind's count of values, the message says so: the header was
-// most likely meant to declare that kind.
-std::string header_hint(std::string_view text, std::int64_t kind) {
-  // The tokens after the header's two, on the line of the first of them (the header may span two
-  // lines, or share its line with values).
-  int line = 1, tokens = 0, data_line = 0, values = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      if (data_line) break;
+// BAMG reads the values as a stream of numbers, so a file whose lines do not hold one vertex each
+// is refused only where a value is not what its place in the stream needs, or at the end, often
+// lines later. The message then names the first line that does not hold as many values as the
+// header declares per vertex: when it is the first line of values and holds the other kind's
+// count, the header was most likely meant to declare that kind; otherwise every vertex after
+// that line is read shifted. Nothing when every line holds one vertex.
+std::string line_hint(std::string_view text, std::int64_t kind) {
+  int line = 1, tokens = 0, values = 0;  // values: on this line, after the header's two tokens
+  bool first = true;                     // no line of values ended yet
+  const auto hint = [&]() -> std::string {
+    const std::string held = "line " + std::to_string(line) + " holds " + std::to_string(values) + (values == 1 ? " value" : " values") +
+                             ", where the header declares " + std::to_string(kind) + " per vertex";
+    if (first && (values == 1 || values == 3))
+      return " (" + held + ": should its second number be " + std::to_string(values) + "?)";
+    return " (" + held + ": the vertices after it are read shifted)";
+  };
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    if (i == text.size() || text[i] == '\n') {
+      if (values > 0 && values != kind) return hint();
+      if (values > 0) first = false;
+      values = 0;
       ++line;
       continue;
     }
     if (std::isspace(static_cast<unsigned char>(text[i])) || (i > 0 && !std::isspace(static_cast<unsigned char>(text[i - 1])))) continue;
-    if (++tokens <= 2) continue;  // a token starts here: the header's, or a value
-    if (!data_line) data_line = line;
-    ++values;
+    if (++tokens > 2) ++values;  // a token starts here: the header's, or a value
   }
-  if (!data_line || values == kind || (values != 1 && values != 3)) return "";
-  return " (line " + std::to_string(data_line) + " holds " + std::to_string(values) + (values == 1 ? " value" : " values") +
-         ", where the header declares " + std::to_string(kind) + " per vertex: should its second number be " + std::to_string(values) + "?)";
+  return "";
 }
 
 }  // namespace
@@ -185,7 +191,7 @@ std::vector<predicates::Sym2<Rational>> read_bamg_metric(std::string_view text, 
       metrics.push_back(kind == 1 ? read_size(r, entry("vertex", i)) : read_tensor(r, entry("vertex", i)));
     expect_end(r, "metrics", nbv);
   } catch (const InputError& e) {
-    throw InputError(e.what() + header_hint(text, kind));
+    throw InputError(e.what() + line_hint(text, kind));
   }
   return metrics;
 }

@@ -236,6 +236,9 @@ TEST(Bamg, RefusesWhatIsNotAMetricAndCountsThatDoNotMatch) {
       // A header over two lines, or sharing its line with values: the line of the first value.
       {"2\n1\n1 0 1\n1 0 1\n", "(line 3 holds 3 values, where the header declares 1 per vertex: should its second number be 3?)"},
       {"2 3 0.5\n0.5\n", "(line 1 holds 1 value, where the header declares 3 per vertex: should its second number be 1?)"},
+      // A short line further on: the failure comes lines later, from values shifted across lines.
+      {"3 3\n1 0 1\n1 0\n1 0 1\n", "m.mtr:4: the file ends where vertex 3: a22 was expected"},
+      {"3 3\n1 0 1\n1 0\n1 0 1\n", "(line 3 holds 2 values, where the header declares 3 per vertex: the vertices after it are read shifted)"},
   };
   for (const auto& [text, message] : cases) {
     const std::string error = error_of([&, text = text] { read_bamg_metric(text, "m.mtr"); });
