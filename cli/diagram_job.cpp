@@ -14,7 +14,8 @@ oracle::Diagram exact_diagram(const geometry::Mesh<Rational>& in, const std::str
     oracle::DiagramOptions options;
     options.exact_only = o.exact_only;
     options.threads = o.threads;
-    options.progress = progress_printer(o.quiet);
+    if (const auto print = progress_printer(o.quiet))
+      options.progress = [print, label = o.progress_label](const std::string& line) { print(label + line); };
     return oracle::compute_diagram(in, options);
   } catch (const std::domain_error& e) {  // a degenerate input the oracle declines, named
     throw UsageError(name + ": " + e.what());

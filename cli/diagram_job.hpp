@@ -17,6 +17,7 @@ struct DiagramOutputs {
   bool quiet = false;
   bool exact_only = false;  // build every point exactly, no filtered constructions
   int threads = 0;          // 0: every core
+  std::string progress_label = "";  // before each progress line (refine's "--svg: ")
 };
 
 struct DiagramJob {

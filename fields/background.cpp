@@ -12,7 +12,7 @@ namespace {
 
 // Triangles and sites counted from 1 in the order the file lists them (as Medit and FreeFem number
 // them), and said so: a reader counting from 0 would be one off.
-std::string site_text(std::size_t i) { return "background site " + std::to_string(i + 1); }
+std::string site_text(std::size_t i) { return "background site " + std::to_string(i + 1) + " (counted from 1)"; }
 std::string triangle_text(std::size_t t, const std::array<int, 3>& v) {
   return "background triangle " + std::to_string(t + 1) + " (sites " + std::to_string(v[0] + 1) + ", " + std::to_string(v[1] + 1) +
          ", " + std::to_string(v[2] + 1) + "; counted from 1 in the file's order)";
@@ -26,7 +26,7 @@ const geometry::Mesh<Rational>& checked(const geometry::Mesh<Rational>& mesh) {
   for (std::size_t i = 0; i < mesh.metrics.size(); ++i) try {
       predicates::Metric2{mesh.metrics[i]};
     } catch (const predicates::NotPositiveDefinite& e) {
-      throw BackgroundMeshError(site_text(i) + " (counted from 1): " + e.what());
+      throw BackgroundMeshError(site_text(i) + ": " + e.what());
     }
   if (mesh.triangles.empty()) throw BackgroundMeshError("the background mesh has no triangles");
   const auto n = static_cast<int>(mesh.sites.size());
@@ -67,7 +67,7 @@ std::vector<Point2<FilterInterval>> site_intervals(const std::vector<Point2<Rati
     x.push_back(around(sites[i]));
     if (!std::isfinite(x.back().x.lo) || !std::isfinite(x.back().x.hi) || !std::isfinite(x.back().y.lo) ||
         !std::isfinite(x.back().y.hi))
-      throw BackgroundMeshError(site_text(i) + " (counted from 1) " + geometry::point_excerpt(sites[i]) +
+      throw BackgroundMeshError(site_text(i) + " " + geometry::point_excerpt(sites[i]) +
                                 " lies beyond the range of doubles");
   }
   return x;

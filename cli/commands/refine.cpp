@@ -63,15 +63,15 @@ Picture picture(const refiners::RefinerEntry& entry, const geometry::Mesh<double
   if (!entry.dual_of_diagram) return {io::mesh_svg(m, what), "  picture: " + o.svg + "\n", std::nullopt};
   std::string declined;
   try {
-    oracle::DiagramOptions options;
-    if (const auto print = progress_printer(o.quiet))
-      options.progress = [print](const std::string& line) { print("--svg: " + line); };  // the run's lines are done
-    oracle::Diagram d = oracle::compute_diagram(geometry::exact(m), options);
+    DiagramOutputs options;
+    options.quiet = o.quiet;
+    options.progress_label = "--svg: ";  // the run's lines are done
+    oracle::Diagram d = exact_diagram(geometry::exact(m), "its sites", options);
     const std::string verdict = oracle::compare_with_dual(d, m.triangles, 0).is_dual() ? "the mesh is its dual" : "the mesh is not its dual";
     std::string svg = io::diagram_svg(d, what + "; the exact D|Ω of its vertices and its dual (dashed): " + verdict);
     return {std::move(svg), "  picture: " + o.svg + " (the exact D|Ω of the final sites with its dual; " + verdict + ")\n", std::move(d)};
-  } catch (const std::domain_error& e) {
-    declined = std::string("the oracle declined its sites: ") + e.what();
+  } catch (const UsageError& e) {  // "its sites: why"
+    declined = std::string("the oracle declined ") + e.what();
   } catch (const std::bad_alloc&) {
     declined = "the exact diagram did not fit in memory";
   }
