@@ -1,5 +1,6 @@
 #include "refiners/registry.hpp"
 
+#include "refiners/bwy/entry.hpp"
 #include "refiners/ls/entry.hpp"
 #include "refiners/star/entry.hpp"
 
@@ -9,6 +10,7 @@ const std::vector<RefinerEntry>& registered_refiners() {
   static const std::vector<RefinerEntry> entries = {
       star::entry(),
       ls::entry(),
+      bwy::entry(),
   };
   return entries;
 }

@@ -277,6 +277,7 @@ void VertexSubdivision::update(int n, int v) {
   for (int id : held) {
     Vertex& q = vertices_[static_cast<std::size_t>(id)];
     if (--q.holders > 0) continue;
+    released_.push_back(id);
     std::vector<int>& same_trio = by_trio_[q.sites];
     std::erase(same_trio, id);
     if (same_trio.empty()) by_trio_.erase(q.sites);
@@ -285,6 +286,7 @@ void VertexSubdivision::update(int n, int v) {
 
 void VertexSubdivision::insert(const MetricSite& s) {
   created_.clear();
+  released_.clear();
   sites_.push_back(s);
   insertion_start_ = nodes_.size();
   update(0, static_cast<int>(sites_.size()) - 1);

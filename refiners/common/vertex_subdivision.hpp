@@ -61,6 +61,8 @@ class VertexSubdivision {
   const std::vector<Vertex>& vertices() const { return vertices_; }
   // The vertices found by the last insertion, ordered by their sites, then by where they are.
   const std::vector<int>& created() const { return created_; }
+  // The vertices the last insertion ended (their holders fell to 0), in the order it ended them.
+  const std::vector<int>& released() const { return released_; }
   // The sites that can be nearest somewhere in b: the candidates of every leaf that meets b.
   std::vector<int> candidates_near(const Box& b) const;
   // The leaves where D could not be resolved (see above), with their candidates; empty when every
@@ -127,7 +129,7 @@ class VertexSubdivision {
   std::vector<Node> nodes_;
   std::vector<Vertex> vertices_;
   std::map<std::array<int, 3>, std::vector<int>> by_trio_;  // live vertices
-  std::vector<int> created_;
+  std::vector<int> created_, released_;
   int unresolved_leaves_ = 0;
   std::size_t insertion_start_ = 0;  // nodes before the last insertion
 };

@@ -4,11 +4,11 @@
 #include "predicates/angle.hpp"
 #include "predicates/orientation.hpp"
 #include "refiners/common/exact_split.hpp"
+#include "refiners/common/run_record.hpp"
 #include "refiners/common/sites.hpp"
 #include "refiners/ls/delaunay_in_metric.hpp"
 #include "refiners/ls/ls_varying.hpp"
 #include "refiners/ls/rules.hpp"
-#include "refiners/ls/run_record.hpp"
 #include "refiners/ls/segment_cells.hpp"
 #include "refiners/ls/subsegments.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
@@ -22,6 +22,7 @@ namespace {
 
 using common::metric_text;
 using common::point_text;
+using common::within_ulps;
 
 template <class T>
 T squared_length(const Sym2<double>& M, const Point2<T>& p, const Point2<double>& v) {
@@ -221,7 +222,7 @@ class LsRefinement {
                  " is to be split in a cell that holds no double point exactly on it" + corner_note(domain_, t11_, a, b);
       return;
     }
-    stalled_ = subsegments_.too_fine(domain_, t11_, s, sites_.points[a], sites_.points[b], *z);
+    stalled_ = subsegments_.too_fine(domain_, corner_note(domain_, t11_), s, sites_.points[a], sites_.points[b], *z);
     if (!stalled_.empty()) return;
     const int k = cause == Rule::encroached_segment ? insert(*z, cause, 0) : insert(*z, Rule::violator_encroaches, 0, 0, cause);
     if (k < 0) return;
@@ -239,7 +240,7 @@ class LsRefinement {
       return -1;
     }
     const double nearest = sites_.grid.nearest_site2(q, M, sites_.points);
-    record_.insertion(rule, q, nearest, radius, displacement, for_rule);
+    record_.insertion(static_cast<int>(rule), q, nearest, radius, displacement, static_cast<int>(for_rule));
     const int k = sites_.add(q, M);
     if (sites_.grow_grid()) boxes_.refile(sites_.grid);
     for (int t : diagram_.insert(k, q)) queue_if_violator(t);
@@ -261,7 +262,7 @@ class LsRefinement {
   common::FiledBoxes boxes_;  // near_segment of each subsegment
   std::deque<std::pair<int, std::array<int, 3>>> violators_;
   std::string stalled_;
-  RunRecord record_;
+  common::RunRecord record_{rule_table()};
 };
 
 }  // namespace

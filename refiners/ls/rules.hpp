@@ -22,7 +22,10 @@
 // Rules 5 to 8 cannot fire while every site has one metric (delaunay_in_metric.hpp): every arc
 // lies in its wedge, and the dual of every Voronoi vertex is a counter-clockwise triangle, or a
 // convex polygon of cocircular sites split into such triangles.
+#include "refiners/common/run_record.hpp"
+
 #include <array>
+#include <vector>
 
 namespace anisocert::refiners::ls {
 
@@ -53,6 +56,13 @@ inline const char* rule_name(Rule rule) {
     case Rule::none: break;
   }
   return "none";
+}
+
+// The rules in priority order, numbered and named for the run's record.
+inline std::vector<common::RuleName> rule_table() {
+  std::vector<common::RuleName> table;
+  for (Rule rule : rules_by_priority) table.push_back({static_cast<int>(rule), rule_name(rule)});
+  return table;
 }
 
 }  // namespace anisocert::refiners::ls

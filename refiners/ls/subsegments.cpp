@@ -14,6 +14,7 @@ int Subsegments::add(int a, int b, int edge) {
   edge_.push_back(edge);
   queued_.push_back(false);
   const int s = static_cast<int>(ends_.size()) - 1;
+  by_ends_[std::minmax(a, b)] = s;
   queue(s);
   return s;
 }
@@ -35,8 +36,16 @@ std::optional<int> Subsegments::pop() {
 int Subsegments::split(int s, int k) {
   const auto [a, b] = ends(s);
   ends_[static_cast<std::size_t>(s)] = {a, k};
+  by_ends_.erase(std::minmax(a, b));
+  by_ends_[std::minmax(a, k)] = s;
   queue(s);
   return add(k, b, edge_[static_cast<std::size_t>(s)]);
+}
+
+std::optional<int> Subsegments::find(int a, int b) const {
+  const auto it = by_ends_.find(std::minmax(a, b));
+  if (it == by_ends_.end()) return std::nullopt;
+  return it->second;
 }
 
 std::pair<Point2<double>, Point2<double>> Subsegments::edge_ends(const common::Domain& domain, int s) const {
@@ -50,7 +59,7 @@ Rational edge_parameter(const Point2<double>& c0, const Point2<double>& c1, cons
   return (Rational(p.y) - Rational(c0.y)) / (Rational(c1.y) - Rational(c0.y));
 }
 
-std::string Subsegments::too_fine(const common::Domain& domain, const Theorem11Conditions& t11, int s, const Point2<double>& pa,
+std::string Subsegments::too_fine(const common::Domain& domain, const CornerNote& corner_note, int s, const Point2<double>& pa,
                                   const Point2<double>& pb, const Point2<double>& z) const {
   const int e = edge_[static_cast<std::size_t>(s)];
   const auto [c0, c1] = edge_ends(domain, s);
@@ -61,11 +70,11 @@ std::string Subsegments::too_fine(const common::Domain& domain, const Theorem11C
   const std::string what = static_cast<std::size_t>(e) < n ? "edge " + std::to_string(e) : "interior segment " + std::to_string(static_cast<std::size_t>(e) - n);
   // The corner refinement runs into: an end of the subsegment, or else the edge's end nearer z
   // (pieces shrink towards it from a few subsegments away).
-  std::string note = corner_note(domain, t11, a, b);
+  std::string note = corner_note(a, b);
   if (note.empty()) {
     const auto [k0, k1] = domain.segment_ends(static_cast<std::size_t>(e));
     const int k = std::hypot(z.x - c0.x, z.y - c0.y) <= std::hypot(z.x - c1.x, z.y - c1.y) ? k0 : k1;
-    note = corner_note(domain, t11, k, k);
+    note = corner_note(k, k);
   }
   return "a split of " + what + " would leave a piece below 2⁻³⁰ of its length" + note;
 }

@@ -6,6 +6,7 @@
 #include "refiners/ls/theorem11_conditions.hpp"
 
 #include <deque>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,6 +26,9 @@ class Subsegments {
   // Splits s = ab at site k: s becomes ak and kb is added; both are queued. The index of kb.
   int split(int s, int k);
 
+  // The subsegment with ends a and b (either order), if any.
+  std::optional<int> find(int a, int b) const;
+
   std::size_t size() const { return ends_.size(); }
   std::size_t queued() const { return queue_.size(); }
   const std::pair<int, int>& ends(int s) const { return ends_[static_cast<std::size_t>(s)]; }
@@ -37,12 +41,14 @@ class Subsegments {
   // Why subsegment s from pa to pb must not be split at z, or empty: a piece would be below 2⁻³⁰ of
   // its edge. Splits that run into a corner (LS Theorem 11's separation failing there) would go on
   // down to the resolution of doubles; no run within its budgets splits an edge 2³⁰ times.
-  std::string too_fine(const common::Domain& domain, const Theorem11Conditions& t11, int s, const predicates::Point2<double>& pa,
+  // note(a, b): what the stop says of the corner it runs into (corner_note).
+  std::string too_fine(const common::Domain& domain, const CornerNote& note, int s, const predicates::Point2<double>& pa,
                        const predicates::Point2<double>& pb, const predicates::Point2<double>& z) const;
 
  private:
   std::vector<std::pair<int, int>> ends_;
   std::vector<int> edge_;  // the segment of X each lies on
+  std::map<std::pair<int, int>, int> by_ends_;  // (lower end, higher end) → subsegment
   std::vector<bool> queued_;
   std::deque<int> queue_;
 };

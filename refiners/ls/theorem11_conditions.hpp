@@ -7,6 +7,8 @@
 // holds, not what the run did.
 #include "refiners/common/domain.hpp"
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace anisocert::refiners::ls {
@@ -26,6 +28,12 @@ Theorem11Conditions theorem11_conditions(const common::Domain& domain, const std
 // separation fails" (or holds, or is undecided; or θ_bound is beyond the theorem), for a
 // subsegment ab that ends at X's vertex k (sites 0 … V−1 are X's vertices); empty otherwise.
 std::string corner_note(const common::Domain& domain, const Theorem11Conditions& c, int a, int b);
+
+// A refiner's note for a stop near X's vertices a … b (LS's is corner_note above, bound to its run).
+using CornerNote = std::function<std::string(int a, int b)>;
+inline CornerNote corner_note(const common::Domain& domain, const Theorem11Conditions& c) {
+  return [&domain, &c](int a, int b) { return corner_note(domain, c, a, b); };
+}
 
 // sin²θ_bound, or the double just above it: "angle ≥ arcsin √s2" then implies "angle ≥ θ_bound"
 // exactly. At 30° and 45° it is the rational itself (1/4, 1/2), so that an angle of exactly

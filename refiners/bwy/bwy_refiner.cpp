@@ -1,0 +1,324 @@
+#include "refiners/bwy/bwy_refiner.hpp"
+
+#include "predicates/orientation.hpp"
+#include "refiners/bwy/dual_triangles.hpp"
+#include "refiners/bwy/rules.hpp"
+#include "refiners/common/vertex_in_domain.hpp"
+#include "refiners/ls/voronoi_refinement.hpp"
+
+#include <cmath>
+#include <deque>
+
+namespace anisocert::refiners::bwy {
+namespace {
+
+using common::CertifiedPoint;
+using common::MetricSite;
+using ls::ExactTie;
+using predicates::Point2;
+
+ls::VoronoiRules bwy_rules() {
+  return {number(Rule::encroached_segment), number(Rule::split_instead), number(Rule::unresolved), number(Rule::island), rule_table()};
+}
+
+// A tie's key in T (a Voronoi vertex's is its id): −1 − its index among the ties in closed Ω.
+int tie_key(std::size_t i) { return -1 - static_cast<int>(i); }
+
+std::string edge_text(int a, int b) { return std::to_string(a) + "–" + std::to_string(b); }
+
+class BwyRefinement : public ls::VoronoiRefinement {
+ public:
+  BwyRefinement(const common::Domain& domain, const fields::MetricField& field, const BwyParameters& p)
+      : VoronoiRefinement(domain, field, bwy_rules(), p.filters, [](int, int) { return std::string(); }), p_(p) {
+    start();
+    for (std::size_t q = 0; q < diagram_.vertices().size(); ++q) enter(static_cast<int>(q));
+    enter_ties();
+  }
+
+  std::size_t queued() const {
+    std::size_t n = subsegments_.queued() + ties_.size() + unedged_.size();
+    for (const auto& q : vertex_queues_) n += q.size();
+    return n;
+  }
+  std::string done() const { return "no rule of BWY §3.2.2 applies"; }
+
+  bool step() {
+    if (split_encroached() || not_an_edge() || attack_unresolved()) return true;
+    for (std::size_t k = 0; k < vertex_rules.size(); ++k) {
+      if (vertex_rule(k)) return true;
+      if (tie_rule(vertex_rules[k])) return true;
+    }
+    return island();
+  }
+
+  BwyResult result(const common::Stop& stop) {
+    BwyResult r;
+    r.mesh.sites = sites_.points, r.mesh.metrics = sites_.metrics, r.mesh.domain = domain_.corners();
+    r.mesh.segments = subsegments_.all();
+    for (int t : triangles_.alive()) r.mesh.triangles.push_back(triangles_.triangle(t).sites);
+    r.left_counted = !stop.out_of_time;
+    const std::string stalled = stalled_;
+    if (r.left_counted) {
+      for (std::size_t s = 0; s < subsegments_.size(); ++s) {
+        const auto [a, b] = subsegments_.ends(static_cast<int>(s));
+        r.encroached_left += !encroachers(static_cast<int>(s)).empty();
+        r.unedged_left += !triangles_.is_edge(a, b);
+      }
+      for (std::size_t q = 0; q < diagram_.vertices().size(); ++q)
+        if (in_T(static_cast<int>(q)))
+          r.violators_left += std::any_of(vertex_rules.begin(), vertex_rules.end(), [&](Rule rule) { return applies(rule, static_cast<int>(q)); });
+      for (std::size_t i = 0; i < exact_ties_.size(); ++i) r.violators_left += exact_ties_[i].rule != 0 || tie_overlaps(i);
+      r.embedding_failure = embedding_failure();
+    }
+    stalled_ = stalled;
+    record_.fill(r, stop.reason, stop.finished);
+    if (stop.finished && !r.embedding_failure.empty()) {
+      r.consistent = false;
+      r.stop_reason = "no rule applies, but T is no triangulation of Ω by BWY §3.2.1: " + r.embedding_failure;
+    }
+    return r;
+  }
+
+ private:
+  static constexpr std::array<Rule, 4> vertex_rules{Rule::bad_shape, Rule::several_vertices, Rule::overlap, Rule::too_large};
+
+  bool in_T(int q) const {
+    return diagram_.vertices()[static_cast<std::size_t>(q)].holders > 0 && !triangles_.of_key(q).empty();
+  }
+
+  // Vertex q into T when it lies in closed Ω (a stall when that is undecided), with its triangle
+  // counter-clockwise (or flat), and into every vertex rule's queue.
+  void enter(int q) {
+    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+    if (v.holders == 0) return;
+    const auto in = common::in_closed_domain(domain_, point(q));
+    if (!in) {
+      stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " lies in Ω is undecided (it is on ∂Ω or too near)";
+      return;
+    }
+    if (!*in) return;
+    std::array<int, 3> t = v.sites;
+    const Sign o = predicates::orientation(sites_.points[static_cast<std::size_t>(t[0])], sites_.points[static_cast<std::size_t>(t[1])],
+                                           sites_.points[static_cast<std::size_t>(t[2])]);
+    if (o == Sign::negative) std::swap(t[1], t[2]);
+    triangles_.add(q, t, o == Sign::zero);
+    for (auto& queue : vertex_queues_) queue.push_back(q);
+  }
+  void leave(int key) {
+    for (const auto& [a, b] : triangles_.remove(key))
+      if (const auto s = subsegments_.find(a, b)) queue_unedged(*s);
+  }
+  // The ties' fans in T, afresh (every insertion finds the ties again).
+  void enter_ties() {
+    for (int i = 0; i < tie_keys_; ++i) leave(tie_key(static_cast<std::size_t>(i)));
+    tie_keys_ = static_cast<int>(exact_ties_.size());
+    for (std::size_t i = 0; i < exact_ties_.size(); ++i)
+      for (const auto& t : exact_ties_[i].triangles) triangles_.add(tie_key(i), t, false);
+  }
+
+  void inserted(int) override {
+    for (int q : diagram_.released()) leave(q);
+    for (int q : diagram_.created()) enter(q);
+    enter_ties();
+  }
+  void not_encroached(int s) override { queue_unedged(s); }
+  void queue_unedged(int s) {
+    if (static_cast<std::size_t>(s) >= unedged_queued_.size()) unedged_queued_.resize(static_cast<std::size_t>(s) + 1, 0);
+    if (unedged_queued_[static_cast<std::size_t>(s)]) return;
+    unedged_queued_[static_cast<std::size_t>(s)] = 1;
+    unedged_.push_back(s);
+  }
+
+  // Rule 2: a subsegment that is no edge of T gets a site on it where d_a = d_b. It is not
+  // encroached (rule 1's queue is empty, and every insertion queues the subsegments it reaches),
+  // so that point lies in the closed cells of a and b.
+  bool not_an_edge() {
+    while (!unedged_.empty()) {
+      const int s = unedged_.front();
+      unedged_.pop_front();
+      unedged_queued_[static_cast<std::size_t>(s)] = 0;
+      const auto [a, b] = subsegments_.ends(s);
+      if (triangles_.is_edge(a, b)) continue;
+      split(s, {site(a), site(b)}, {site(a), site(b)}, number(Rule::not_an_edge));
+      return true;
+    }
+    return false;
+  }
+
+  // The next vertex of T to which vertex_rules[k] applies gets a site (conditionally).
+  bool vertex_rule(std::size_t k) {
+    const Rule rule = vertex_rules[k];
+    auto& queue = vertex_queues_[k];
+    while (!queue.empty()) {
+      const int q = queue.front();
+      queue.pop_front();
+      if (!in_T(q)) continue;
+      const bool bad = applies(rule, q);
+      if (!stalled_.empty()) return true;
+      if (!bad) continue;
+      const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+      const auto [c, displacement] = rounded_vertex(q);
+      const double radius = std::sqrt(squared_distance(site(v.sites[0]), c));
+      if (!attack(c, number(rule), radius, "the Voronoi vertex of sites " + trio_text(v.sites), displacement)) queue.push_front(q);
+      return true;
+    }
+    return false;
+  }
+  // The first tie to which `rule` applies gets a site at its vertex (conditionally).
+  bool tie_rule(Rule rule) {
+    for (std::size_t i = 0; i < exact_ties_.size(); ++i) {
+      const JudgedTie& judged_tie = exact_ties_[i];
+      if (judged_tie.rule != number(rule) && !(rule == Rule::overlap && tie_overlaps(i))) continue;
+      const ExactTie& tie = judged_tie.tie;
+      const auto [q, displacement] = rounded(tie.c);
+      attack(q, number(rule), std::sqrt(squared_distance(site(tie.sites[0]), q)),
+             "the Voronoi vertex of degree " + std::to_string(tie.sites.size()) + " of sites " + sites_text(tie.sites), displacement);
+      return true;
+    }
+    return false;
+  }
+  static std::string sites_text(const std::vector<int>& sites) {
+    std::string out;
+    for (int u : sites) out += (out.empty() ? "" : ", ") + std::to_string(u);
+    return out;
+  }
+
+  // Whether `rule` (3 to 6) applies at vertex q of T, decided exactly; sets stalled_ when a sign is
+  // undecided.
+  bool applies(Rule rule, int q) {
+    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+    const int t = triangles_.of_key(q).front();
+    switch (rule) {
+      case Rule::bad_shape: return badly_shaped(q);
+      case Rule::several_vertices: return triangles_.same_sites(t).size() > 1;
+      case Rule::overlap: return overlaps(t);
+      case Rule::too_large: {
+        if (p_.size <= 0) return false;
+        const CertifiedPoint P = point(q);
+        const MetricSite a = site(v.sites[0]);
+        const auto large = common::sign_at<1>({&P}, [&](const auto& X, auto of) {
+          using T = std::decay_t<decltype(X[0].x)>;
+          return common::distance2(common::lift<T>(a, of), X[0].x, X[0].y) - of(p_.size) * of(p_.size);
+        });
+        if (!large) stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is too large is undecided";
+        return large == Sign::positive;
+      }
+      default: return false;
+    }
+  }
+  // Rule 3: r(v)² > B² δ(t_v)², i.e. r(v)² > B² d_p(p, q)² for one of the triangle's edges pq and one
+  // of its ends p (δ is the least of these six lengths).
+  bool badly_shaped(int q) {
+    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+    const CertifiedPoint P = point(q);
+    const MetricSite a = site(v.sites[0]);
+    const double B = p_.shape_bound;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        if (i == j) continue;
+        const MetricSite from = site(v.sites[static_cast<std::size_t>(i)]), to = site(v.sites[static_cast<std::size_t>(j)]);
+        const auto bad = common::sign_at<1>({&P}, [&](const auto& X, auto of) {
+          using T = std::decay_t<decltype(X[0].x)>;
+          const T r2 = common::distance2(common::lift<T>(a, of), X[0].x, X[0].y);
+          const T l2 = common::distance2(common::lift<T>(from, of), of(to.p.x), of(to.p.y));
+          return r2 - of(B) * of(B) * l2;
+        });
+        if (!bad) {
+          stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is badly shaped is undecided";
+          return false;
+        }
+        if (*bad == Sign::positive) return true;
+      }
+    return false;
+  }
+  // Rule 5 at triangle t: flat, or another triangle on one of its edges has its third vertex on
+  // t's side of that edge.
+  bool overlaps(int t) const {
+    const auto& tri = triangles_.triangle(t);
+    if (tri.flat) return true;
+    for (int i = 0; i < 3; ++i) {
+      const int a = tri.sites[static_cast<std::size_t>(i)], b = tri.sites[static_cast<std::size_t>((i + 1) % 3)],
+                c = tri.sites[static_cast<std::size_t>((i + 2) % 3)];
+      for (int u : triangles_.on_edge(a, b))
+        if (u != t && side(a, b, third(u, a, b)) == side(a, b, c)) return true;
+    }
+    return false;
+  }
+  bool tie_overlaps(std::size_t i) const {
+    const auto& ts = triangles_.of_key(tie_key(i));
+    return std::any_of(ts.begin(), ts.end(), [&](int t) { return overlaps(t); });
+  }
+  int third(int t, int a, int b) const {
+    for (int u : triangles_.triangle(t).sites)
+      if (u != a && u != b) return u;
+    return a;  // a triangle with a repeated site: never made (sites are distinct)
+  }
+  Sign side(int a, int b, int c) const {
+    return predicates::orientation(sites_.points[static_cast<std::size_t>(a)], sites_.points[static_cast<std::size_t>(b)],
+                                   sites_.points[static_cast<std::size_t>(c)]);
+  }
+
+  // The tie's rule: 3 when r² > B²δ² for δ its polygon's shortest side, else 6 when r² > size², in
+  // rationals; the mesh gets the fan from its first site.
+  JudgedTie judged(const ExactTie& tie) const override {
+    const auto exact = [](double x) { return Rational(x); };
+    const MetricSite a = site(tie.sites[0]);
+    const auto A = common::lift<Rational>(a, exact);
+    const Rational r2 = common::distance2(A, tie.c.x, tie.c.y);
+    const Rational B2 = exact(p_.shape_bound) * exact(p_.shape_bound);
+    bool bad = false;
+    for (std::size_t k = 0; k < tie.sites.size() && !bad; ++k) {
+      const Point2<double>& p = sites_.points[static_cast<std::size_t>(tie.sites[k])];
+      const Point2<double>& q = sites_.points[static_cast<std::size_t>(tie.sites[(k + 1) % tie.sites.size()])];
+      bad = r2 > B2 * common::distance2(common::lift<Rational>(MetricSite{p, a.M}, exact), exact(q.x), exact(q.y));
+    }
+    const bool large = p_.size > 0 && r2 > exact(p_.size) * exact(p_.size);
+    return {tie, bad ? number(Rule::bad_shape) : large ? number(Rule::too_large) : 0, ls::fan(tie, 0)};
+  }
+
+  // Why T is not a local embedding (BWY §3.2.1: non-flat triangles whose vertices are exactly the
+  // sites, each boundary edge in exactly one, every other edge in two that do not overlap), or empty.
+  std::string embedding_failure() const {
+    std::vector<char> used(sites_.size(), 0);
+    const std::vector<int> alive = triangles_.alive();
+    for (int t : alive) {
+      const auto& tri = triangles_.triangle(t);
+      if (tri.flat) return "the triangle of sites " + trio_text(tri.sites) + " is flat";
+      for (int u : tri.sites) used[static_cast<std::size_t>(u)] = 1;
+    }
+    for (std::size_t u = 0; u < used.size(); ++u)
+      if (!used[u]) return "site " + std::to_string(u) + " is a vertex of no triangle";
+    for (std::size_t s = 0; s < subsegments_.size(); ++s) {
+      const auto [a, b] = subsegments_.ends(static_cast<int>(s));
+      if (subsegments_.on_boundary(domain_, static_cast<int>(s)) && triangles_.on_edge(a, b).size() != 1)
+        return "the boundary subsegment " + edge_text(a, b) + " is in " + std::to_string(triangles_.on_edge(a, b).size()) + " triangles";
+    }
+    for (int t : alive) {
+      const auto& tri = triangles_.triangle(t);
+      for (int i = 0; i < 3; ++i) {
+        const int a = tri.sites[static_cast<std::size_t>(i)], b = tri.sites[static_cast<std::size_t>((i + 1) % 3)];
+        const auto s = subsegments_.find(a, b);
+        if (s && subsegments_.on_boundary(domain_, *s)) continue;
+        const auto& on = triangles_.on_edge(a, b);
+        if (on.size() != 2) return "the edge " + edge_text(a, b) + " is in " + std::to_string(on.size()) + " triangles";
+      }
+      if (overlaps(t)) return "the triangle of sites " + trio_text(tri.sites) + " overlaps a neighbour";
+    }
+    return {};
+  }
+
+  BwyParameters p_;
+  DualTriangles triangles_;
+  int tie_keys_ = 0;  // the ties whose fans are in T
+  std::array<std::deque<int>, vertex_rules.size()> vertex_queues_;  // vertices of T to judge, rule by rule
+  std::deque<int> unedged_;             // subsegments to test for rule 2
+  std::vector<char> unedged_queued_;
+};
+
+}  // namespace
+
+BwyResult refine_bwy(const common::Domain& domain, const fields::MetricField& field, const BwyParameters& p, const common::Progress& progress) {
+  return common::run_refinement<BwyRefinement>(p, progress, domain, field, p);
+}
+
+}  // namespace anisocert::refiners::bwy
