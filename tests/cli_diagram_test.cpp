@@ -294,3 +294,36 @@ TEST(CliMesh, RefineRefusesBadInputBeforeTheRun) {
   EXPECT_NE(fractions.out.find("θ_bound = 13.3333°, size = 0.333333"), std::string::npos) << fractions.out;
   EXPECT_NE(fractions.out.find("check it with anisocert dual"), std::string::npos) << fractions.out;
 }
+
+// `refine --algo bwy` (issue 17) as a user runs it: the shock field, written as Medit files with a
+// picture of the exact diagram; the report names its stop (no rule of BWY §3.2.2 applies) and
+// decides §4.2's conditions for the run's B and G (the default G is the largest of Lemma 2 for
+// B = 1.5, 1.000984…, as `anisocert theory bwy --B 1.5` prints); `dual` confirms the mesh read
+// back from the Medit files. Each parameter just outside its range is refused by name with exit 2
+// and nothing written, as is another refiner's parameter.
+TEST(CliMesh, BwyRefinesTheShockFieldAndDualConfirmsIt) {
+  const std::string base = ::testing::TempDir() + "anisocert_bwy_" + std::to_string(getpid());
+  const Outcome r = run("refine --algo bwy --field shock --size 8 --quiet -o " + base + ".mesh --svg " + base + ".svg");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("stopped: no rule of BWY §3.2.2 applies"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("BWY §4.2 (decided exactly) for B = 1.5, G = 1.000984645: Lemma 2 holds, G²√(G⁴−1) ≤ 1 holds, G²√(G²+1) ≤ B holds"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("check it with anisocert dual"), std::string::npos) << r.out;
+  std::ifstream s(base + ".svg");
+  const std::string picture((std::istreambuf_iterator<char>(s)), std::istreambuf_iterator<char>());
+  EXPECT_NE(picture.find("bwy refiner, field shock"), std::string::npos);
+  EXPECT_NE(picture.find("its dual (dashed): the mesh is its dual"), std::string::npos);
+  const Outcome dual = run("dual " + base + ".mesh --quiet");
+  EXPECT_EQ(dual.exit_code, 0) << dual.out << dual.err;
+  EXPECT_NE(dual.out.find("the mesh is the dual of the anisotropic Voronoi diagram of its vertices"), std::string::npos) << dual.out;
+  for (const char* bad : {"--shape-bound 1", "--shape-bound 0.5", "--distortion 0.5", "--size -1"}) {
+    const Outcome refused = run(std::string("refine --algo bwy --quiet -o ") + base + "_never.json " + bad);
+    EXPECT_EQ(refused.exit_code, 2) << bad;
+    EXPECT_NE(refused.err.find(std::string(bad) + " is out of range"), std::string::npos) << bad << ": " << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(base + "_never.json")) << bad;
+  }
+  const Outcome ls_parameter = run("refine --algo bwy --theta-bound 20 --quiet -o " + base + "_never.json");
+  EXPECT_EQ(ls_parameter.exit_code, 2);
+  EXPECT_NE(ls_parameter.err.find("--theta-bound is not a parameter of --algo bwy"), std::string::npos) << ls_parameter.err;
+  EXPECT_FALSE(std::filesystem::exists(base + "_never.json"));
+}

@@ -12,11 +12,11 @@
 #include "refiners/common/exact_split.hpp"
 #include "refiners/common/vertex_subdivision.hpp"
 #include "refiners/ls/delaunay_in_metric.hpp"
-#include "refiners/ls/exact_tie.hpp"
+#include "refiners/common/exact_tie.hpp"
 #include "refiners/ls/ls_refiner.hpp"
 #include "refiners/ls/rules.hpp"
-#include "refiners/ls/segment_cells.hpp"
-#include "refiners/ls/segment_quadratics.hpp"
+#include "refiners/common/segment_cells.hpp"
+#include "refiners/common/segment_quadratics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -138,7 +138,7 @@ TEST(SegmentCells, AgreeWithTheNearestSitesAtExactSamples) {
     if (a.x == b.x && a.y == b.y) b.x += 1;
     sites.emplace_back(0, a), sites.emplace_back(1, b);
     for (int k = 2; k < 8; ++k) sites.emplace_back(k, Point2<double>{coordinate(rng) / 64.0, coordinate(rng) / 64.0});
-    const auto cells = refiners::ls::cells_along(a, b, M, sites);
+    const auto cells = refiners::common::cells_along(a, b, M, sites);
     for (int j = 0; j <= 64; ++j) {
       const Rational t(j, 64);
       const Point2<Rational> z{Rational(a.x) + t * (Rational(b.x) - Rational(a.x)), Rational(a.y) + t * (Rational(b.y) - Rational(a.y))};
@@ -169,7 +169,7 @@ TEST(SplitPoint, IsADoubleExactlyOnTheSegmentInsideTheRange) {
     Rational lo(end(rng), 1000), hi(end(rng), 1000);
     if (lo > hi) std::swap(lo, hi);
     if (lo == hi) continue;
-    const auto z = refiners::ls::split_point(a, b, lo, hi);
+    const auto z = refiners::common::split_point(a, b, lo, hi);
     ASSERT_TRUE(z.has_value());
     ASSERT_EQ(predicates::orientation(a, b, *z), Sign::zero);
     const Rational t = std::abs(b.x - a.x) > 0 ? (Rational(z->x) - Rational(a.x)) / (Rational(b.x) - Rational(a.x))
@@ -232,23 +232,23 @@ TEST(LsRefiner, IsotropicSquareIsTheDualWithTies) {
 TEST(ExactTie, FourPointsOnAnEllipseOfTheirMetric) {
   const predicates::Sym2<double> M{4, 0, 1};
   std::vector<refiners::common::MetricSite> s{{{0, -1}, M}, {{0.5, 0}, M}, {{-0.5, 0}, M}, {{0, 1}, M}, {{0, 1.0625}, M}, {{0, 1}, {4, 0, 1.5}}};
-  const auto tie = refiners::ls::exact_tie(s, {0, 1, 2, 3});
+  const auto tie = refiners::common::exact_tie(s, {0, 1, 2, 3});
   ASSERT_TRUE(tie.has_value());
   EXPECT_EQ(tie->c.x, 0);
   EXPECT_EQ(tie->c.y, 0);
   EXPECT_EQ(tie->sites, (std::vector<int>{1, 3, 2, 0}));  // from angle 0, counter-clockwise
-  EXPECT_FALSE(refiners::ls::exact_tie(s, {0, 1, 2, 4}).has_value());
-  EXPECT_FALSE(refiners::ls::exact_tie(s, {0, 1, 2, 5}).has_value());
-  EXPECT_FALSE(refiners::ls::exact_tie(s, {0, 1, 2}).has_value());
+  EXPECT_FALSE(refiners::common::exact_tie(s, {0, 1, 2, 4}).has_value());
+  EXPECT_FALSE(refiners::common::exact_tie(s, {0, 1, 2, 5}).has_value());
+  EXPECT_FALSE(refiners::common::exact_tie(s, {0, 1, 2}).has_value());
   const double sin2_45 = 0.5, sin2_50 = std::pow(std::sin(50 * M_PI / 180), 2);
-  const auto fan = refiners::ls::good_fan(*tie, s, {M}, sin2_45);
+  const auto fan = refiners::common::good_fan(*tie, s, {M}, sin2_45);
   ASSERT_TRUE(fan.has_value());
   EXPECT_EQ(fan->size(), 2u);
   for (const auto& t : *fan) EXPECT_EQ(predicates::orientation(s[t[0]].p, s[t[1]].p, s[t[2]].p), Sign::positive);
-  EXPECT_FALSE(refiners::ls::good_fan(*tie, s, {M}, sin2_50).has_value());
+  EXPECT_FALSE(refiners::common::good_fan(*tie, s, {M}, sin2_50).has_value());
   // In I, the fan from (½, 0) has angles of 53.1° and 63.4°, the one from (0, 1) has 26.6°.
-  EXPECT_TRUE(refiners::ls::good_fan(*tie, s, {{1, 0, 1}}, sin2_50).has_value());
-  EXPECT_FALSE(refiners::ls::good_fan(*tie, s, {M, {1, 0, 1}}, sin2_50).has_value());  // each metric must pass
+  EXPECT_TRUE(refiners::common::good_fan(*tie, s, {{1, 0, 1}}, sin2_50).has_value());
+  EXPECT_FALSE(refiners::common::good_fan(*tie, s, {M, {1, 0, 1}}, sin2_50).has_value());  // each metric must pass
 }
 
 // The same square and field taken as a varying field (any name but "constant" takes the path of the
@@ -369,8 +369,8 @@ TEST(LsRefiner, ReachesAgreesWithExactSamplesAlongTheSegment) {
       const Rational dw = d2(w, x, y);
       sample = dw <= d2(a, x, y) && dw <= d2(b, x, y);
     }
-    const bool reaches = refiners::ls::reaches(a, b, w, false);
-    ASSERT_EQ(refiners::ls::reaches(a, b, w, true), reaches) << n << ": the filter changed the answer";
+    const bool reaches = refiners::common::reaches(a, b, w, false);
+    ASSERT_EQ(refiners::common::reaches(a, b, w, true), reaches) << n << ": the filter changed the answer";
     if (sample) {
       EXPECT_TRUE(reaches) << n;
     }
@@ -502,7 +502,7 @@ TEST(SegmentCells, ExpansionsGiveTheRationalCells) {
     if (a.x == b.x && a.y == b.y) continue;
     std::vector<std::pair<int, Point2<double>>> sites{{0, a}, {1, b}};
     for (int k = 2; k < 7; ++k) sites.emplace_back(k, point());
-    const auto fast = refiners::ls::cells_along(a, b, M, sites, true), exact = refiners::ls::cells_along(a, b, M, sites, false);
+    const auto fast = refiners::common::cells_along(a, b, M, sites, true), exact = refiners::common::cells_along(a, b, M, sites, false);
     ASSERT_EQ(fast.size(), exact.size()) << "round " << round;
     for (std::size_t i = 0; i < fast.size(); ++i) {
       ASSERT_EQ(fast[i].site, exact[i].site) << "round " << round;
@@ -511,7 +511,7 @@ TEST(SegmentCells, ExpansionsGiveTheRationalCells) {
     }
     // One site's cell alone (cell_along) is its cell among all, or none when it misses s.
     for (const auto& [id, p] : sites) {
-      const auto one = refiners::ls::cell_along(a, b, M, sites, id, round % 2 == 0);
+      const auto one = refiners::common::cell_along(a, b, M, sites, id, round % 2 == 0);
       const auto all = std::find_if(exact.begin(), exact.end(), [id = id](const auto& c) { return c.site == id; });
       ASSERT_EQ(one.has_value(), all != exact.end()) << "round " << round << ", site " << id;
       if (one) {
@@ -539,9 +539,9 @@ TEST(DelaunayInMetric, RoundedCircumcentreIsTheRationalOneRoundedToNearest) {
     };
     const Point2<double> a = point(), b = point(), c = point();
     if (predicates::orientation(a, b, c) == Sign::zero) continue;
-    const Point2<Rational> e = refiners::ls::circumcentre_in<Rational>(a, b, c, M);
-    const Point2<double> r = refiners::ls::rounded_circumcentre(a, b, c, M);
-    const Point2<Rational> fast = refiners::ls::exact_circumcentre(a, b, c, M);  // by division, when exact
+    const Point2<Rational> e = refiners::common::circumcentre_in<Rational>(a, b, c, M);
+    const Point2<double> r = refiners::common::rounded_circumcentre(a, b, c, M);
+    const Point2<Rational> fast = refiners::common::exact_circumcentre(a, b, c, M);  // by division, when exact
     ASSERT_TRUE(fast.x == e.x && fast.y == e.y) << "round " << round;
     ASSERT_EQ(r.x, e.x.convert_to<double>()) << "round " << round;
     ASSERT_EQ(r.y, e.y.convert_to<double>()) << "round " << round;

@@ -4,7 +4,7 @@
 #include "refiners/bwy/dual_triangles.hpp"
 #include "refiners/bwy/rules.hpp"
 #include "refiners/common/vertex_in_domain.hpp"
-#include "refiners/ls/voronoi_refinement.hpp"
+#include "refiners/common/voronoi_refinement.hpp"
 
 #include <cmath>
 #include <deque>
@@ -14,10 +14,10 @@ namespace {
 
 using common::CertifiedPoint;
 using common::MetricSite;
-using ls::ExactTie;
+using common::ExactTie;
 using predicates::Point2;
 
-ls::VoronoiRules bwy_rules() {
+common::VoronoiRules bwy_rules() {
   return {number(Rule::encroached_segment), number(Rule::split_instead), number(Rule::unresolved), number(Rule::island), rule_table()};
 }
 
@@ -26,7 +26,7 @@ int tie_key(std::size_t i) { return -1 - static_cast<int>(i); }
 
 std::string edge_text(int a, int b) { return std::to_string(a) + "–" + std::to_string(b); }
 
-class BwyRefinement : public ls::VoronoiRefinement {
+class BwyRefinement : public common::VoronoiRefinement {
  public:
   BwyRefinement(const common::Domain& domain, const fields::MetricField& field, const BwyParameters& p)
       : VoronoiRefinement(domain, field, bwy_rules(), p.filters, [](int, int) { return std::string(); }), p_(p) {
@@ -36,14 +36,15 @@ class BwyRefinement : public ls::VoronoiRefinement {
   }
 
   std::size_t queued() const {
-    std::size_t n = subsegments_.queued() + ties_.size() + unedged_.size();
+    std::size_t n = subsegments_.queued() + pending_.size() + ties_.size() + unedged_.size();
     for (const auto& q : vertex_queues_) n += q.size();
     return n;
   }
   std::string done() const { return "no rule of BWY §3.2.2 applies"; }
 
   bool step() {
-    if (split_encroached() || not_an_edge() || attack_unresolved()) return true;
+    // Rule 2 judges T, which lacks the vertices of unresolved places: those get their sites first.
+    if (split_encroached() || !settle_pending() || attack_unresolved() || not_an_edge()) return true;
     for (std::size_t k = 0; k < vertex_rules.size(); ++k) {
       if (vertex_rule(k)) return true;
       if (tie_rule(vertex_rules[k])) return true;
@@ -86,14 +87,17 @@ class BwyRefinement : public ls::VoronoiRefinement {
     return diagram_.vertices()[static_cast<std::size_t>(q)].holders > 0 && !triangles_.of_key(q).empty();
   }
 
-  // Vertex q into T when it lies in closed Ω (a stall when that is undecided), with its triangle
-  // counter-clockwise (or flat), and into every vertex rule's queue.
+  // Vertex q into T when it lies in closed Ω, with its triangle counter-clockwise (or flat), and
+  // into every vertex rule's queue. When that is undecided (an irrational point on the line of an
+  // edge of Ω), the vertex waits until no subsegment is encroached: a vertex on a subsegment is in
+  // the closed cells of its three sites, which then encroach it unless they include both its ends,
+  // so rule 1 ends most such vertices first (a comb's slot between two symmetric sites).
   void enter(int q) {
     const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
     if (v.holders == 0) return;
     const auto in = common::in_closed_domain(domain_, point(q));
     if (!in) {
-      stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " lies in Ω is undecided (it is on ∂Ω or too near)";
+      pending_.push_back(q);
       return;
     }
     if (!*in) return;
@@ -103,6 +107,23 @@ class BwyRefinement : public ls::VoronoiRefinement {
     if (o == Sign::negative) std::swap(t[1], t[2]);
     triangles_.add(q, t, o == Sign::zero);
     for (auto& queue : vertex_queues_) queue.push_back(q);
+  }
+  // The vertices waiting in enter(), decided again once no subsegment is encroached; false (and a
+  // stall) when one is still undecided.
+  bool settle_pending() {
+    std::vector<int> waiting;
+    std::swap(waiting, pending_);
+    for (int q : waiting) {
+      const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+      if (v.holders == 0) continue;
+      if (!common::in_closed_domain(domain_, point(q))) {
+        stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + ", near " + common::point_text(v.box.approx()) +
+                   ", lies in Ω is undecided (it is on the line of an edge of Ω, or too near)";
+        return false;
+      }
+      enter(q);
+    }
+    return true;
   }
   void leave(int key) {
     for (const auto& [a, b] : triangles_.remove(key))
@@ -273,7 +294,7 @@ class BwyRefinement : public ls::VoronoiRefinement {
       bad = r2 > B2 * common::distance2(common::lift<Rational>(MetricSite{p, a.M}, exact), exact(q.x), exact(q.y));
     }
     const bool large = p_.size > 0 && r2 > exact(p_.size) * exact(p_.size);
-    return {tie, bad ? number(Rule::bad_shape) : large ? number(Rule::too_large) : 0, ls::fan(tie, 0)};
+    return {tie, bad ? number(Rule::bad_shape) : large ? number(Rule::too_large) : 0, common::fan(tie, 0)};
   }
 
   // Why T is not a local embedding (BWY §3.2.1: non-flat triangles whose vertices are exactly the
@@ -311,6 +332,7 @@ class BwyRefinement : public ls::VoronoiRefinement {
   DualTriangles triangles_;
   int tie_keys_ = 0;  // the ties whose fans are in T
   std::array<std::deque<int>, vertex_rules.size()> vertex_queues_;  // vertices of T to judge, rule by rule
+  std::vector<int> pending_;            // vertices whose place in Ω is undecided so far (enter)
   std::deque<int> unedged_;             // subsegments to test for rule 2
   std::vector<char> unedged_queued_;
 };

@@ -23,7 +23,9 @@
 //   8 island: a site whose cell holds no Voronoi vertex (bounded by an ellipse, never in T) gets a
 //     site on its bisector with its nearest other site (not BWY's: §3.2.1 needs every site in T);
 //   9 unresolved: where the diagram is unresolved in Ω (a vertex of degree 4 or more among different
-//     metrics: no triangle), a site (not BWY's).
+//     metrics: no triangle), a site (not BWY's), before rule 2: T lacks the vertices there, and a
+//     subsegment near them would be judged no edge (seen: near-cocircular corners of a rectangle
+//     with two metrics of distortion 1.001 got rule 2 splits at half the inter-site distance).
 // A Voronoi vertex of degree k ≥ 4 among sites of one metric (an exact tie, ls/exact_tie.hpp) puts a
 // fan of its k-gon in T; it is badly shaped when r/δ > B for δ the k-gon's shortest side, which
 // every fan has in one triangle (a diagonal of cocircular points is at least the shortest side on
@@ -48,7 +50,7 @@ enum class Rule {
 };
 
 inline std::vector<common::RuleName> rule_table() {
-  return {{1, "encroached segment"}, {2, "not an edge"}, {7, "split instead"}, {9, "unresolved"}, {3, "bad shape"},
+  return {{1, "encroached segment"}, {9, "unresolved"}, {2, "not an edge"}, {7, "split instead"}, {3, "bad shape"},
           {4, "several vertices"},   {5, "overlap"},     {6, "too large"},     {8, "island"}};
 }
 

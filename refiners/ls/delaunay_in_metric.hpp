@@ -10,7 +10,7 @@
 // triangulation. No ghost lies in the M-circumdisc of a triangle of sites whose Voronoi vertex is
 // in the box, so those triangles are exactly Del_M's; a triangle with a ghost is dual to a vertex
 // whose disc would hold every site of the box, so it is no vertex in the box.
-#include "refiners/ls/circumcentre.hpp"
+#include "refiners/common/circumcentre.hpp"
 #include "refiners/common/domain.hpp"
 
 #include <array>
@@ -49,26 +49,26 @@ class DelaunayInMetric {
   template <class T>
   Point2<T> circumcentre(int t) const {
     const auto& v = triangles_[t].v;
-    return circumcentre_in<T>(point(v[0]), point(v[1]), point(v[2]), M_);
+    return common::circumcentre_in<T>(point(v[0]), point(v[1]), point(v[2]), M_);
   }
-  // A box holding it (ls::circumcentre_box), computed once per triangle.
+  // A box holding it (common::circumcentre_box), computed once per triangle.
   const Point2<FilterInterval>& circumcentre_box(int t) const {
     auto& box = box_[static_cast<std::size_t>(t)];
     if (!box) {
       const auto& v = triangles_[t].v;
-      box = ls::circumcentre_box(point(v[0]), point(v[1]), point(v[2]), M_);
+      box = common::circumcentre_box(point(v[0]), point(v[1]), point(v[2]), M_);
     }
     return *box;
   }
   // It exactly, by the fastest exact path (exact_circumcentre).
   Point2<Rational> exact_circumcentre(int t) const {
     const auto& v = triangles_[t].v;
-    return ls::exact_circumcentre(point(v[0]), point(v[1]), point(v[2]), M_);
+    return common::exact_circumcentre(point(v[0]), point(v[1]), point(v[2]), M_);
   }
   // It rounded to the nearest doubles (rounded_circumcentre).
   Point2<double> rounded_circumcentre(int t) const {
     const auto& v = triangles_[t].v;
-    return ls::rounded_circumcentre(point(v[0]), point(v[1]), point(v[2]), M_);
+    return common::rounded_circumcentre(point(v[0]), point(v[1]), point(v[2]), M_);
   }
 
  private:

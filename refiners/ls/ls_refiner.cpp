@@ -9,8 +9,8 @@
 #include "refiners/ls/delaunay_in_metric.hpp"
 #include "refiners/ls/ls_varying.hpp"
 #include "refiners/ls/rules.hpp"
-#include "refiners/ls/segment_cells.hpp"
-#include "refiners/ls/subsegments.hpp"
+#include "refiners/common/segment_cells.hpp"
+#include "refiners/common/subsegments.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
 
 #include <algorithm>
@@ -20,8 +20,15 @@
 namespace anisocert::refiners::ls {
 namespace {
 
+using common::cell_along;
+using common::CellOnSegment;
+using common::cells_along;
 using common::metric_text;
+using common::near_segment;
+using common::outside_diametral_ellipse;
 using common::point_text;
+using common::split_point;
+using common::Subsegments;
 using common::within_ulps;
 
 template <class T>

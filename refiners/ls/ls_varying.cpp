@@ -4,10 +4,10 @@
 #include "predicates/angle.hpp"
 #include "predicates/orientation.hpp"
 #include "refiners/common/vertex_in_domain.hpp"
-#include "refiners/ls/circumcentre.hpp"
+#include "refiners/common/circumcentre.hpp"
 #include "refiners/ls/rules.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
-#include "refiners/ls/voronoi_refinement.hpp"
+#include "refiners/common/voronoi_refinement.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,14 @@ namespace anisocert::refiners::ls {
 namespace {
 
 using common::CertifiedPoint;
+using common::ExactTie;
+using common::fan;
+using common::good_fan;
 using common::MetricSite;
+using common::VoronoiRefinement;
+using common::VoronoiRules;
+using predicates::Point2;
+using predicates::Sym2;
 
 // LS's rules as voronoi_refinement.hpp's shared rules.
 VoronoiRules ls_rules() {

@@ -6,8 +6,8 @@
 // here.) Like the star refiner's LU Lemma 4.1 line, this says where the termination guarantee
 // holds, not what the run did.
 #include "refiners/common/domain.hpp"
+#include "refiners/common/subsegments.hpp"
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,9 +29,8 @@ Theorem11Conditions theorem11_conditions(const common::Domain& domain, const std
 // subsegment ab that ends at X's vertex k (sites 0 … V−1 are X's vertices); empty otherwise.
 std::string corner_note(const common::Domain& domain, const Theorem11Conditions& c, int a, int b);
 
-// A refiner's note for a stop near X's vertices a … b (LS's is corner_note above, bound to its run).
-using CornerNote = std::function<std::string(int a, int b)>;
-inline CornerNote corner_note(const common::Domain& domain, const Theorem11Conditions& c) {
+// corner_note above, bound to a run, for refiners/common/subsegments.hpp.
+inline common::CornerNote corner_note(const common::Domain& domain, const Theorem11Conditions& c) {
   return [&domain, &c](int a, int b) { return corner_note(domain, c, a, b); };
 }
 

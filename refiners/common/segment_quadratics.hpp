@@ -11,9 +11,8 @@
 #include <optional>
 #include <vector>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 
-using common::MetricSite;
 using predicates::Point2;
 
 // w's closed cell among a, b and w meets s: q_w(t) ≤ q_a(t) and q_w(t) ≤ q_b(t) for some t in
@@ -36,4 +35,4 @@ std::vector<std::pair<double, double>> nearest_ranges(const Point2<double>& a, c
 // cell among them. Exact.
 bool nearest_at(const Point2<Rational>& z, const MetricSite& w, const std::vector<MetricSite>& others);
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

@@ -1,11 +1,11 @@
-#include "refiners/ls/subsegments.hpp"
+#include "refiners/common/subsegments.hpp"
 
 #include "refiners/common/exact_split.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 
 using predicates::Point2;
 
@@ -79,4 +79,4 @@ std::string Subsegments::too_fine(const common::Domain& domain, const CornerNote
   return "a split of " + what + " would leave a piece below 2⁻³⁰ of its length" + note;
 }
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

@@ -1,18 +1,23 @@
 #pragma once
 // LS §9's constrained subsegments: the PSLG's segments (Ω's edges, then its interior segments;
-// domain.hpp) as the refinement splits them, each with the segment it lies on, and the queue of those to test for encroachment (rule 1). Both LS refinements (one
-// metric on Del_M, different metrics on the true diagram) keep them here.
+// domain.hpp) as the refinement splits them, each with the segment it lies on, and the queue of
+// those to test for encroachment (rule 1). Both LS refinements (one metric on Del_M, different
+// metrics on the true diagram) and the BWY refiner keep them here.
 #include "refiners/common/domain.hpp"
-#include "refiners/ls/theorem11_conditions.hpp"
 
 #include <deque>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
+
+// A refiner's note for a stop near X's vertices a … b: what its theorem asks at that corner (LS's:
+// ls/theorem11_conditions.hpp's corner_note).
+using CornerNote = std::function<std::string(int a, int b)>;
 
 class Subsegments {
  public:
@@ -56,4 +61,4 @@ class Subsegments {
 // The parameter u of the point p of the segment c0c1, p = c0 + u(c1 − c0), exactly (p must lie on it).
 Rational edge_parameter(const predicates::Point2<double>& c0, const predicates::Point2<double>& c1, const predicates::Point2<double>& p);
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

@@ -1,4 +1,4 @@
-#include "refiners/ls/segment_cells.hpp"
+#include "refiners/common/segment_cells.hpp"
 
 #include "numbers/exact_double.hpp"
 #include "numbers/expansion.hpp"
@@ -10,7 +10,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 
 namespace {
 
@@ -169,4 +169,4 @@ std::optional<Point2<double>> coarse_split_point(const Point2<double>& a, const 
   return std::nullopt;
 }
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

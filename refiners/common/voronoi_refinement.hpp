@@ -23,8 +23,8 @@
 #include "refiners/common/run_record.hpp"
 #include "refiners/common/sites.hpp"
 #include "refiners/common/vertex_subdivision.hpp"
-#include "refiners/ls/exact_tie.hpp"
-#include "refiners/ls/subsegments.hpp"
+#include "refiners/common/exact_tie.hpp"
+#include "refiners/common/subsegments.hpp"
 
 #include <deque>
 #include <map>
@@ -33,7 +33,7 @@
 #include <utility>
 #include <vector>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 
 using predicates::Point2;
 using predicates::Sym2;
@@ -142,4 +142,4 @@ class VoronoiRefinement {
   std::map<std::vector<int>, std::optional<JudgedTie>> tie_of_;  // by the unresolved leaves' candidates
 };
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

@@ -14,7 +14,7 @@
 
 #include <array>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 
 using predicates::Point2;
 using predicates::Sym2;
@@ -83,4 +83,4 @@ Point2<double> rounded_circumcentre(const Point2<double>& a, const Point2<double
 // circumcentre_in<Rational> otherwise.
 Point2<Rational> exact_circumcentre(const Point2<double>& a, const Point2<double>& b, const Point2<double>& c, const Sym2<double>& M);
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

@@ -1,11 +1,11 @@
-#include "refiners/ls/circumcentre.hpp"
+#include "refiners/common/circumcentre.hpp"
 
 #include "numbers/exact_double.hpp"
 
 #include <cmath>
 #include <optional>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 
 namespace {
 
@@ -78,4 +78,4 @@ Point2<Rational> exact_circumcentre(const Point2<double>& a, const Point2<double
   return circumcentre_in<Rational>(a, b, c, M);
 }
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

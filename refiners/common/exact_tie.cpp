@@ -1,12 +1,12 @@
-#include "refiners/ls/exact_tie.hpp"
+#include "refiners/common/exact_tie.hpp"
 
 #include "predicates/angle.hpp"
 #include "predicates/orientation.hpp"
-#include "refiners/ls/delaunay_in_metric.hpp"
+#include "refiners/common/circumcentre.hpp"
 
 #include <algorithm>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 namespace {
 
 Rational squared_length(const predicates::Sym2<double>& M, const Rational& dx, const Rational& dy) {
@@ -70,4 +70,4 @@ std::optional<std::vector<std::array<int, 3>>> good_fan(const ExactTie& tie, con
   return std::nullopt;
 }
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

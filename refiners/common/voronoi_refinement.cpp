@@ -1,21 +1,16 @@
-#include "refiners/ls/voronoi_refinement.hpp"
+#include "refiners/common/voronoi_refinement.hpp"
 
 #include "refiners/common/exact_split.hpp"
-#include "refiners/ls/circumcentre.hpp"
-#include "refiners/ls/segment_cells.hpp"
-#include "refiners/ls/segment_quadratics.hpp"
+#include "refiners/common/circumcentre.hpp"
+#include "refiners/common/segment_cells.hpp"
+#include "refiners/common/segment_quadratics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 
-using common::CertifiedPoint;
-using common::MetricSite;
-using common::farthest_in_box;
-using common::point_text;
-using common::within_ulps;
 
 namespace {
 
@@ -199,14 +194,14 @@ bool VoronoiRefinement::reaches(int s, const MetricSite& Q, const ReachBounds& n
   // Below the least normal double the rounding errors are absolute, and the bound above may not
   // hold: the exact test decides such tiny subsegments.
   if (length2 >= std::numeric_limits<double>::min() && near.below(gx, gy) > 2 * length2) return false;
-  return ls::reaches(a, b, Q, filters_);
+  return common::reaches(a, b, Q, filters_);
 }
 
 std::vector<int> VoronoiRefinement::encroachers(int s) const {
   const auto [a, b] = subsegments_.ends(s);
   std::vector<int> by;
   for (int w : diagram_.candidates_near(segment_box(s)))
-    if (w != a && w != b && ls::reaches(site(a), site(b), site(w), filters_)) by.push_back(w);
+    if (w != a && w != b && common::reaches(site(a), site(b), site(w), filters_)) by.push_back(w);
   return by;
 }
 
@@ -385,4 +380,4 @@ int VoronoiRefinement::insert(const MetricSite& Q, int rule, double radius, doub
   return stalled_.empty() ? k : -1;
 }
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 
 using predicates::Point2;
 using predicates::Sym2;
@@ -62,4 +62,4 @@ std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<
 std::optional<Point2<double>> coarse_split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
                                                  const Rational& target, const Rational& slack);
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

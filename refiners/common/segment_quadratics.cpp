@@ -1,4 +1,4 @@
-#include "refiners/ls/segment_quadratics.hpp"
+#include "refiners/common/segment_quadratics.hpp"
 
 #include "numbers/filter_interval.hpp"
 #include "predicates/sqrt_sign.hpp"
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <array>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 namespace {
 
 // a t² + b t + c, in rationals (exact) or FilterInterval (the filter).
@@ -142,4 +142,4 @@ bool nearest_at(const Point2<Rational>& z, const MetricSite& w, const std::vecto
   return std::all_of(others.begin(), others.end(), [&](const MetricSite& u) { return dw <= d2(u); });
 }
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common

@@ -23,7 +23,7 @@
 #include <optional>
 #include <vector>
 
-namespace anisocert::refiners::ls {
+namespace anisocert::refiners::common {
 
 struct ExactTie {
   std::vector<int> sites;                  // counter-clockwise around c
@@ -46,4 +46,4 @@ std::vector<std::array<int, 3>> fan(const ExactTie& tie, std::size_t apex);
 std::optional<std::vector<std::array<int, 3>>> good_fan(const ExactTie& tie, const std::vector<common::MetricSite>& sites,
                                                         const std::vector<predicates::Sym2<double>>& metrics, double s2);
 
-}  // namespace anisocert::refiners::ls
+}  // namespace anisocert::refiners::common
