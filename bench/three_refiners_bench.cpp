@@ -1,17 +1,19 @@
 // The three refiners side by side (issue 17): the star refiner (LU), the Labelle–Shewchuk refiner
-// and the Boissonnat–Wormser–Yvinec refiner on the unit square, each with its defaults and
-// `size` = 1 (the largest circumradius in the metric for all three), on five fields: an
-// anisotropic constant metric diag(100, 2500), the linear boundary layer (hx = 0.1, h0 = 0.01),
-// the shock (h = 0.2), the radial layer (h = 0.1) and a background mesh (the LS mesh of the linear
-// field with hx = 0.5, h0 = 0.125 at size 0.5, its metrics interpolated P1). Counters per run:
-// vertices, triangles, time and vertices per second (the refiner's own clock), and from the exact
-// certifier (oracle/certify, metric checks on): the smallest angle in the vertices' metrics, the
-// share of edges whose lengths in both ends' metrics lie in [1/√2, √2], the worst radius-edge
-// ratio ρ and distortion γ over the triangles (approximations of exact quantities); and whether
-// the exact checks accept the mesh under each paper's own guarantee: the star refiner's stars
-// consistent (certify: a triangulation, locally uniform), LS's and BWY's the dual of the exact
-// diagram (the oracle's D|Ω; LS also Theorem 7's preconditions, every arc wedged).
-// Run: build/bin/three_refiners_bench (figures in docs/refiners.md, docs/bench.md).
+// and the Boissonnat–Wormser–Yvinec refiner on the unit square, each with its defaults and size 1
+// (the largest circumradius in the metric, for all three), on five fields scaled so that the LS
+// refiner makes a few thousand vertices: a constant metric diag(1100, 27500), the linear boundary
+// layer (hx = 0.02, h0 = 0.002), the shock (h = 0.025), the radial layer (defaults) and a
+// background mesh (the LS mesh of the linear field with hx = 0.05, h0 = 0.0125 at size 5, its
+// metrics interpolated P1); and the BWY refiner alone on the shock field with h = 0.0125 (about
+// 18,500 vertices), for its throughput. Counters per run: vertices, triangles, time and vertices
+// per second (the refiner's own clock), and from the exact certifier (oracle/certify, metric checks
+// on): the smallest angle in the vertices' metrics, the share of edges whose lengths in both ends'
+// metrics lie in [1/√2, √2], the worst radius-edge ratio ρ and distortion γ over the triangles in
+// its vertices' metrics (approximations of exact quantities); and whether the exact checks accept
+// the mesh under each paper's own guarantee: the star refiner's a triangulation whose stars are
+// consistent (certify: valid, locally uniform), LS's and BWY's a triangulation that is the dual of
+// the exact diagram (the oracle's D|Ω), with Theorem 7's preconditions reported apart.
+// Run: build/bin/three_refiners_bench --benchmark_counters_tabular=true (figures in docs/refiners.md).
 #include "fields/background.hpp"
 #include "fields/registry.hpp"
 #include "geometry/mesh.hpp"
@@ -34,15 +36,16 @@ const refiners::common::Domain& square() {
 }
 
 fields::MetricField field(const std::string& name) {
-  if (name == "constant") return fields::make_field("constant", {{"m11", 100}, {"m22", 2500}});
-  if (name == "linear") return fields::make_field("linear", {{"h0", 0.01}});
-  if (name == "shock") return fields::make_field("shock", {{"h", 0.2}});
-  if (name == "radial") return fields::make_field("radial", {{"h", 0.1}});
+  if (name == "constant") return fields::make_field("constant", {{"m11", 1100}, {"m22", 27500}});
+  if (name == "linear") return fields::make_field("linear", {{"hx", 0.02}, {"h0", 0.002}});
+  if (name == "shock") return fields::make_field("shock", {{"h", 0.025}});
+  if (name == "shock_fine") return fields::make_field("shock", {{"h", 0.0125}});
+  if (name == "radial") return fields::make_field("radial", {});
   static const fields::MetricField background = [] {
     const refiners::RefinerEntry& ls = *refiners::find_refiner("ls");
     refiners::ParameterValues v = ls.defaults();
-    v["size"] = 0.5;
-    const auto run = ls.run(square(), fields::make_field("linear", {{"hx", 0.5}, {"h0", 0.125}}), v, {}, 1, {});
+    v["size"] = 5;
+    const auto run = ls.run(square(), fields::make_field("linear", {{"hx", 0.05}, {"h0", 0.0125}}), v, {}, 1, {});
     return fields::background_field(std::make_shared<fields::BackgroundMesh>(geometry::exact(run.result.mesh)), "background (LS mesh)");
   }();
   return background;
@@ -95,4 +98,5 @@ THREE(linear);
 THREE(shock);
 THREE(radial);
 THREE(background);
+BENCHMARK_CAPTURE(refine, bwy_shock_fine, "bwy", "shock_fine")->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK_MAIN();

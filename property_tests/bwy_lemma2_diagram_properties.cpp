@@ -7,6 +7,7 @@
 // whichever metric the paper measures δ with, since 1 + 4γ ≥ 5).
 #include "oracle/diagram/diagram.hpp"
 #include "predicates/orientation.hpp"
+#include "property_tests/bwy_zone.hpp"
 #include "property_tests/generators/metrics.hpp"
 #include "theory/bwy_section4.hpp"
 
@@ -19,63 +20,6 @@
 using anisocert::Rational;
 using namespace anisocert::gen;
 using namespace anisocert::oracle;
-
-namespace {
-
-// A rational just above √x (x ≥ 0 rational), and one just below.
-Rational sqrt_above(const Rational& x) {
-  Rational r(static_cast<long>(std::ceil(std::sqrt(x.convert_to<double>()) * 1e9)) + 1, 1000000000);
-  while (r * r < x) r += Rational(1, 1000000000);
-  return r;
-}
-Rational sqrt_below(const Rational& x) {
-  Rational r(static_cast<long>(std::floor(std::sqrt(x.convert_to<double>()) * 1e6)), 1000000);
-  while (r > 0 && r * r > x) r -= Rational(1, 1000000);
-  return r;
-}
-
-// Sutherland–Hodgman, exact: the part of the convex counter-clockwise polygon p left of or on
-// every edge of the convex counter-clockwise polygon c.
-std::vector<Point2<Rational>> clip(std::vector<Point2<Rational>> p, const std::vector<Point2<Rational>>& c) {
-  for (std::size_t k = 0; k < c.size() && !p.empty(); ++k) {
-    const auto& a = c[k];
-    const auto& b = c[(k + 1) % c.size()];
-    auto side = [&](const Point2<Rational>& q) { return (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x); };
-    std::vector<Point2<Rational>> out;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const auto& s = p[i];
-      const auto& e = p[(i + 1) % p.size()];
-      const Rational ss = side(s), se = side(e);
-      if (ss >= 0) out.push_back(s);
-      if ((ss > 0 && se < 0) || (ss < 0 && se > 0)) {
-        const Rational t = ss / (ss - se);
-        out.push_back({s.x + t * (e.x - s.x), s.y + t * (e.y - s.y)});
-      }
-    }
-    std::vector<Point2<Rational>> dedup;
-    for (const auto& q : out)
-      if (dedup.empty() || q.x != dedup.back().x || q.y != dedup.back().y) dedup.push_back(q);
-    while (dedup.size() > 1 && dedup.front().x == dedup.back().x && dedup.front().y == dedup.back().y) dedup.pop_back();
-    p = dedup;
-  }
-  return p;
-}
-
-// Twenty rational unit vectors in counter-clockwise order.
-std::vector<Point2<Rational>> directions() {
-  std::vector<Point2<Rational>> u;
-  const std::vector<std::pair<Rational, Rational>> first{{1, 0}, {Rational(12, 13), Rational(5, 13)}, {Rational(4, 5), Rational(3, 5)},
-                                                         {Rational(3, 5), Rational(4, 5)}, {Rational(5, 13), Rational(12, 13)}};
-  for (int q = 0; q < 4; ++q)
-    for (std::size_t i = 0; i < first.size(); ++i) {
-      auto [x, y] = first[i];
-      for (int r = 0; r < q; ++r) std::tie(x, y) = std::pair{-y, x};  // rotate by 90°
-      u.push_back({x, y});
-    }
-  return u;
-}
-
-}  // namespace
 
 RC_GTEST_PROP(BWY_L2, EdgesOfVZAreWedged, ()) {
   // Sites: a nearly regular pair of triangles in F-space, mapped back by F⁻¹.

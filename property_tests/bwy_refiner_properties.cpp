@@ -11,7 +11,9 @@
 // of conics. Random domains (convex or not, with or without interior points and segments), smooth
 // random fields (generators/fields.hpp), B from 1.2 to 3, a size bound or none.
 #include "geometry/mesh.hpp"
+#include "oracle/diagram/diagram.hpp"
 #include "oracle/diagram/input.hpp"
+#include "property_tests/bwy_zone.hpp"
 #include "property_tests/generators/domains.hpp"
 #include "property_tests/generators/fields.hpp"
 #include "property_tests/ls_same_run.hpp"
@@ -172,8 +174,19 @@ RC_GTEST_PROP(BWY_Filters, FilteredRunIsTheExactRun, ()) {
 //     unresolved) are not BWY's; their sites are counted, not checked. A site at a Voronoi vertex
 //     is the vertex rounded, within the trace's displacement e: the comparison, in long double,
 //     allows √λ_max·e and a relative 10⁻¹².
-RC_GTEST_PROP(BWY_S42, EveryInsertionKeepsTheMinimalInterdistance, ()) {
+namespace {
+
+// A run of the BWY refiner on a field of distortion at most G everywhere (BWY_S42 and BWY_L2 below).
+struct BoundedDistortionRun {
   refiners::bwy::BwyParameters p;
+  gen::TauBoundedField field;
+  Rational delta2;  // δ², the least over the field's metrics of the distance between non-adjacent edges
+  refiners::bwy::BwyResult r;
+};
+
+BoundedDistortionRun bounded_distortion_run() {
+  BoundedDistortionRun run;
+  refiners::bwy::BwyParameters& p = run.p;
   p.shape_bound = *rc::gen::elementOf(std::vector<double>{1.42, 1.5, 2});
   p.size = 0;
   p.max_vertices = 3000, p.max_seconds = 1e9;
@@ -182,30 +195,41 @@ RC_GTEST_PROP(BWY_S42, EveryInsertionKeepsTheMinimalInterdistance, ()) {
   const Rational G(p.distortion);
   const int kind = *rc::gen::inRange(0, 3);
   const auto corners = kind == 0 ? gen::random_comb() : gen::random_domain(kind == 2, true);
-  const gen::TauBoundedField field = gen::tau_bounded_field(corners, kind == 0, G * G);
+  run.field = gen::tau_bounded_field(corners, kind == 0, G * G);
   std::vector<predicates::Point2<Rational>> q;
   for (const auto& v : corners) q.push_back({Rational(v.x), Rational(v.y)});
   const std::size_t n = corners.size();
   const Rational G4 = G * G * G * G;
   for (std::size_t k = 0; k < n; ++k) {  // the corners' separation of LS Theorem 11, 2 arcsin(G²/2) (about 60°)
     const auto &before = q[(k + n - 1) % n], &at = q[k], &after = q[(k + 1) % n];
-    RC_PRE(gen::cos_at_most(gen::exact(field.field.at(corners[k].x, corners[k].y)), before.x - at.x, before.y - at.y, after.x - at.x,
+    RC_PRE(gen::cos_at_most(gen::exact(run.field.field.at(corners[k].x, corners[k].y)), before.x - at.x, before.y - at.y, after.x - at.x,
                             after.y - at.y, 1 - G4 / 2));
   }
   std::optional<Rational> delta2;
-  for (const auto& M : field.metrics)
+  for (const auto& M : run.field.metrics)
     if (const auto dd = gen::nonadjacent_edges_distance2(gen::exact(M), q); dd && (!delta2 || *dd < *delta2)) delta2 = dd;
   RC_PRE(delta2.has_value());  // a triangle: no bound on lfs_min here
-  RC_TAG(kind == 0 ? "comb" : kind == 2 ? "non-convex" : "convex", field.kind);
-  const auto r = refiners::bwy::refine_bwy(refiners::common::Domain(corners), field.field, p);
-  RC_LOG() << r.stop_reason << "\n";
+  run.delta2 = *delta2;
+  RC_TAG(kind == 0 ? "comb" : kind == 2 ? "non-convex" : "convex", run.field.kind);
+  run.r = refiners::bwy::refine_bwy(refiners::common::Domain(corners), run.field.field, p);
+  RC_LOG() << run.r.stop_reason << "\n";
   for (const auto& c : corners) RC_LOG() << "corner " << c.x << " " << c.y << "\n";
-  RC_ASSERT(r.consistent);
+  RC_ASSERT(run.r.consistent);
+  return run;
+}
+
+}  // namespace
+
+RC_GTEST_PROP(BWY_S42, EveryInsertionKeepsTheMinimalInterdistance, ()) {
+  const BoundedDistortionRun run = bounded_distortion_run();
+  const auto& p = run.p;
+  const auto& field = run.field;
+  const auto& r = run.r;
   for (const auto& [name, count] : r.rule_counts)
     if (name == "several vertices" || name == "overlap") RC_ASSERT(count == 0u);
   const long double g = p.distortion, b = p.shape_bound;
   const long double violator = 1 / (g * g * std::sqrt(g * g * g * g - 1)), shape = b / (g * g * std::sqrt(g * g + 1));
-  const long double lfs = std::sqrt(static_cast<long double>(delta2->convert_to<double>())) / 2 / g * (1 - 1e-12L);
+  const long double lfs = std::sqrt(static_cast<long double>(run.delta2.convert_to<double>())) / 2 / g * (1 - 1e-12L);
   long double lmax = 0;  // √λ_max bounds the M-length of a Euclidean unit vector
   for (const auto& M : field.metrics) lmax = std::max(lmax, (static_cast<long double>(M.m11) + M.m22) * (1 + 1e-15L));
   const auto& sites = r.mesh.sites;
@@ -238,4 +262,67 @@ RC_GTEST_PROP(BWY_S42, EveryInsertionKeepsTheMinimalInterdistance, ()) {
   }
   RC_CLASSIFY(checked > 20, "more than 20 insertions checked");
   RC_CLASSIFY(other > 0, "island or unresolved sites (not checked)");
+}
+
+// BWY Lemma 2 on final meshes: the runs of BWY_S42 (distortion at most the run's G between any two
+// points, so γ ≤ G for every two adjacent triangles, whose radius-edge ratios are at most B:
+// BWY_R). For up to six pairs of adjacent triangles abc, abd of each mesh, the exact diagram of
+// {a, b, c, d} restricted to a rational polygon P ⊆ Z (bwy_zone.hpp: inscribed in the balls
+// B(x, 5Bδ) of the four sites, δ = max(δ(abc), δ(abd)) exactly, d(p, q) = min(d_p, d_q); 5 ≤ 1 + 4γ)
+// has every arc wedged. A pair whose four sites are not all inside P (the inscribed polygons are a
+// little smaller than the balls) is counted and skipped.
+RC_GTEST_PROP(BWY_L2, AdjacentTrianglesOfFinalMeshesHaveWedgedArcsInTheirZone, ()) {
+  const BoundedDistortionRun run = bounded_distortion_run();
+  const auto& mesh = run.r.mesh;
+  const geometry::Mesh<Rational> m = geometry::exact(mesh);
+  std::map<std::pair<int, int>, std::vector<int>> on_edge;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int a = mesh.triangles[t][static_cast<std::size_t>(i)], b = mesh.triangles[t][static_cast<std::size_t>((i + 1) % 3)];
+      on_edge[std::minmax(a, b)].push_back(static_cast<int>(t));
+    }
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& [e, ts] : on_edge)
+    if (ts.size() == 2) pairs.emplace_back(ts[0], ts[1]);
+  RC_PRE(!pairs.empty());
+  const auto d2 = [&](int u, int v) { return std::min(d2_from(m, u, v), d2_from(m, v, u)); };
+  const auto shortest2 = [&](const std::array<int, 3>& t) { return std::min({d2(t[0], t[1]), d2(t[1], t[2]), d2(t[0], t[2])}); };
+  const Rational B(run.p.shape_bound);
+  int checked = 0, skipped = 0;
+  for (int k = 0; k < 6; ++k) {
+    const auto [t1, t2] = pairs[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(pairs.size())))];
+    const auto &T1 = mesh.triangles[static_cast<std::size_t>(t1)], &T2 = mesh.triangles[static_cast<std::size_t>(t2)];
+    std::vector<int> four(T1.begin(), T1.end());
+    for (int v : T2)
+      if (std::find(four.begin(), four.end(), v) == four.end()) four.push_back(v);
+    RC_ASSERT(four.size() == 4u);
+    const Rational r2 = 25 * B * B * std::max(shortest2(T1), shortest2(T2));
+    std::vector<predicates::Point2<Rational>> P;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto ball = gen::inscribed_ball(m.sites[static_cast<std::size_t>(four[i])], m.metrics[static_cast<std::size_t>(four[i])], r2);
+      P = i == 0 ? ball : gen::clip(P, ball);
+    }
+    const auto inside = [&P](const predicates::Point2<Rational>& x) {
+      for (std::size_t e = 0; e < P.size(); ++e) {
+        const auto &a = P[e], &b = P[(e + 1) % P.size()];
+        if ((b.x - a.x) * (x.y - a.y) - (b.y - a.y) * (x.x - a.x) <= 0) return false;
+      }
+      return P.size() >= 3;
+    };
+    if (!std::all_of(four.begin(), four.end(), [&](int v) { return inside(m.sites[static_cast<std::size_t>(v)]); })) {
+      ++skipped;
+      continue;
+    }
+    geometry::Mesh<Rational> zone;
+    for (int v : four) {
+      zone.sites.push_back(m.sites[static_cast<std::size_t>(v)]);
+      zone.metrics.push_back(m.metrics[static_cast<std::size_t>(v)]);
+    }
+    zone.domain = P;
+    const oracle::Diagram d = oracle::compute_diagram(zone);
+    for (const auto& arc : d.arcs) RC_ASSERT(arc.wedged);
+    ++checked;
+  }
+  RC_CLASSIFY(checked == 6, "six pairs checked");
+  RC_CLASSIFY(skipped > 0, "a pair skipped (a site outside P)");
 }

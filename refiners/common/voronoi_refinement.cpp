@@ -209,7 +209,7 @@ std::vector<int> VoronoiRefinement::encroachers(int s) const {
 // can be nearest on s), as near the "midpoint" d_a(z) = d_b(z) as a double exactly on s allows:
 // that point itself when it is in such a cell, else the point nearest to it of the range of s
 // where the first encroacher that has one is nearest. The choice is in doubles; membership is
-// checked exactly.
+// checked exactly, unless no double of s lies in any such cell (then the nearest, below).
 void VoronoiRefinement::split(int s, const std::vector<MetricSite>& in, const std::vector<MetricSite>& near, int rule, int for_rule) {
   const auto [a, b] = subsegments_.ends(s);
   const Point2<double>&pa = sites_.points[static_cast<std::size_t>(a)], &pb = sites_.points[static_cast<std::size_t>(b)];
@@ -234,11 +234,13 @@ void VoronoiRefinement::split(int s, const std::vector<MetricSite>& in, const st
   std::optional<Point2<double>> z = on_edge(0, 1, Rational(tm), slack);
   if (z && !std::any_of(in.begin(), in.end(), [&](const MetricSite& w) { return nearest_at(on_s(*z), w, near); })) z.reset();
   const auto gap = [tm](const std::pair<double, double>& r) { return tm < r.first ? r.first - tm : tm > r.second ? tm - r.second : 0; };
+  std::optional<std::pair<double, double>> first_range;  // of the first encroacher that has one
   for (std::size_t i = 0; i < in.size() && !z; ++i) {
     std::optional<std::pair<double, double>> best;
     for (const auto& r : nearest_ranges(pa, pb, in[i], near))
       if (!best || gap(r) < gap(*best)) best = r;
     if (!best) continue;
+    if (!first_range) first_range = best;
     const double inset = (best->second - best->first) * 0x1p-20;
     const double lo = best->first + inset, hi = best->second - inset;
     if (!(lo <= hi)) continue;
@@ -249,6 +251,20 @@ void VoronoiRefinement::split(int s, const std::vector<MetricSite>& in, const st
       z = split_point(c0, c1, e, e, e);
     }
     if (z && !nearest_at(on_s(*z), in[i], near)) z.reset();
+  }
+  // The cells meet s only in ranges that hold no double of its edge's grid: narrower than an ulp,
+  // where sites whose metrics differ in their last bits (as a P1 interpolation makes them) tie
+  // within rounding. The split is then at the grid's double nearest that range, within 2⁻⁵⁰ of
+  // the subsegment outside it (and strictly inside the subsegment), in the cell of an end of s:
+  // the encroachment it answers is gone once s is split there. (It stopped the run before: a
+  // background field's four corners with metrics 400 ± 1 ulp, whose centre's site touched an edge
+  // at its midpoint in a range of 7·10⁻¹⁷.)
+  if (!z && first_range) {
+    const Rational w(std::ldexp(1.0, -50)), L = ub - ua;
+    const Rational lo = std::max(Rational(first_range->first) - w, Rational(0)), hi = std::min(Rational(first_range->second) + w, Rational(1));
+    const Rational e0 = ua + lo * L, e1 = ua + hi * L;
+    z = split_point(c0, c1, std::min(e0, e1), std::max(e0, e1), ua + Rational(std::clamp(tm, first_range->first, first_range->second)) * L);
+    if (z && ((z->x == pa.x && z->y == pa.y) || (z->x == pb.x && z->y == pb.y))) z.reset();
   }
   if (!z) {
     stalled_ = "subsegment " + point_text(pa) + " – " + point_text(pb) + " is to be split in a cell where no double point exactly on it was found" +
