@@ -197,12 +197,21 @@ std::string description() {
 
 }  // namespace
 
+// The refiners whose mesh is the dual of the diagram (RefinerEntry::dual_of_diagram), or the others.
+std::string refiners_where(bool dual_of_diagram) {
+  std::vector<std::string> names;
+  for (const auto& entry : refiners::registered_refiners())
+    if (entry.dual_of_diagram == dual_of_diagram) names.push_back(entry.name);
+  return names_of(names);
+}
+
 void add_refine(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<RefineOptions>();
   CLI::App* c = app.add_subcommand("refine", description());
   c->add_option("--algo", o->algo, "the refiner: " + names_of(refiners::refiner_names()))->capture_default_str();
   c->add_option("--domain", o->domain,
-                "square, or a JSON file with a \"domain\" polygon, perhaps with \"points\" and \"interior_segments\" (a PSLG; --algo ls)")
+                "square, or a JSON file with a \"domain\" polygon, perhaps with \"points\" and \"interior_segments\" (a PSLG;\n"
+                "--algo star takes its boundary only)")
       ->capture_default_str();
   c->add_option("--field", o->field, "the metric field: " + names_of(fields::field_names()) + " or background:MESH[:METRIC]")->capture_default_str();
   c->add_option("--param", o->params, "a field parameter name=value (repeatable)");
@@ -232,8 +241,9 @@ void add_refine(CLI::App& app, int& exit_code) {
                 ".msh Gmsh, .node/.ele/.poly; see certify --help)");
   c->add_option("--output-format", o->output_format, "the format of --output when its extension does not tell (e.g. freefem)");
   c->add_option("--svg", o->svg,
-                "write a picture: --algo ls, the exact diagram D|Ω of the final sites with its dual, computed by the oracle after\n"
-                "the run (seconds for 10k vertices, minutes for 100k); --algo star, the mesh");
+                "write a picture: --algo " + refiners_where(true) +
+                    ", the exact diagram D|Ω of the final sites with its dual, computed by the oracle\n"
+                    "after the run (seconds for 10k vertices, minutes for 100k); --algo " + refiners_where(false) + ", the mesh");
   c->add_flag("--quiet", o->quiet, "no progress lines");
   c->callback([o, &exit_code] { exit_code = run_refine(*o); });
 }

@@ -88,7 +88,7 @@ RefinerEntry entry() {
              const common::Budget& budget, unsigned seed, const common::Progress& progress) {
             const RefineParameters p = parameters(values, budget, seed);
             if (domain.has_interior())
-              throw common::DomainError("--algo star meshes Ω with its boundary only: the domain's points and interior segments are for --algo ls");
+              throw common::DomainError("--algo star meshes Ω with its boundary only: the domain's points and interior segments are for the other refiners");
             StarResult r = refine_star(domain, field, p, progress);
             std::vector<std::string> lines = report(r, p);
             return Run{std::move(r), std::move(lines)};
