@@ -177,10 +177,7 @@ class BwyRefinement : public common::VoronoiRefinement {
       const bool bad = applies(rule, q);
       if (!stalled_.empty()) return true;
       if (!bad) continue;
-      const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
-      const auto [c, displacement] = rounded_vertex(q);
-      const double radius = std::sqrt(squared_distance(site(v.sites[0]), c));
-      if (!attack(c, number(rule), radius, "the Voronoi vertex of sites " + trio_text(v.sites), displacement)) queue.push_front(q);
+      if (!attack_vertex(q, number(rule))) queue.push_front(q);
       return true;
     }
     return false;

@@ -167,6 +167,13 @@ bool VoronoiRefinement::attack(const Point2<double>& q, int rule, double radius,
 
 // A subsegment whose cell Q would meet, were Q inserted (no subsegment is encroached now, so only
 // its endpoints are nearest along it).
+bool VoronoiRefinement::attack_vertex(int q, int rule) {
+  const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+  const auto [c, displacement] = rounded_vertex(q);
+  const double radius = std::sqrt(squared_distance(site(v.sites[0]), c));  // at the site inserted
+  return attack(c, rule, radius, "the Voronoi vertex of sites " + trio_text(v.sites), displacement);
+}
+
 std::optional<int> VoronoiRefinement::encroached_by(const MetricSite& Q) const {
   const ReachBounds near(Q.M);
   for (std::size_t s = 0; s < subsegments_.size(); ++s)

@@ -60,11 +60,7 @@ class LsVaryingRefinement : public VoronoiRefinement {
       const Rule rule = violation(q);
       if (!stalled_.empty()) return true;
       if (rule == Rule::none) continue;
-      const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
-      const auto [c, displacement] = rounded_vertex(q);
-      const double radius = std::sqrt(squared_distance(site(v.sites[0]), c));  // at the site inserted
-      if (!attack(c, static_cast<int>(rule), radius, "the Voronoi vertex of sites " + trio_text(v.sites), displacement))
-        violators_.push_front(q);
+      if (!attack_vertex(q, static_cast<int>(rule))) violators_.push_front(q);
       return true;
     }
     for (const JudgedTie& judged : exact_ties_) {
