@@ -75,7 +75,7 @@ void refine(benchmark::State& state, const char* refiner, const char* field_name
   state.counters["unit_edge_share"] = c.lengths && c.lengths->edges > 0 ? static_cast<double>(c.lengths->unit_edges) / static_cast<double>(c.lengths->edges) : 0;
   state.counters["worst_rho"] = c.worst_rho;
   state.counters["worst_gamma"] = c.worst_gamma;
-  bool accepted = c.valid_holds();
+  bool accepted = r.consistent && c.valid_holds();  // a run that did not finish promises nothing
   if (entry.dual_of_diagram) {
     const oracle::Diagram d = oracle::compute_diagram(m);
     accepted = accepted && d.dual_check.is_triangulation && oracle::compare_with_dual(d, r.mesh.triangles, 0).is_dual();

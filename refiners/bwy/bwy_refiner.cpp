@@ -68,7 +68,7 @@ class BwyRefinement : public common::VoronoiRefinement {
       for (std::size_t q = 0; q < diagram_.vertices().size(); ++q)
         if (in_T(static_cast<int>(q)))
           r.violators_left += std::any_of(vertex_rules.begin(), vertex_rules.end(), [&](Rule rule) { return applies(rule, static_cast<int>(q)); });
-      for (std::size_t i = 0; i < exact_ties_.size(); ++i) r.violators_left += exact_ties_[i].rule != 0 || tie_overlaps(i);
+      for (std::size_t i = 0; i < exact_ties_.size(); ++i) r.violators_left += exact_ties_[i].rule != 0 || tie_overlaps(i) || tie_shares_sites(i);
       r.embedding_failure = embedding_failure();
     }
     stalled_ = stalled;
@@ -76,6 +76,9 @@ class BwyRefinement : public common::VoronoiRefinement {
     if (stop.finished && !r.embedding_failure.empty()) {
       r.consistent = false;
       r.stop_reason = "no rule applies, but T is no triangulation of Ω by BWY §3.2.1: " + r.embedding_failure;
+    } else if (stop.finished && r.left_counted && r.encroached_left + r.unedged_left + r.violators_left > 0) {
+      r.consistent = false;  // a queue missed something: said, never passed off as finished
+      r.stop_reason = "no rule was queued, but a pass over the mesh finds one that applies";
     }
     return r;
   }
@@ -90,8 +93,9 @@ class BwyRefinement : public common::VoronoiRefinement {
   // Vertex q into T when it lies in closed Ω, with its triangle counter-clockwise (or flat), and
   // into every vertex rule's queue. When that is undecided (an irrational point on the line of an
   // edge of Ω), the vertex waits until no subsegment is encroached: a vertex on a subsegment is in
-  // the closed cells of its three sites, which then encroach it unless they include both its ends,
-  // so rule 1 ends most such vertices first (a comb's slot between two symmetric sites).
+  // the closed cells of its three sites, one of which is no end of the subsegment and so encroaches
+  // it, and rule 1's split then ends the vertex (seen: a comb's slot between two symmetric sites).
+  // One still there after is on an edge's line outside the edge, and stops the run by name.
   void enter(int q) {
     const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
     if (v.holders == 0) return;
@@ -108,8 +112,8 @@ class BwyRefinement : public common::VoronoiRefinement {
     triangles_.add(q, t, o == Sign::zero);
     for (auto& queue : vertex_queues_) queue.push_back(q);
   }
-  // The vertices waiting in enter(), decided again once no subsegment is encroached; false (and a
-  // stall) when one is still undecided.
+  // The vertices waiting in enter(), once no subsegment is encroached: those still vertices are
+  // decided again; false (and a stall) when one is still undecided.
   bool settle_pending() {
     std::vector<int> waiting;
     std::swap(waiting, pending_);
@@ -186,7 +190,9 @@ class BwyRefinement : public common::VoronoiRefinement {
   bool tie_rule(Rule rule) {
     for (std::size_t i = 0; i < exact_ties_.size(); ++i) {
       const JudgedTie& judged_tie = exact_ties_[i];
-      if (judged_tie.rule != number(rule) && !(rule == Rule::overlap && tie_overlaps(i))) continue;
+      if (judged_tie.rule != number(rule) && !(rule == Rule::overlap && tie_overlaps(i)) &&
+          !(rule == Rule::several_vertices && tie_shares_sites(i)))
+        continue;
       const ExactTie& tie = judged_tie.tie;
       const auto [q, displacement] = rounded(tie.c);
       attack(q, number(rule), std::sqrt(squared_distance(site(tie.sites[0]), q)),
@@ -231,6 +237,7 @@ class BwyRefinement : public common::VoronoiRefinement {
     const CertifiedPoint P = point(q);
     const MetricSite a = site(v.sites[0]);
     const double B = p_.shape_bound;
+    bool undecided = false;  // a pair undecided: bad only if another pair decides it
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         if (i == j) continue;
@@ -241,12 +248,10 @@ class BwyRefinement : public common::VoronoiRefinement {
           const T l2 = common::distance2(common::lift<T>(from, of), of(to.p.x), of(to.p.y));
           return r2 - of(B) * of(B) * l2;
         });
-        if (!bad) {
-          stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is badly shaped is undecided";
-          return false;
-        }
-        if (*bad == Sign::positive) return true;
+        if (!bad) undecided = true;
+        else if (*bad == Sign::positive) return true;
       }
+    if (undecided) stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is badly shaped is undecided";
     return false;
   }
   // Rule 5 at triangle t: flat, or another triangle on one of its edges has its third vertex on
@@ -265,6 +270,11 @@ class BwyRefinement : public common::VoronoiRefinement {
   bool tie_overlaps(std::size_t i) const {
     const auto& ts = triangles_.of_key(tie_key(i));
     return std::any_of(ts.begin(), ts.end(), [&](int t) { return overlaps(t); });
+  }
+  // Rule 4 at a tie: a triangle of its fan has the sites of another triangle of T.
+  bool tie_shares_sites(std::size_t i) const {
+    const auto& ts = triangles_.of_key(tie_key(i));
+    return std::any_of(ts.begin(), ts.end(), [&](int t) { return triangles_.same_sites(t).size() > 1; });
   }
   int third(int t, int a, int b) const {
     for (int u : triangles_.triangle(t).sites)
@@ -308,8 +318,9 @@ class BwyRefinement : public common::VoronoiRefinement {
       if (!used[u]) return "site " + std::to_string(u) + " is a vertex of no triangle";
     for (std::size_t s = 0; s < subsegments_.size(); ++s) {
       const auto [a, b] = subsegments_.ends(static_cast<int>(s));
-      if (subsegments_.on_boundary(domain_, static_cast<int>(s)) && triangles_.on_edge(a, b).size() != 1)
-        return "the boundary subsegment " + edge_text(a, b) + " is in " + std::to_string(triangles_.on_edge(a, b).size()) + " triangles";
+      const std::size_t in = triangles_.on_edge(a, b).size();
+      if (subsegments_.on_boundary(domain_, static_cast<int>(s)) ? in != 1 : in != 2)
+        return "the subsegment " + edge_text(a, b) + " is in " + std::to_string(in) + " triangles";
     }
     for (int t : alive) {
       const auto& tri = triangles_.triangle(t);

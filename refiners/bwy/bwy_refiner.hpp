@@ -12,7 +12,7 @@
 // BWY Lemma 1 computes the same points as the 3-faces of the power diagram of the lifted spheres
 // σ(p) in R⁵ met by the manifold x̂ = (x, x²ᵣₛ): power(x̂, σ_p) = ‖x̂‖² + d_p(x)², so on the manifold
 // the power diagram's order is the distances' order. The tests check that the two agree at every
-// vertex (tests/refiner_bwy_test.cpp); docs/refiners.md says why the refiner does not lift.
+// vertex (property_tests/bwy_lifting_properties.cpp); docs/refiners.md says why the refiner does not lift.
 // The refiners never include the oracle (DESIGN.md § Layers); the tests certify every finished
 // run with it.
 #include "fields/metric_field.hpp"

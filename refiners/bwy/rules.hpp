@@ -3,13 +3,14 @@
 // of the report). Rule i applies only when no rule j < i does (BWY: "Rule i is applied only if no
 // rule j with j < i applies"); the rules the paper does not have come where the table puts them.
 //   1 encroached segment: a constrained subsegment e = ab whose segment [a, b] meets the closed cell
-//     of a site other than a and b gets a site on e;
+//     of a site other than a and b gets a site on e (as LS's rule 1: BWY's applies to those that
+//     are no edge of T because they are encroached; splitting every encroached one splits more);
 //   2 not an edge: a subsegment, not encroached, that is the edge of no triangle of T (BWY: "because
-//     its dual Voronoi edge is a complete ellipse") gets the site of its Voronoi edge on e, the
-//     point of [a, b] where d_a = d_b (BWY's conditional insertion of a point of that edge puts it
-//     on e whatever the point: it encroaches e). T's triangles are the duals of the Voronoi
-//     vertices in closed Ω, so an edge whose Voronoi edge ends outside Ω is no edge of T either,
-//     and gets the same site;
+//     its dual Voronoi edge is a complete ellipse", whose point is to be inserted conditionally)
+//     gets a site on e: the point of the ellipse chosen is the one on [a, b] (d_a = d_b), which
+//     encroaches e, so the conditional insertion splits e, near that point (split() keeps the
+//     coarsest grid double within 1/64 of it). An edge whose Voronoi edge ends outside Ω is no
+//     edge of T either, and gets the same site;
 //   3 bad shape: a Voronoi vertex v of T with β(v) = r(v)/δ(t_v) > B gets a site at v, r(v) its
 //     radius d_a(a, v), δ(t_v) the shortest edge of its triangle, d(p, q) = min(d_p(p, q), d_q(p, q));
 //   4 several vertices: a triangle dual to more than one Voronoi vertex of T gets a site at one;
@@ -26,7 +27,7 @@
 //     metrics: no triangle), a site (not BWY's), before rule 2: T lacks the vertices there, and a
 //     subsegment near them would be judged no edge (seen: near-cocircular corners of a rectangle
 //     with two metrics of distortion 1.001 got rule 2 splits at half the inter-site distance).
-// A Voronoi vertex of degree k ≥ 4 among sites of one metric (an exact tie, ls/exact_tie.hpp) puts a
+// A Voronoi vertex of degree k ≥ 4 among sites of one metric (an exact tie, common/exact_tie.hpp) puts a
 // fan of its k-gon in T; it is badly shaped when r/δ > B for δ the k-gon's shortest side, which
 // every fan has in one triangle (a diagonal of cocircular points is at least the shortest side on
 // either side of it).

@@ -34,10 +34,12 @@ std::optional<bool> in_closed_domain(const Domain& domain, const CertifiedPoint&
         if (between(std::min(u.x, v.x), std::max(u.x, v.x), true) && between(std::min(u.y, v.y), std::max(u.y, v.y), false)) return true;
       }
       // Half-open in y: an edge counts when p's height is in [min, max) of its ends' heights; it
-      // crosses the ray to the right when p is left of the upward edge (right of the downward).
+      // crosses the ray to the right when p is left of the upward edge (right of the downward),
+      // and the ray to the left when p is right of it (left of the downward).
       const bool u_above = *su == Sign::positive, v_above = *sv == Sign::positive;
       if (u_above == v_above) continue;
-      if ((v_above ? *o == Sign::positive : *o == Sign::negative) == right) inside = !inside;
+      const Sign ahead = v_above == right ? Sign::positive : Sign::negative;
+      if (*o == ahead) inside = !inside;
     }
     return inside;
   };

@@ -259,13 +259,14 @@ void VoronoiRefinement::split(int s, const std::vector<MetricSite>& in, const st
     }
     if (z && !nearest_at(on_s(*z), in[i], near)) z.reset();
   }
-  // The cells meet s only in ranges that hold no double of its edge's grid: narrower than an ulp,
-  // where sites whose metrics differ in their last bits (as a P1 interpolation makes them) tie
-  // within rounding. The split is then at the grid's double nearest that range, within 2⁻⁵⁰ of
-  // the subsegment outside it (and strictly inside the subsegment), in the cell of an end of s:
-  // the encroachment it answers is gone once s is split there. (It stopped the run before: a
-  // background field's four corners with metrics 400 ± 1 ulp, whose centre's site touched an edge
-  // at its midpoint in a range of 7·10⁻¹⁷.)
+  // No double of s passed the exact check: the ranges where the encroachers are nearest hold no
+  // double of the edge's grid (narrower than an ulp, where sites whose metrics differ in their last
+  // bits, as a P1 interpolation makes them, tie within rounding). The split is then at the grid's
+  // double nearest the first encroacher's range, within 2⁻⁵⁰ of the subsegment's length outside it
+  // and strictly inside the subsegment (an end found instead stops the run by name, below); it
+  // need not lie in that encroacher's cell, and the encroachment is gone once s is split near it.
+  // (It stopped the run before: a background field's four corners with metrics 400 ± 1 ulp,
+  // whose centre's site touched an edge at its midpoint in a range of 7·10⁻¹⁷.)
   if (!z && first_range) {
     const Rational w(std::ldexp(1.0, -50)), L = ub - ua;
     const Rational lo = std::max(Rational(first_range->first) - w, Rational(0)), hi = std::min(Rational(first_range->second) + w, Rational(1));

@@ -223,8 +223,9 @@ TEST(PeerDual, ReportsEveryTriangleOfAPeerMesh) {
 // strongly anisotropic (eigenvalue ratio above 100 at some vertex, computed here from the file), so
 // the run takes the path of sites with different metrics. The run ends with no violator (exit 0),
 // and `anisocert dual`, reading the Medit files back, certifies the mesh the exact dual of its
-// vertices' diagram, with no orphan (exit 0: LS §7).
-TEST(PeerMetric, LsRefinesFreeFemsHessianMetricAndTheOracleCertifiesIt) {
+// vertices' diagram, with no orphan (exit 0: LS §7). The BWY refiner (issue 17) on the same field
+// ends with no rule applying, and `dual` certifies its T the exact dual too.
+TEST(PeerMetric, LsAndBwyRefineFreeFemsHessianMetricAndTheOracleCertifiesThem) {
   const std::string d = fresh_dir("freefem_metric");
   fs::create_directories(d);
   std::ofstream(d + "/metric.edp") << "mesh Th = square(10, 10);\n"
@@ -260,6 +261,12 @@ TEST(PeerMetric, LsRefinesFreeFemsHessianMetricAndTheOracleCertifiesIt) {
   const Outcome dual = run("dual " + d + "/ls.mesh --quiet");
   EXPECT_EQ(dual.exit_code, 0) << dual.out << dual.err;
   EXPECT_NE(dual.out.find(" 0 orphans"), std::string::npos) << dual.out;
+  const Outcome bwy = run("refine --algo bwy --field background:" + d + "/bg.msh:" + d + "/bg.mtr --size 0.5 --quiet -o " + d + "/bwy.mesh");
+  ASSERT_EQ(bwy.exit_code, 0) << bwy.out << bwy.err;
+  EXPECT_NE(bwy.out.find("stopped: no rule of BWY §3.2.2 applies"), std::string::npos) << bwy.out;
+  const Outcome bwy_dual = run("dual " + d + "/bwy.mesh --quiet");
+  EXPECT_EQ(bwy_dual.exit_code, 0) << bwy_dual.out << bwy_dual.err;
+  EXPECT_NE(bwy_dual.out.find("the mesh is the dual of the anisotropic Voronoi diagram of its vertices"), std::string::npos) << bwy_dual.out;
   fs::remove_all(d);
 }
 
