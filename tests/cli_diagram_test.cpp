@@ -326,4 +326,17 @@ TEST(CliMesh, BwyRefinesTheShockFieldAndDualConfirmsIt) {
   EXPECT_EQ(ls_parameter.exit_code, 2);
   EXPECT_NE(ls_parameter.err.find("--theta-bound is not a parameter of --algo bwy"), std::string::npos) << ls_parameter.err;
   EXPECT_FALSE(std::filesystem::exists(base + "_never.json"));
+  // Found by a new user's trial: FreeFem's files, whose .mtr `dual` does not find by itself, got
+  // the hint "check it with anisocert dual", which refused them; the hint is now the command.
+  const Outcome freefem = run("refine --algo bwy --field shock --size 8 --quiet -o " + base + "_ff.msh --output-format freefem");
+  ASSERT_EQ(freefem.exit_code, 0) << freefem.err;
+  const std::string check = "anisocert dual " + base + "_ff.msh --metric " + base + "_ff.mtr";
+  EXPECT_NE(freefem.out.find("(check it with " + check + ")"), std::string::npos) << freefem.out;
+  EXPECT_EQ(run(check.substr(std::string("anisocert ").size()) + " --quiet").exit_code, 0);
+  // …and a stopped run's picture said "the mesh is its dual" of a dual with flat and overlapping
+  // triangles, which `dual` refuses to read: the caption says it is no triangulation.
+  const Outcome stopped = run("refine --algo bwy --field shock --param h=0.02 --max-vertices 200 --quiet -o " + base + "_stopped.json --svg " +
+                              base + "_stopped.svg");
+  EXPECT_EQ(stopped.exit_code, 1) << stopped.err;
+  EXPECT_NE(stopped.out.find("the mesh is its dual, which is no triangulation of Ω)"), std::string::npos) << stopped.out;
 }

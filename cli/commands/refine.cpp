@@ -67,7 +67,12 @@ Picture picture(const refiners::RefinerEntry& entry, const geometry::Mesh<double
     options.quiet = o.quiet;
     options.progress_label = "--svg: ";  // the run's lines are done
     oracle::Diagram d = exact_diagram(geometry::exact(m), "its sites", options);
-    const std::string verdict = oracle::compare_with_dual(d, m.triangles, 0).is_dual() ? "the mesh is its dual" : "the mesh is not its dual";
+    // A stopped run's mesh can be the dual of a diagram whose dual is no triangulation (flat or
+    // overlapping triangles, which `dual` refuses to read): the caption says so.
+    const bool is_dual = oracle::compare_with_dual(d, m.triangles, 0).is_dual();
+    const std::string verdict = !is_dual                           ? "the mesh is not its dual"
+                                : d.dual_check.is_triangulation ? "the mesh is its dual"
+                                                                : "the mesh is its dual, which is no triangulation of Ω";
     std::string svg = io::diagram_svg(d, what + "; the exact D|Ω of its vertices and its dual (dashed): " + verdict);
     return {std::move(svg), "  picture: " + o.svg + " (the exact D|Ω of the final sites with its dual; " + verdict + ")\n", std::move(d)};
   } catch (const UsageError& e) {  // "its sites: why"
@@ -77,6 +82,15 @@ Picture picture(const refiners::RefinerEntry& entry, const geometry::Mesh<double
   }
   return {io::mesh_svg(m, what + " (the diagram is not drawn: " + declined + ")"), "  picture: " + o.svg + " (the mesh only: " + declined + ")\n",
           std::nullopt};
+}
+
+// The command that checks the files written: the mesh, and its metric file when another holds it
+// (`dual` and `certify` find a Medit .sol beside its .mesh, not a FreeFem .mtr).
+std::string check_command(const refiners::RefinerEntry& entry, const std::vector<std::string>& paths) {
+  std::string command = entry.check() + " " + paths.front();
+  for (std::size_t k = 1; k < paths.size(); ++k)
+    if (io::has_metric_extension(paths[k])) command += " --metric " + paths[k];
+  return command;
 }
 
 // The budget: the defaults of refiners::common::Budget, or a positive whole number of vertices and
@@ -143,6 +157,7 @@ int run_refine(const RefineOptions& o) {
   const geometry::Mesh<double>& m = run.result.mesh;
   std::vector<OutputFile> files;
   std::string written;
+  std::vector<std::string> paths;  // written, the mesh's first
   if (format) {
     io::MeshFile file;
     file.mesh = geometry::exact(m);
@@ -150,6 +165,7 @@ int run_refine(const RefineOptions& o) {
     try {
       for (io::FileText& f : format->write(file, o.output)) {
         written += (written.empty() ? "" : ", ") + f.path;
+        paths.push_back(f.path);
         files.push_back({std::move(f.path), std::move(f.content)});
       }
     } catch (const io::InputError& e) {
@@ -168,7 +184,7 @@ int run_refine(const RefineOptions& o) {
             (!run.result.consistent ? " (the run stopped early: the mesh as it stood, not necessarily a triangulation of the domain)\n"
              : !format->read        ? " (a file anisocert does not read back: write .json, .mesh or .msh to check it with " + entry->check() + ")\n"
              : !format->holds_metrics ? " (its files hold no metrics: write .json, .mesh or .msh to check it with " + entry->check() + ")\n"
-                                      : " (check it with " + entry->check() + ")\n");
+                                      : " (check it with " + check_command(*entry, paths) + ")\n");
   text += drawn.line;
   emit(text);
   if (drawn.diagram)
