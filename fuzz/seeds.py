@@ -70,6 +70,10 @@ put("refiners_certified", "constant-square", bytes([0, 0, 0, 2, 1] + [2] * 12))
 put("refiners_certified", "linear-l-shape", bytes([0, 1, 3, 2, 2] + [2] * 12))
 put("refiners_certified", "field-2-pentagon", bytes([0, 2, 4, 2, 3] + [2] * 12))
 put("refiners_certified", "field-3-triangle", bytes([0, 3, 2, 2, 4] + [1] * 12))
+# The BWY refiner (third in the registry: star, ls, bwy), its parameters at their defaults (x1).
+put("refiners_certified", "bwy-constant-square", bytes([2, 0, 0, 2, 1] + [2] * 12))
+put("refiners_certified", "bwy-linear-l-shape", bytes([2, 1, 3, 2, 2] + [2] * 12))
+put("refiners_certified", "bwy-field-2-pentagon", bytes([2, 2, 4, 2, 3] + [2] * 12))
 
 # certify_simple: k − 2, metric mode, corruption, then perturbations, metrics, diagonals.
 put("certify_simple", "grid-identity", bytes([1, 0, 0] + [4] * 8 + [0, 1, 0, 1, 0, 1, 0, 1, 0]))

@@ -5,8 +5,10 @@
 //   - every refiner: a valid triangulation of the domain (and of its constrained segments);
 //   - star (BWY locally uniform meshing): locally uniform, radius-edge ratio <= rho0 and
 //     distortion <= gamma0, as it claims;
-//   - ls (Labelle–Shewchuk Voronoi refinement): the dual of the exact anisotropic Voronoi diagram
-//     of its sites, which has no orphans and meets LS Theorem 7's preconditions.
+//   - ls and bwy (the refiners whose mesh is the dual of the diagram, RefinerEntry::dual_of_diagram):
+//     the dual of the exact anisotropic Voronoi diagram of its sites, a triangulation of Ω; for ls
+//     (Labelle–Shewchuk Voronoi refinement) that diagram has no orphans and meets LS Theorem 7's
+//     preconditions, which BWY's overlap-driven refinement does not promise.
 // Documented refusals are not findings: a parameter out of range (ParameterError), a field
 // parameter out of range (std::invalid_argument from make_field), a field that is not a metric
 // where it is sampled (FieldError), an oracle that refuses a final mesh as beyond what it supports
@@ -98,18 +100,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   require(report.valid_holds(), entry.name + " called its run consistent, but the mesh is not a valid triangulation of the domain");
   require(report.holds(o), entry.name + " called its run consistent, but the certifier refutes what it claims (" +
                                field_entry.name + " field)");
-  if (entry.name == "ls") {
+  if (entry.dual_of_diagram) {
     anisocert::oracle::Diagram d;
     try {
       d = anisocert::oracle::compute_diagram(anisocert::geometry::exact(run.result.mesh));
     } catch (const std::domain_error&) {
       return 0;  // the oracle's documented refusal (distances doubles cannot tell apart), not a finding
     }
-    bool orphans = false;
-    for (const auto& f : d.faces) orphans = orphans || f.orphan;
-    require(!orphans && d.theorem7.preconditions_hold && anisocert::oracle::compare_with_dual(d, run.result.mesh.triangles, 1).is_dual(),
-            "ls called its run finished, but the mesh is not the dual of the exact diagram of its sites, or that diagram has orphans "
-            "or fails Theorem 7's preconditions");
+    require(d.dual_check.is_triangulation && anisocert::oracle::compare_with_dual(d, run.result.mesh.triangles, 1).is_dual(),
+            entry.name + " called its run finished, but the mesh is not the dual of the exact diagram of its sites, or that dual is no "
+                         "triangulation of the domain");
+    if (entry.name == "ls") {
+      bool orphans = false;
+      for (const auto& f : d.faces) orphans = orphans || f.orphan;
+      require(!orphans && d.theorem7.preconditions_hold, "ls called its run finished, but the exact diagram of its sites has orphans or fails "
+                                                         "Theorem 7's preconditions");
+    }
   }
   return 0;
 }
