@@ -193,18 +193,10 @@ class BwyRefinement : public common::VoronoiRefinement {
       if (judged_tie.rule != number(rule) && !(rule == Rule::overlap && tie_overlaps(i)) &&
           !(rule == Rule::several_vertices && tie_shares_sites(i)))
         continue;
-      const ExactTie& tie = judged_tie.tie;
-      const auto [q, displacement] = rounded(tie.c);
-      attack(q, number(rule), std::sqrt(squared_distance(site(tie.sites[0]), q)),
-             "the Voronoi vertex of degree " + std::to_string(tie.sites.size()) + " of sites " + sites_text(tie.sites), displacement);
+      attack_tie(judged_tie.tie, number(rule));
       return true;
     }
     return false;
-  }
-  static std::string sites_text(const std::vector<int>& sites) {
-    std::string out;
-    for (int u : sites) out += (out.empty() ? "" : ", ") + std::to_string(u);
-    return out;
   }
 
   // Whether `rule` (3 to 6) applies at vertex q of T, decided exactly; sets stalled_ when a sign is
@@ -218,12 +210,7 @@ class BwyRefinement : public common::VoronoiRefinement {
       case Rule::overlap: return overlaps(t);
       case Rule::too_large: {
         if (p_.size <= 0) return false;
-        const CertifiedPoint P = point(q);
-        const MetricSite a = site(v.sites[0]);
-        const auto large = common::sign_at<1>({&P}, [&](const auto& X, auto of) {
-          using T = std::decay_t<decltype(X[0].x)>;
-          return common::distance2(common::lift<T>(a, of), X[0].x, X[0].y) - of(p_.size) * of(p_.size);
-        });
+        const auto large = beyond(q, site(v.sites[0]), p_.size);
         if (!large) stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is too large is undecided";
         return large == Sign::positive;
       }

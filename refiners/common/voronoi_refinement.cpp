@@ -174,6 +174,22 @@ bool VoronoiRefinement::attack_vertex(int q, int rule) {
   return attack(c, rule, radius, "the Voronoi vertex of sites " + trio_text(v.sites), displacement);
 }
 
+bool VoronoiRefinement::attack_tie(const ExactTie& tie, int rule) {
+  const auto [q, displacement] = rounded(tie.c);
+  std::string sites;
+  for (int u : tie.sites) sites += (sites.empty() ? "" : ", ") + std::to_string(u);
+  return attack(q, rule, std::sqrt(squared_distance(site(tie.sites[0]), q)),
+                "the Voronoi vertex of degree " + std::to_string(tie.sites.size()) + " of sites " + sites, displacement);
+}
+
+std::optional<Sign> VoronoiRefinement::beyond(int q, const MetricSite& a, double R) const {
+  const CertifiedPoint P = point(q);
+  return sign_at<1>({&P}, [&](const auto& X, auto of) {
+    using T = std::decay_t<decltype(X[0].x)>;
+    return distance2(lift<T>(a, of), X[0].x, X[0].y) - of(R) * of(R);
+  });
+}
+
 std::optional<int> VoronoiRefinement::encroached_by(const MetricSite& Q) const {
   const ReachBounds near(Q.M);
   for (std::size_t s = 0; s < subsegments_.size(); ++s)

@@ -91,8 +91,13 @@ class VoronoiRefinement {
   // split in the cell q would have. False when q was not inserted (the subsegment was split
   // instead, or the run stalls). what: the point, for a stop.
   bool attack(const Point2<double>& q, int rule, double radius, const std::string& what, double displacement = 0);
-  // attack() at Voronoi vertex q rounded (rounded_vertex), with its radius at its first site.
+  // attack() at Voronoi vertex q rounded (rounded_vertex), with its radius at its first site; at
+  // an exact tie's vertex rounded (rounded).
   bool attack_vertex(int q, int rule);
+  bool attack_tie(const ExactTie& tie, int rule);
+  // The sign of d_a(q)² − R² at Voronoi vertex q, decided exactly; nothing when undecided (the size
+  // rules).
+  std::optional<Sign> beyond(int q, const MetricSite& a, double R) const;
   // The sites other than its ends whose closed cells meet subsegment s.
   std::vector<int> encroachers(int s) const;
   // Splits s at a point exactly on it in the closed cell of one of `in` among `near` (every site

@@ -65,10 +65,7 @@ class LsVaryingRefinement : public VoronoiRefinement {
     }
     for (const JudgedTie& judged : exact_ties_) {
       if (judged.rule == 0) continue;
-      const ExactTie& tie = judged.tie;
-      const auto [q, displacement] = rounded(tie.c);
-      attack(q, judged.rule, std::sqrt(squared_distance(site(tie.sites[0]), q)),
-             "the Voronoi vertex of degree " + std::to_string(tie.sites.size()) + " of sites " + tie_text(tie), displacement);
+      attack_tie(judged.tie, judged.rule);
       return true;
     }
     return island();
@@ -150,11 +147,7 @@ class LsVaryingRefinement : public VoronoiRefinement {
     const int judged = p_.size <= 0 ? 0 : p_.normalized_metric ? 3 : 1;
     for (int k = 0; k < judged; ++k) {
       const std::size_t u = static_cast<std::size_t>(v.sites[static_cast<std::size_t>(k)]);
-      const MetricSite a{sites_.points[u], size_metric(u)};
-      const auto large = common::sign_at<1>({&P}, [&](const auto& X, auto of) {
-        using T = std::decay_t<decltype(X[0].x)>;
-        return common::distance2(common::lift<T>(a, of), X[0].x, X[0].y) - of(p_.size) * of(p_.size);
-      });
+      const auto large = beyond(q, MetricSite{sites_.points[u], size_metric(u)}, p_.size);
       if (!large) {
         stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is too large is undecided";
         return Rule::none;
@@ -164,11 +157,6 @@ class LsVaryingRefinement : public VoronoiRefinement {
     return Rule::none;
   }
 
-  static std::string tie_text(const ExactTie& tie) {
-    std::string out;
-    for (int u : tie.sites) out += (out.empty() ? "" : ", ") + std::to_string(u);
-    return out;
-  }
   // The metrics a tie's triangles are judged in: the sites' one metric and the field's at the
   // vertex (as violation() judges a vertex of degree 3).
   std::vector<Sym2<double>> tie_metrics(const ExactTie& tie) const {
