@@ -9,7 +9,9 @@
 // exact Voronoi vertex of every triangle t, r² ≤ B²ℓ² for each of t's edges ℓ measured from either
 // end (rule 3: r(v) ≤ Bδ(t_v)), and r ≤ size (the size rule), decided here by the oracle's signs
 // of conics. Random domains (convex or not, with or without interior points and segments), smooth
-// random fields (generators/fields.hpp), B from 1.2 to 3, a size bound or none.
+// random fields (generators/fields.hpp), B from 1.2 to 3, a size bound or none; and a quarter of
+// the runs with one metric on the unit square, whose grids give exact ties.
+#include "fields/registry.hpp"
 #include "geometry/mesh.hpp"
 #include "oracle/diagram/diagram.hpp"
 #include "oracle/diagram/input.hpp"
@@ -71,14 +73,22 @@ Rational d2_from(const geometry::Mesh<Rational>& m, int p, int q) {
 
 RC_GTEST_PROP(BWY_R, FinishedRunsAreTheExactDualAndNoRuleApplies, ()) {
   const gen::SmoothField f = gen::random_smooth_field();
+  // A quarter of the runs take the degenerate case instead: one metric, diag(m, m) or diag(m, 4m)
+  // on the unit square, whose grids of sites are cocircular (exact ties: Voronoi vertices of
+  // degree 4 or more, whose fans enter T).
+  const bool one_metric = *rc::gen::inRange(0, 4) == 0;
+  const double scale = *rc::gen::elementOf(std::vector<double>{16, 64, 256});
+  const fields::MetricField field =
+      one_metric ? fields::make_field("constant", {{"m11", scale}, {"m22", *rc::gen::arbitrary<bool>() ? scale : 4 * scale}}) : f.field();
   const bool reflex = *rc::gen::arbitrary<bool>();
-  const refiners::common::Domain domain = gen::domain_with_interior(gen::random_domain(reflex, false));
-  RC_TAG(reflex ? "non-convex" : "convex");
+  const refiners::common::Domain domain =
+      gen::domain_with_interior(one_metric ? std::vector<predicates::Point2<double>>{{0, 0}, {1, 0}, {1, 1}, {0, 1}} : gen::random_domain(reflex, false));
+  RC_TAG(one_metric ? "one metric, the unit square" : reflex ? "non-convex" : "convex");
   refiners::bwy::BwyParameters p;
   p.shape_bound = *rc::gen::elementOf(std::vector<double>{1.2, 1.5, 2, 3});
   p.size = *rc::gen::elementOf(std::vector<double>{0, 1, 2, 4});
   p.max_vertices = 250, p.max_seconds = 5;
-  const auto r = refiners::bwy::refine_bwy(domain, f.field(), p);
+  const auto r = refiners::bwy::refine_bwy(domain, field, p);
   if (!r.consistent) {
     RC_LOG() << r.stop_reason << "\n";
     RC_TAG(r.stop_reason.find("budget") != std::string::npos ? "stopped: budget" : "stopped: " + r.stop_reason.substr(0, 40));
@@ -92,7 +102,7 @@ RC_GTEST_PROP(BWY_R, FinishedRunsAreTheExactDualAndNoRuleApplies, ()) {
   const geometry::Mesh<Rational>& m = certified->mesh;
   const oracle::Diagram& d = certified->diagram;
   for (std::size_t k = 0; k < r.mesh.sites.size(); ++k) {
-    const auto M = f.at(r.mesh.sites[k].x, r.mesh.sites[k].y), written = r.mesh.metrics[k];
+    const auto M = field.at(r.mesh.sites[k].x, r.mesh.sites[k].y), written = r.mesh.metrics[k];
     RC_ASSERT(written.m11 == M.m11 && written.m12 == M.m12 && written.m22 == M.m22);
   }
   gen::assert_pslg_segments_are_edges(m, domain);
@@ -108,6 +118,8 @@ RC_GTEST_PROP(BWY_R, FinishedRunsAreTheExactDualAndNoRuleApplies, ()) {
     if (p.size > 0) RC_ASSERT(radius_beyond(d, n, t[0], size2) != Sign::positive);
   }
   RC_CLASSIFY(r.mesh.sites.size() > 50, "more than 50 sites");
+  RC_CLASSIFY(std::any_of(d.nodes.begin(), d.nodes.end(), [](const oracle::Node& n) { return n.sites.size() > 3; }),
+              "a Voronoi vertex of degree 4 or more");
 }
 
 // The trace: the k-th entry is the k-th inserted site, at its place exactly; its rule is one of

@@ -298,7 +298,8 @@ TEST(CliMesh, RefineRefusesBadInputBeforeTheRun) {
 // `refine --algo bwy` (issue 17) as a user runs it: the shock field, written as Medit files with a
 // picture of the exact diagram; the report names its stop (no rule of BWY §3.2.2 applies) and
 // decides §4.2's conditions for the run's B and G (the default G is the largest of Lemma 2 for
-// B = 1.5, 1.000984…, as `anisocert theory bwy --B 1.5` prints); `dual` confirms the mesh read
+// B = 1.5 rounded down: (G² − 1)(1 + G)²(1 + 4G)² 1.5⁴ is at most 1 at 1.000984645 and above 1 at
+// 1.000984646, in exact fractions, Python's fractions module); `dual` confirms the mesh read
 // back from the Medit files. Each parameter just outside its range is refused by name with exit 2
 // and nothing written, as is another refiner's parameter.
 TEST(CliMesh, BwyRefinesTheShockFieldAndDualConfirmsIt) {
