@@ -8,7 +8,8 @@
 //                     "params": consistency, and the exact certifier's verdict at the run's ρ₀, γ₀;
 //          "cli"      `anisocert ARGS` ({case}: the folder, {tmp}: a fresh temporary folder): the
 //                     exit code, fragments of standard output and error, the number of lines on
-//                     standard error, files that must not exist;
+//                     standard error, files that must not exist; then the commands of "then", each
+//                     with its own args and expect, in the same folder;
 //          "conics"   the exact common points of two conics and the signs of polynomials there.
 #include "fields/registry.hpp"
 #include "io/mesh_json.hpp"
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 namespace {
 
@@ -103,16 +105,13 @@ void run_refine(const fs::path& dir, const Json& c) {
   }
 }
 
-void run_cli(const fs::path& dir, const Json& c) {
-  const fs::path tmp = fs::path(::testing::TempDir()) / ("anisocert_regression_" + std::to_string(getpid()));
-  fs::remove_all(tmp);
-  fs::create_directories(tmp);
-  auto expand = [&](const std::string& s) { return replace_all(replace_all(s, "{case}", dir.string()), "{tmp}", tmp.string()); };
+// One command of a "cli" case and what must come out of it.
+void run_command(const Json& command, const std::function<std::string(const std::string&)>& expand) {
   std::string args;
-  for (const Json& a : c.at("args")) args += " '" + expand(a.get<std::string>()) + "'";
+  for (const Json& a : command.at("args")) args += " '" + expand(a.get<std::string>()) + "'";
   const Outcome r = run(args);
-  const Json& e = c.at("expect");
-  EXPECT_EQ(r.exit_code, e.at("exit").get<int>()) << r.err;
+  const Json& e = command.at("expect");
+  EXPECT_EQ(r.exit_code, e.at("exit").get<int>()) << args << "\n" << r.err;
   if (e.contains("stdout_contains")) {
     EXPECT_NE(r.out.find(e["stdout_contains"].get<std::string>()), std::string::npos) << r.out;
   }
@@ -125,6 +124,17 @@ void run_cli(const fs::path& dir, const Json& c) {
   for (const Json& f : e.value("absent", Json::array())) {
     EXPECT_FALSE(fs::exists(expand(f.get<std::string>()))) << f;
   }
+}
+
+// The case's command, then those of "then" (each with its own "args" and "expect"), in one
+// temporary folder: a later command may check what an earlier one wrote.
+void run_cli(const fs::path& dir, const Json& c) {
+  const fs::path tmp = fs::path(::testing::TempDir()) / ("anisocert_regression_" + std::to_string(getpid()));
+  fs::remove_all(tmp);
+  fs::create_directories(tmp);
+  auto expand = [&](const std::string& s) { return replace_all(replace_all(s, "{case}", dir.string()), "{tmp}", tmp.string()); };
+  run_command(c, expand);
+  for (const Json& next : c.value("then", Json::array())) run_command(next, expand);
   fs::remove_all(tmp);
 }
 
@@ -154,6 +164,10 @@ void expect_only_keys(const Json& j, std::initializer_list<const char*> allowed,
         << where << ": unknown key \"" << item.key() << "\"";
 }
 
+void expect_cli_keys(const Json& command) {
+  expect_only_keys(command.at("expect"), {"why", "exit", "stdout_contains", "stderr_contains", "stderr_lines", "absent"}, "expect");
+}
+
 class Regression : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Regression, StillAnsweredRight) {
@@ -172,8 +186,12 @@ TEST_P(Regression, StillAnsweredRight) {
                      "case.json");
     expect_only_keys(c.at("expect"), {"why", "consistent", "certified"}, "expect");
   } else if (kind == "cli") {
-    expect_only_keys(c, {"caught", "found_by", "run", "args", "expect"}, "case.json");
-    expect_only_keys(c.at("expect"), {"why", "exit", "stdout_contains", "stderr_contains", "stderr_lines", "absent"}, "expect");
+    expect_only_keys(c, {"caught", "found_by", "run", "args", "expect", "then"}, "case.json");
+    expect_cli_keys(c);
+    for (const Json& command : c.value("then", Json::array())) {
+      expect_only_keys(command, {"args", "expect"}, "then");
+      expect_cli_keys(command);
+    }
   } else if (kind == "conics") {
     expect_only_keys(c, {"caught", "found_by", "run", "conics", "expect"}, "case.json");
     expect_only_keys(c.at("expect"), {"why", "points", "signs"}, "expect");

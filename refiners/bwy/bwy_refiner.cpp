@@ -147,6 +147,15 @@ class BwyRefinement : public common::VoronoiRefinement {
     enter_ties();
   }
   void not_encroached(int s) override { queue_unedged(s); }
+  // The island rule's sites here are T's vertices, since BWY §3.2.1 needs every site a vertex of T.
+  // A site of a Voronoi vertex that lies outside Ω, or whose cell meets Ω in an island while
+  // another part of it (outside Ω) holds a vertex, is in no triangle of T.
+  std::vector<char> sites_with_vertices() const override {
+    std::vector<char> in(sites_.size(), 0);
+    for (int t : triangles_.alive())
+      for (int u : triangles_.triangle(t).sites) in[static_cast<std::size_t>(u)] = 1;
+    return in;
+  }
   void queue_unedged(int s) {
     if (static_cast<std::size_t>(s) >= unedged_queued_.size()) unedged_queued_.resize(static_cast<std::size_t>(s) + 1, 0);
     if (unedged_queued_[static_cast<std::size_t>(s)]) return;

@@ -21,8 +21,11 @@
 //     0: none);
 //   7 split instead: the conditional insertion of rules 2–6's point x: "if x encroaches some
 //     constrained subsegment e, insert a site on e instead" (the trace names the rule of x);
-//   8 island: a site whose cell holds no Voronoi vertex (bounded by an ellipse, never in T) gets a
-//     site on its bisector with its nearest other site (not BWY's: §3.2.1 needs every site in T);
+//   8 island: a site that is a vertex of no triangle of T gets a site on its bisector with its
+//     nearest other site (not BWY's: §3.2.1 needs every site in T, and §3.2.2's rules do not
+//     provide for one that is not: a site whose cell meets Ω in an island, bounded by an ellipse,
+//     has no Voronoi vertex in Ω, encroaches nothing and is in no triangle, so no rule of the
+//     paper sees it; regression site-in-no-triangle-left-by-every-rule);
 //   9 unresolved: where the diagram is unresolved in Ω (a vertex of degree 4 or more among different
 //     metrics: no triangle), a site (not BWY's), before rule 2: T lacks the vertices there, and a
 //     subsegment near them would be judged no edge (seen: near-cocircular corners of a rectangle

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace anisocert::refiners::common {
 
@@ -305,33 +306,48 @@ void VoronoiRefinement::split(int s, const std::vector<MetricSite>& in, const st
 }
 
 
-// The island rule: a site whose cell holds no Voronoi vertex (of degree 3, or an
-// exact tie) that the diagram keeps, i.e. in or near Ω.
-bool VoronoiRefinement::island() {
+std::vector<char> VoronoiRefinement::sites_with_vertices() const {
   std::vector<char> has(sites_.size(), 0);
   for (const auto& v : diagram_.vertices())
     if (v.holders > 0)
       for (int k : v.sites) has[static_cast<std::size_t>(k)] = 1;
   for (const ExactTie& tie : ties_anywhere_)
     for (int k : tie.sites) has[static_cast<std::size_t>(k)] = 1;
+  return has;
+}
+
+// The nearest site to u other than u, each site w measured in its own metric at u: among the
+// candidates of the leaves at u, or among all sites when u is the only one there (its cell holds
+// those leaves whole: an island larger than a leaf, seen in BWY_R); −1 when u is the only site.
+int VoronoiRefinement::nearest_other(int u) const {
+  const Point2<double>& p = sites_.points[static_cast<std::size_t>(u)];
+  std::vector<int> near = diagram_.candidates_near({p.x, p.x, p.y, p.y});
+  if (std::none_of(near.begin(), near.end(), [u](int c) { return c != u; })) {
+    near.resize(sites_.size());
+    std::iota(near.begin(), near.end(), 0);
+  }
+  int w = -1;
+  double least = INFINITY;
+  for (int c : near) {
+    if (c == u) continue;
+    const double d2 = squared_distance(site(c), p);
+    if (d2 < least) least = d2, w = c;
+  }
+  return w;
+}
+
+bool VoronoiRefinement::island() {
+  const std::vector<char> has = sites_with_vertices();
   for (std::size_t u = 0; u < has.size(); ++u) {
     if (has[u]) continue;
-    // On the segment from u to its nearest other site w (in w's metric at u), where d_u = d_w.
-    const MetricSite U = site(static_cast<int>(u));
-    int w = -1;
-    double least = INFINITY;
-    for (int c : diagram_.candidates_near({U.p.x, U.p.x, U.p.y, U.p.y})) {
-      if (c == static_cast<int>(u)) continue;
-      const MetricSite C = site(c);
-      const double d2 = squared_distance(C, U.p);
-      if (d2 < least) least = d2, w = c;
-    }
+    // On the segment from u to its nearest other site w, where d_u = d_w.
+    const int w = nearest_other(static_cast<int>(u));
     if (w < 0) continue;
-    const MetricSite W = site(w);
+    const MetricSite U = site(static_cast<int>(u)), W = site(w);
     const double t = midpoint_parameter(U, W);
     const Point2<double> z{U.p.x + t * (W.p.x - U.p.x), U.p.y + t * (W.p.y - U.p.y)};
     if ((z.x == U.p.x && z.y == U.p.y) || (z.x == W.p.x && z.y == W.p.y)) {
-      stalled_ = "site " + std::to_string(u) + "'s cell holds no Voronoi vertex, and its bisector with site " + std::to_string(w) +
+      stalled_ = "site " + std::to_string(u) + " is an island (the island rule), and its bisector with site " + std::to_string(w) +
                  " has no double point between them";
       return true;
     }

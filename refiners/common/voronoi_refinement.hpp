@@ -85,8 +85,13 @@ class VoronoiRefinement {
   // diagram is unresolved, attacked; false when none is left.
   bool split_encroached();
   bool attack_unresolved();
-  // The island rule, when nothing else applies; false when no site's cell lacks a vertex.
+  // The island rule, when nothing else applies: a site that sites_with_vertices() leaves out gets
+  // a site on the segment to its nearest other site, where their distances are equal; false when
+  // every site has a vertex.
   bool island();
+  // The sites the island rule leaves alone, by index: those of the Voronoi vertices the diagram
+  // keeps (in Ω and near it) and of the exact ties. A refiner that needs more overrides it.
+  virtual std::vector<char> sites_with_vertices() const;
   // The conditional insertion: a site at q, unless it would encroach a subsegment, which is then
   // split in the cell q would have. False when q was not inserted (the subsegment was split
   // instead, or the run stalls). what: the point, for a stop.
@@ -135,6 +140,7 @@ class VoronoiRefinement {
 
  private:
   std::optional<int> encroached_by(const common::MetricSite& Q) const;
+  int nearest_other(int u) const;
   void queue_reached(int k, const common::MetricSite& Q);
   struct ReachBounds;
   bool reaches(int s, const common::MetricSite& Q, const ReachBounds& near) const;
