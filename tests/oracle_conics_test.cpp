@@ -192,4 +192,30 @@ TEST(CertifiedRoots, SearchBoxWithAnInfiniteSideIsLeftToTheExactPath) {
   for (const IntervalBox& box : {IntervalBox{{-inf, 2}, {-2, 2}}, IntervalBox{{-2, inf}, {-2, 2}},
                                  IntervalBox{{-2, 2}, {-inf, 2}}, IntervalBox{{-2, 2}, {-2, inf}}})
     EXPECT_FALSE(certified_common_roots(A, B, box).has_value());
+  // A box the coefficient bounds alone exclude, even with an infinite side: xy − y² + y − 1 and
+  // x − y meet only at (1, 1) (x = y leaves y − 1 = 0), outside [1, 2] × [−∞, −1], and A's
+  // interval over the box is far from 0. Still no answer: the search does not take infinite sides
+  // (issue 38's independent read found that the low y end was unchecked).
+  const IntervalConic C = IntervalConic::around({0, 1, -1, 0, 1, -1}), D = IntervalConic::around({0, 0, 0, 1, -1, 0});
+  ASSERT_TRUE(certified_common_roots(C, D, {{1, 2}, {-2, -1}}).has_value());
+  EXPECT_FALSE(certified_common_roots(C, D, {{1, 2}, {-inf, -1}}).has_value());
+}
+
+// A certified root near the search box, never far from it: x = 0 and y = (5/8)x² − 1/8 meet at
+// (0, −1/8) only, 1/8 below the box [−1, 1] × [0, 1/64]. Newton's iterate from a sub-box lands
+// there, far beyond the sub-box's width, and is not a root of the box (issue 38's independent read
+// found a version that listed it). Every box the answer gives meets the search box enlarged by
+// its width on each side (certified_roots.hpp), here by twice that.
+TEST(CertifiedRoots, RootsFoundFarBelowTheSearchBoxAreNotListed) {
+  const IntervalConic A = IntervalConic::around({0, 0, 0, 1, 0, 0});
+  const IntervalConic B = IntervalConic::around({Rational(-5, 8), 0, 0, 0, 1, Rational(1, 8)});
+  const IntervalBox search{{-1, 1}, {0, 1.0 / 64}};
+  const auto roots = certified_common_roots(A, B, search);
+  ASSERT_TRUE(roots.has_value());
+  EXPECT_TRUE(roots->empty());
+  for (const IntervalBox& r : *roots) {
+    const double wx = search.x.hi - search.x.lo, wy = search.y.hi - search.y.lo;
+    EXPECT_FALSE(r.x.hi < search.x.lo - 2 * wx || r.x.lo > search.x.hi + 2 * wx || r.y.hi < search.y.lo - 2 * wy ||
+                 r.y.lo > search.y.hi + 2 * wy);
+  }
 }

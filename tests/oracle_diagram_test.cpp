@@ -207,6 +207,29 @@ TEST(OracleDiagram, VertexExactlyOnAWedgeLineIsNotWedged) {
   expect_brute_force_agrees(d, 18);
 }
 
+// A vertex where one cell meets itself: s0 = (1, 0) with M = I, s1 = (1, −1) with [[2, 1], [1, 1]],
+// s2 = (1/2, −1/2) with 2I are all at squared distance 1 from the origin (1; 2 − 2 + 1; 2(1/4 + 1/4)),
+// and around it the cells come counter-clockwise as 0, 1, 0, 2 (an independent reader's drawing,
+// issue 38). The listing of a cycle is its least rotation, [0, 1, 0, 2], whichever way the input
+// is placed: the half-turn x ↦ −x keeps every distance (Mv = M(−v) under v ↦ −v) and the
+// counter-clockwise order, so it must list the same. Rotating to the least site alone gave
+// [0, 2, 0, 1] after the half-turn (mutant 49 of the 2026-11-30 campaign showed it).
+TEST(OracleDiagram, PolygonOfACellMeetingItselfIsListedTheSameAfterAHalfTurn) {
+  for (const int turn : {1, -1}) {
+    Mesh<Rational> in = square_input(-3, 3);
+    add_site(in, turn, 0, 1, 0, 1);
+    add_site(in, turn, -turn, 2, 1, 1);
+    add_site(in, Rational(turn, 2), Rational(-turn, 2), 2, 0, 2);
+    const Diagram d = checked_diagram(in);
+    const Location loc = locate(d, {0, 0});
+    ASSERT_EQ(loc.kind, Location::Kind::node);
+    const auto at_origin = std::find_if(d.dual_polygons.begin(), d.dual_polygons.end(),
+                                        [&](const DualCell& c) { return c.vertex == loc.index; });
+    ASSERT_NE(at_origin, d.dual_polygons.end()) << "half-turn " << (turn < 0);
+    EXPECT_EQ(at_origin->sites, (std::vector<int>{0, 1, 0, 2})) << "half-turn " << (turn < 0);
+  }
+}
+
 // A single site owns Ω; two sites with equal metrics have a straight bisector.
 TEST(OracleDiagram, OneAndTwoSites) {
   Mesh<Rational> one = square_input(0, 1);

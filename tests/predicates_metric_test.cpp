@@ -7,6 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
+#include <tuple>
+#include <vector>
 #include <limits>
 
 using anisocert::parse_rational;
@@ -99,6 +103,24 @@ TEST(NumberTypes, DoublesAreTheRationalsTheyDenote) {
 // (LS §3: the most either unit ball stretches into the other), for diagonal metrics of different
 // determinants, in both orders: P = I, Q = diag(4, 9) gives max(9, 1) = 9; P = diag(2, 1),
 // Q = diag(1, 8) gives max(8, 2) = 8. D is a square in both, so the value is rational.
+// With both metrics not positive definite, the error names the first (issue 38: the arguments
+// swapped named the second): diag(0, 1) has m11 = 0, diag(−1, 1) has m11 = −1.
+TEST(Distortion, TheFirstMetricThatIsNotPositiveDefiniteIsNamed) {
+  for (const auto& [P, Q, named] : {std::tuple{Sym2<Rational>{0, 0, 1}, Sym2<Rational>{-1, 0, 1}, "m11 = 0 "},
+                                    std::tuple{Sym2<Rational>{-1, 0, 1}, Sym2<Rational>{0, 0, 1}, "m11 = -1 "}}) {
+    for (const auto& call : std::vector<std::function<void()>>{[&] { compare_tau_squared(P, Q, 2); },
+                                                               [&] { compare_tau(P, Q, Sym2<Rational>{1, 0, 1}, Sym2<Rational>{1, 0, 1}); },
+                                                               [&] { tau_squared(P, Q); }}) {
+      try {
+        call();
+        ADD_FAILURE() << "no error for " << named;
+      } catch (const NotPositiveDefinite& e) {
+        EXPECT_NE(std::string(e.what()).find(named), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
 TEST(Distortion, TauSquaredAgainstTheClosedForm) {
   const struct {
     Sym2<Rational> P, Q;

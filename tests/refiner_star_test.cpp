@@ -10,6 +10,7 @@
 #include "refiners/star/gift_wrap.hpp"
 #include "refiners/star/pick_valid.hpp"
 #include "refiners/star/star_refiner.hpp"
+#include "refiners/star/star_set.hpp"
 
 #include <gtest/gtest.h>
 
@@ -167,6 +168,32 @@ TEST(StarRefiner, CocircularTieGoesToTheNearerAngle) {
     EXPECT_EQ(refiners::star::next_delaunay_neighbour(pts[0], I, 1, cand, true, pts), 2);
     EXPECT_EQ(refiners::star::next_delaunay_neighbour(pts[0], I, 3, cand, false, pts), 2);
   }
+}
+
+// LU §3's stars kept as sites come (star_set.hpp): a new site k that lies in the circumcircle of
+// one triangle of S_v only is Bowyer–Watson on v's fan, done in place (Update::updated), not a
+// recomputation. M = I on the unit square, its corners and the centre v = (1/2, 1/2): v's fan is
+// the four triangles on the sides, whose circumcircles have centres at the sides' midpoints and
+// radius 1/2; k = (1/2, 9/10) is 1/10 from (1/2, 1) and at least 0.64 from the other three
+// centres, so only (v, (1, 1), (0, 1)) is in conflict, and the fan becomes (0, 1), (1, 2),
+// (2, k), (k, 3), (3, 0) (the circumcircle of v, (1, 1), k has centre (4/5, 7/10) and radius²
+// 13/100, which leaves out (0, 1) and (1, 0)). Issue 38's independent read found that two
+// versions recomputing every such star (mutants 56 and 62 of the 2026-11-30 campaign) passed
+// the suite; a recomputed fan also starts elsewhere, which changes the run.
+TEST(StarSet, NewSiteInOneCircumcircleUpdatesTheFanInPlace) {
+  const refiners::common::Domain domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  refiners::common::Sites sites = isotropic_sites(domain, {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}});
+  const refiners::common::Boundary boundary(domain, sites);
+  refiners::star::StarSet stars(domain, sites, boundary);
+  for (int v = 0; v < 5; ++v) stars.add(0);
+  for (int v = 0; v < 5; ++v) stars.recompute(v);
+  const int k = sites.add({0.5, 0.9});
+  stars.add(0);
+  ASSERT_EQ(stars.update(4, k), refiners::star::StarSet::Update::updated);
+  std::set<std::array<int, 2>> fan(stars[4].triangles.begin(), stars[4].triangles.end());
+  EXPECT_EQ(fan, (std::set<std::array<int, 2>>{{0, 1}, {1, 2}, {2, k}, {k, 3}, {3, 0}}));
+  // The stars k does not reach are left as they are.
+  EXPECT_EQ(stars.update(0, k), refiners::star::StarSet::Update::unchanged);
 }
 
 // Pick_valid's picking region beyond the doubles in one coordinate only (pick_valid.hpp: then the

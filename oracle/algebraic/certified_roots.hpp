@@ -11,9 +11,12 @@
 // whole box X when H = hull(X ∪ Y).
 //
 // The answer is either complete — pairwise disjoint boxes, each holding exactly one common point,
-// and together every common point in the search box (some boxes may reach outside it) — or
+// and together every common point in the search box (some boxes may reach outside it, never
+// beyond the search box enlarged by its width on each side, since a root certified around a
+// Newton iterate from a sub-box X counts only when the iterate is within X's width of X) — or
 // nothing, when the intervals cannot decide: tangential or nearly tangential meetings, shared
-// components, overflow. The caller then uses the exact intersection (conic_intersection.hpp).
+// components, overflow, or a search box with an infinite side. The caller then uses the exact
+// intersection (conic_intersection.hpp).
 #include "oracle/algebraic/located_point.hpp"
 
 #include <optional>

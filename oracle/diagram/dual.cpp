@@ -13,6 +13,19 @@ std::string pair_text(int a, int b) { return "(" + std::to_string(a) + ", " + st
 
 int left_site_of(const Diagram& d, int h) { return d.cycles[d.half_edges[h].cycle].site; }
 
+// The cycle rotated to its lexicographically least rotation: the canonical listing of a cyclic
+// sequence. Rotating to the least site alone is not one when that site owns two sectors (a
+// vertex where one cell meets itself): [0, 1, 0, 2] and [0, 2, 0, 1] are the same cycle, and which
+// came out depended on where the germs' angular order began.
+void least_rotation(std::vector<int>& cycle) {
+  std::vector<int> best = cycle, rotated = cycle;
+  for (std::size_t k = 1; k < cycle.size(); ++k) {
+    std::rotate(rotated.begin(), rotated.begin() + 1, rotated.end());
+    if (rotated < best) best = rotated;
+  }
+  cycle = std::move(best);
+}
+
 }  // namespace
 
 void Builder::build_dual() {
@@ -23,17 +36,16 @@ void Builder::build_dual() {
     if (gs.empty()) continue;  // a vertex of D|Ω on ∂Ω whose arcs all leave Ω at once
     // The sector after germ i (counter-clockwise) is on the left of germ i's outgoing half-edge;
     // after the incoming boundary piece lies the outside of Ω.
+    // On ∂Ω the listing starts after the (last) incoming boundary piece; inside Ω it is a cycle,
+    // listed canonically.
+    const auto piece = std::find_if(gs.rbegin(), gs.rend(), [](const Germ& g) { return g.outgoing < 0; });
+    const std::size_t start = piece == gs.rend() ? 0 : static_cast<std::size_t>(gs.rend() - piece) % gs.size();
     std::vector<int> owners;
-    std::size_t start = 0;
-    for (std::size_t i = 0; i < gs.size(); ++i)
-      if (gs[i].outgoing < 0) start = (i + 1) % gs.size();
     for (std::size_t k = 0; k < gs.size(); ++k) {
       const Germ& g = gs[(start + k) % gs.size()];
       if (g.outgoing >= 0) owners.push_back(left_site_of(d_, g.outgoing));
     }
-    const bool interior = std::all_of(gs.begin(), gs.end(), [](const Germ& g) { return g.outgoing >= 0; });
-    if (interior)  // a cycle: start at the least site, for a canonical listing
-      std::rotate(owners.begin(), std::min_element(owners.begin(), owners.end()), owners.end());
+    if (piece == gs.rend()) least_rotation(owners);
     std::set<int> distinct(owners.begin(), owners.end());
     (owners.size() == 3 && distinct.size() == 3 ? d_.dual_triangles : d_.dual_polygons).push_back({n, owners});
   }
