@@ -5,12 +5,16 @@
 #include "oracle/algebraic/common_points.hpp"
 #include "oracle/algebraic/certified_roots.hpp"
 #include "oracle/algebraic/conic_intersection.hpp"
+#include "oracle/algebraic/narrowed_box.hpp"
 #include "oracle/algebraic/polynomial.hpp"
 #include "oracle/algebraic/shared_line.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <random>
 
 using anisocert::parse_rational;
 using anisocert::Rational;
@@ -218,4 +222,49 @@ TEST(CertifiedRoots, RootsFoundFarBelowTheSearchBoxAreNotListed) {
     EXPECT_FALSE(r.x.hi < search.x.lo - 2 * wx || r.x.lo > search.x.hi + 2 * wx || r.y.hi < search.y.lo - 2 * wy ||
                  r.y.lo > search.y.hi + 2 * wy);
   }
+}
+
+// The second filter stage (narrowed_box.hpp) against the exact path: circles with rational
+// centres and radii² meet at irrational points (x² + y² = 1 and x = y at ±1/√2; and random
+// pairs), each certified box narrowed by Krawczyk's operator in MPFI holds the exact point
+// (compared exactly with the box's ends) and is at most five doubles wide per side.
+TEST(NarrowedBox, HoldsTheExactCommonPointInAFewUlps) {
+  std::mt19937 rng(38);
+  std::uniform_int_distribution<int> coordinate(-40, 40), radius(10, 60);
+  int narrowed = 0;
+  for (int k = 0; k < 60; ++k) {
+    const Rational ax(coordinate(rng), 16), ay(coordinate(rng), 16), bx(coordinate(rng), 16), by(coordinate(rng), 16);
+    const Rational ra(radius(rng), 16), rb(radius(rng), 16);
+    const Conic A = k == 0 ? Conic{1, 0, 1, 0, 0, -1} : Conic{1, 0, 1, -2 * ax, -2 * ay, ax * ax + ay * ay - ra * ra};
+    const Conic B = k == 0 ? Conic{0, 0, 0, 1, -1, 0} : Conic{1, 0, 1, -2 * bx, -2 * by, bx * bx + by * by - rb * rb};
+    const auto boxes = certified_common_roots(IntervalConic::around(A), IntervalConic::around(B), {{-20, 20}, {-20, 20}});
+    if (!boxes) continue;
+    const ConicIntersection exact = intersect(A, B);
+    ASSERT_EQ(boxes->size(), exact.points.size());
+    for (std::size_t i = 0; i < boxes->size(); ++i) {
+      const auto n = narrowed_box(A, B, (*boxes)[i]);
+      if (!n) continue;
+      ++narrowed;
+      const auto within = [](const RealAlgebraic& v, const anisocert::FilterInterval& side) {
+        return compare(v, RealAlgebraic::rational(Rational(side.lo))) != Sign::negative &&
+               compare(v, RealAlgebraic::rational(Rational(side.hi))) != Sign::positive;
+      };
+      const auto held = std::count_if(exact.points.begin(), exact.points.end(), [&](const IntersectionPoint& p) {
+        return within(p.point.x(), n->x) && within(p.point.y(), n->y);
+      });
+      EXPECT_EQ(held, 1) << "pair " << k << ", box " << i;
+      for (const auto& side : {n->x, n->y}) {
+        double lo = side.lo;
+        for (int step = 0; step < 5 && lo < side.hi; ++step) lo = std::nextafter(lo, side.hi);
+        EXPECT_GE(lo, side.hi) << "pair " << k << ": [" << side.lo << ", " << side.hi << "] is wider than five doubles";
+      }
+    }
+  }
+  EXPECT_GT(narrowed, 40);
+}
+
+// Where the Jacobian is singular (x² + y² = 1 touching y = 1 at (0, 1)) nothing is proved: the
+// caller decides exactly.
+TEST(NarrowedBox, TangentCurvesAreLeftToTheExactPath) {
+  EXPECT_FALSE(narrowed_box({1, 0, 1, 0, 0, -1}, {0, 0, 0, 0, 1, -1}, {{-1e-3, 1e-3}, {1 - 1e-3, 1 + 1e-3}}).has_value());
 }

@@ -50,7 +50,7 @@ CommonPoints common_points(const CurvePair& curves, const IntervalBox& search, c
       for (const AlgebraicPoint& p : isolated_common_points(A, B))
         if (inside(p, box)) return p;
       throw std::logic_error("common_points: no exact common point in a certified box");
-    }));
+    }), build);
   std::sort(out.points.begin(), out.points.end(), [](const LocatedPoint& p, const LocatedPoint& q) {
     const Sign sx = compare_x(p, q);
     return sx != Sign::zero ? sx == Sign::negative : compare_y(p, q) == Sign::negative;

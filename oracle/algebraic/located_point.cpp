@@ -1,5 +1,7 @@
 #include "oracle/algebraic/located_point.hpp"
 
+#include "oracle/algebraic/narrowed_box.hpp"
+
 #include <cmath>
 
 namespace anisocert::oracle {
@@ -20,8 +22,8 @@ LocatedPoint::LocatedPoint(AlgebraicPoint p, const Rational& width) : exact_(std
   y = enclosure(exact_->y(), width);
 }
 
-LocatedPoint::LocatedPoint(const IntervalBox& box, std::shared_ptr<const Recipe> recipe)
-    : x(box.x), y(box.y), recipe_(std::move(recipe)) {}
+LocatedPoint::LocatedPoint(const IntervalBox& box, std::shared_ptr<const Recipe> recipe, std::shared_ptr<const Curves> curves)
+    : x(box.x), y(box.y), recipe_(std::move(recipe)), curves_(std::move(curves)) {}
 
 LocatedPoint LocatedPoint::rational(const Rational& x, const Rational& y) {
   return LocatedPoint({FilterInterval::around(x), FilterInterval::around(y)},
@@ -29,11 +31,11 @@ LocatedPoint LocatedPoint::rational(const Rational& x, const Rational& y) {
 }
 
 LocatedPoint::LocatedPoint(const LocatedPoint& o)
-    : x(o.x), y(o.y), recipe_(o.recipe_), exact_(o.exact_ ? std::make_unique<AlgebraicPoint>(*o.exact_) : nullptr) {}
+    : x(o.x), y(o.y), recipe_(o.recipe_), curves_(o.curves_), exact_(o.exact_ ? std::make_unique<AlgebraicPoint>(*o.exact_) : nullptr) {}
 
 LocatedPoint& LocatedPoint::operator=(const LocatedPoint& o) {
   if (this != &o) {
-    x = o.x, y = o.y, recipe_ = o.recipe_;
+    x = o.x, y = o.y, recipe_ = o.recipe_, curves_ = o.curves_;
     exact_ = o.exact_ ? std::make_unique<AlgebraicPoint>(*o.exact_) : nullptr;
   }
   return *this;
@@ -47,6 +49,12 @@ const AlgebraicPoint& LocatedPoint::exact() const {
     exact_ = std::make_unique<AlgebraicPoint>((*recipe_)());
   }
   return *exact_;
+}
+
+std::optional<IntervalBox> LocatedPoint::narrowed() const {
+  if (!curves_) return std::nullopt;
+  const auto [A, B] = (*curves_)();
+  return narrowed_box(A, B, {x, y});
 }
 
 FilterInterval LocatedPoint::value(const Conic& G) const {

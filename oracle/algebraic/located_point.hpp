@@ -14,6 +14,8 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace anisocert::oracle {
 
@@ -24,14 +26,17 @@ struct IntervalBox {
 
 struct LocatedPoint {
   using Recipe = std::function<AlgebraicPoint()>;
+  using Curves = std::function<std::pair<Conic, Conic>()>;
 
   anisocert::FilterInterval x, y;  // boxes containing the exact coordinates
 
   // An exact point, its coordinates' isolating intervals refined below `width` (a positive
   // rational) for the box.
   LocatedPoint(AlgebraicPoint p, const Rational& width);
-  // A point known by a box that contains it; `recipe` builds it exactly, on first use.
-  LocatedPoint(const IntervalBox& box, std::shared_ptr<const Recipe> recipe);
+  // A point known by a box that contains it; `recipe` builds it exactly, on first use. With
+  // `curves`, the point is the one common point of the two curves in the box, which narrowed()
+  // may enclose more tightly.
+  LocatedPoint(const IntervalBox& box, std::shared_ptr<const Recipe> recipe, std::shared_ptr<const Curves> curves = nullptr);
   static LocatedPoint rational(const Rational& x, const Rational& y);
 
   // Copies are deep (the exact point, when built, is copied), so that two threads never share
@@ -44,6 +49,10 @@ struct LocatedPoint {
 
   // The exact point.
   const AlgebraicPoint& exact() const;
+  // A box of a few ulps around the point, proved by Krawczyk's operator in MPFI on its two curves
+  // (narrowed_box.hpp), for decisions the box cannot take before the exact point is built;
+  // nothing for a point given exactly or by no curves, or when not proved.
+  std::optional<IntervalBox> narrowed() const;
 
   Sign sign_of(const Conic& G) const;
   // Interval value of G on the box (for callers that compare several values first).
@@ -55,6 +64,7 @@ struct LocatedPoint {
 
  private:
   std::shared_ptr<const Recipe> recipe_;
+  std::shared_ptr<const Curves> curves_;
   mutable std::unique_ptr<AlgebraicPoint> exact_;
 };
 

@@ -1,12 +1,7 @@
 #pragma once
-// Krawczyk's operator for the points equidistant from three sites a, b, c (the candidates for a
-// Voronoi vertex, LS §7), on a box X of any interval type T:
-//   F(x) = (Q_a(x) − Q_b(x), Q_a(x) − Q_c(x)),   J(x) = its Jacobian,
-//   K(X) = m − Y F(m) + (I − Y J(X)) (X − m),
-// for a point m of X and any matrix Y (here an approximate inverse of J(m)). Every zero of F in X
-// lies in K(X); K(X) ⊂ int X proves that X holds exactly one (R. Krawczyk, Computing 4 (1969);
-// A. Neumaier, Interval Methods for Systems of Equations (1990), §5.1). So K(X) ∩ X = ∅ proves
-// that X holds none. These are the only conclusions drawn from it.
+// The points equidistant from three sites a, b, c (the candidates for a Voronoi vertex, LS §7)
+// as the zeros of F(x) = (Q_a(x) − Q_b(x), Q_a(x) − Q_c(x)), for Krawczyk's operator
+// (geometry/krawczyk.hpp) on a box of any interval type T.
 //
 // F is quadratic, so its expansion at m is exact: with δ = x − m and H₁ = M_a − M_b,
 // H₂ = M_a − M_c (half the rows' Hessians),
@@ -14,16 +9,17 @@
 // Evaluated on a box this form is much tighter than Q_a − Q_b term by term: where two metrics are
 // equal (H_i = 0, a straight bisector) it is the exact range up to rounding.
 
+#include "geometry/krawczyk.hpp"
 #include "refiners/common/distance_function.hpp"
 
 #include <optional>
 
 namespace anisocert::refiners::common {
 
-template <class T>
-struct Box2 {
-  T x, y;
-};
+using geometry::Box2;
+using geometry::krawczyk;
+using geometry::KrawczykStep;
+using geometry::KrawczykVerdict;
 
 template <class T>
 using SitesIn = std::array<SiteIn<T>, 3>;
@@ -94,43 +90,5 @@ class Equidistance {
   SitesIn<T> s_;
   std::array<Sym2<T>, 2> H_;
 };
-
-enum class KrawczykVerdict {
-  no_zero,      // K(X) ∩ X = ∅
-  unique_zero,  // K(X) ⊂ int X
-  unknown,      // neither: `box` is K(X) ∩ X, which holds every zero of X
-};
-
-template <class T>
-struct KrawczykStep {
-  KrawczykVerdict verdict;
-  Box2<T> box;  // K(X) when unique, K(X) ∩ X when unknown
-};
-
-// One application of K to X. `one` is 1 in T.
-template <class T>
-KrawczykStep<T> krawczyk(const Equidistance<T>& F, const Box2<T>& X, const T& one) {
-  const T mx = X.x.midpoint(), my = X.y.midpoint();
-  const T dx = X.x - mx, dy = X.y - my;
-  // Y = mid(½J(m))⁻¹; K with Y/2 in place of Y is then m − Y·(½F(m)) + (I − Y·½J(X))(X − m).
-  const auto Jm = F.half_jacobian(mx, my);
-  const T a = Jm[0].midpoint(), b = Jm[1].midpoint(), c = Jm[2].midpoint(), d = Jm[3].midpoint();
-  const T det = a * d - b * c;
-  if (det.has_zero()) return {KrawczykVerdict::unknown, X};
-  const T y11 = (d / det).midpoint(), y12 = (-b / det).midpoint(), y21 = (-c / det).midpoint(), y22 = (a / det).midpoint();
-  const auto Fm = F.at(mx, my);
-  const T half = one / 2, hf0 = Fm[0] * half, hf1 = Fm[1] * half;
-  const auto JX = F.half_jacobian(Jm, dx, dy);
-  const T c11 = one - (y11 * JX[0] + y12 * JX[2]), c12 = -(y11 * JX[1] + y12 * JX[3]);
-  const T c21 = -(y21 * JX[0] + y22 * JX[2]), c22 = one - (y21 * JX[1] + y22 * JX[3]);
-  Box2<T> K{mx - (y11 * hf0 + y12 * hf1) + (c11 * dx + c12 * dy), my - (y21 * hf0 + y22 * hf1) + (c21 * dx + c22 * dy)};
-  // No zero only when K(X) is certainly apart from X (a NaN end decides nothing).
-  const auto apart = [](const T& k, const T& x) { return k.upper_double() < x.lower_double() || k.lower_double() > x.upper_double(); };
-  if (apart(K.x, X.x) || apart(K.y, X.y)) return {KrawczykVerdict::no_zero, X};
-  auto ix = intersection(K.x, X.x), iy = intersection(K.y, X.y);
-  if (!ix || !iy) return {KrawczykVerdict::unknown, X};
-  if (K.x.strictly_inside(X.x) && K.y.strictly_inside(X.y)) return {KrawczykVerdict::unique_zero, K};
-  return {KrawczykVerdict::unknown, {*ix, *iy}};
-}
 
 }  // namespace anisocert::refiners::common

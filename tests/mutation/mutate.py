@@ -65,7 +65,7 @@ EXCLUDED = r"Api\.ConsumerBuildsAgainstInstalledPackage|LayerIncludes\."
 # The survivors argued equivalent in docs/mutation.md, matched by file and line text.
 EQUIVALENT = ROOT / "tests" / "mutation" / "equivalent.json"
 # The binaries CTest runs (benchmarks are not built).
-TARGETS = ["anisocert", "unit_tests", "property_tests", "format_tests", "cgal_tests", "fuzz_support_tests"]
+TARGETS = ["anisocert", "unit_tests", "property_tests", "format_tests", "cgal_tests", "peer_tests", "fuzz_support_tests"]
 
 
 @dataclasses.dataclass
