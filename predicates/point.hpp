@@ -16,10 +16,16 @@ struct Sym2 {
   friend bool operator==(const Sym2&, const Sym2&) = default;
 };
 
+template <class S>
+struct Point3 {
+  S x, y, z;
+};
+
 // [m11 m12 m13; m12 m22 m23; m13 m23 m33].
 template <class S>
 struct Sym3 {
   S m11, m12, m13, m22, m23, m33;
+  friend bool operator==(const Sym3&, const Sym3&) = default;
 };
 
 // (dx, dy) M (dx, dy)ᵀ, the squared length of (dx, dy) measured by M (LS §2: d_p(a, b)²).
@@ -31,6 +37,18 @@ constexpr T quadratic_form(const T& m11, const T& m12, const T& m22, const T& dx
 template <class T>
 constexpr T quadratic_form(const Sym2<T>& M, const T& dx, const T& dy) {
   return quadratic_form(M.m11, M.m12, M.m22, dx, dy);
+}
+
+// (dx, dy, dz) M (dx, dy, dz)ᵀ, the squared length of a vector measured by a 3×3 metric (LU §2).
+template <class T>
+constexpr T quadratic_form(const T& m11, const T& m12, const T& m13, const T& m22, const T& m23, const T& m33, const T& dx,
+                           const T& dy, const T& dz) {
+  return dx * (m11 * dx + m12 * dy + m13 * dz) + dy * (m12 * dx + m22 * dy + m23 * dz) + dz * (m13 * dx + m23 * dy + m33 * dz);
+}
+
+template <class T>
+constexpr T quadratic_form(const Sym3<T>& M, const T& dx, const T& dy, const T& dz) {
+  return quadratic_form(M.m11, M.m12, M.m13, M.m22, M.m23, M.m33, dx, dy, dz);
 }
 
 // (ax, ay) M (bx, by)ᵀ, the M-inner product.

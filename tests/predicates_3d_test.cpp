@@ -1,0 +1,186 @@
+// The 3D predicates (issue 39): orientation of four points and the in-sphere test in a metric,
+// against closed forms, against an independent construction in rationals (the M-circumcentre
+// solved from its linear system), on exactly degenerate inputs (coplanar, M-cospherical) and a
+// few ulps away, and filtered against exact across magnitudes (zero disagreements allowed).
+
+#include "predicates/insphere.hpp"
+#include "predicates/orientation3.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+
+using anisocert::Rational;
+using anisocert::Sign;
+using namespace anisocert::predicates;
+
+namespace {
+
+using P3 = Point3<Rational>;
+
+template <class K>
+Sign checked(const std::array<double, K::arity>& x) {
+  std::array<Rational, K::arity> q;
+  for (std::size_t i = 0; i < K::arity; ++i) q[i] = Rational(x[i]);
+  const Sign exact = exact_sign<K>(q);
+  EXPECT_EQ(filtered_sign<K>(x), exact) << K::name;
+  EXPECT_EQ(filtered_sign<K>(q), exact) << K::name;
+  return exact;
+}
+
+Rational det3(const std::array<std::array<Rational, 3>, 3>& m) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+std::array<Rational, 3> times(const Sym3<Rational>& M, const std::array<Rational, 3>& v) {
+  return {M.m11 * v[0] + M.m12 * v[1] + M.m13 * v[2], M.m12 * v[0] + M.m22 * v[1] + M.m23 * v[2],
+          M.m13 * v[0] + M.m23 * v[1] + M.m33 * v[2]};
+}
+
+Rational q(const Sym3<Rational>& M, const P3& p, const std::array<Rational, 3>& c) {
+  return quadratic_form(M, p.x - c[0], p.y - c[1], p.z - c[2]);
+}
+
+// sign(r² − (e − c)ᵀM(e − c)) for c the M-circumcentre of a, b, c, d, solved by Cramer's rule from
+// 2 (p − a)ᵀ M c = pᵀMp − aᵀMa for p = b, c, d: an independent construction (no lifted
+// determinant). The tetrahedron must not be flat.
+Sign inside_by_centre(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e, const Sym3<Rational>& M) {
+  std::array<std::array<Rational, 3>, 3> A;
+  std::array<Rational, 3> rhs;
+  const P3* ps[3] = {&b, &c, &d};
+  const std::array<Rational, 3> origin{0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    const std::array<Rational, 3> diff{ps[i]->x - a.x, ps[i]->y - a.y, ps[i]->z - a.z};
+    const auto row = times(M, diff);
+    A[i] = {2 * row[0], 2 * row[1], 2 * row[2]};
+    rhs[i] = q(M, *ps[i], origin) - q(M, a, origin);
+  }
+  const Rational D = det3(A);
+  std::array<Rational, 3> centre;
+  for (int k = 0; k < 3; ++k) {
+    auto Ak = A;
+    for (int i = 0; i < 3; ++i) Ak[i][k] = rhs[i];
+    centre[k] = det3(Ak) / D;
+  }
+  const Rational r2 = q(M, a, centre), e2 = q(M, e, centre);
+  return r2 > e2 ? Sign::positive : r2 < e2 ? Sign::negative : Sign::zero;
+}
+
+}  // namespace
+
+// The unit tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1) is positively oriented (its determinant
+// is det I = 1); an odd permutation turns it negative; a fourth point in the plane z = 0 is coplanar.
+TEST(Orientation3, ClosedForms) {
+  const P3 o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+  EXPECT_EQ(orientation3(o, x, y, z), Sign::positive);
+  EXPECT_EQ(orientation3(o, y, x, z), Sign::negative);
+  EXPECT_EQ(orientation3(x, y, z, o), Sign::negative);  // a cyclic shift of four is odd
+  EXPECT_EQ(orientation3(o, x, y, P3{Rational(7, 3), Rational(-5, 2), 0}), Sign::zero);
+  EXPECT_EQ(orientation3(Point3<double>{0, 0, 0}, Point3<double>{1, 0, 0}, Point3<double>{0, 1, 0}, Point3<double>{0.5, 0.5, 1e-300}),
+            Sign::positive);
+}
+
+// In-sphere with M = I: the unit tetrahedron's circumsphere has centre (1/2, 1/2, 1/2) and radius²
+// 3/4; (1/4, 1/4, 1/4) is inside (the lifted determinant is −9/16), (1, 1, 1) is on it (the eight
+// corners of a cube are cospherical), (1, 1, 1.1) outside. M = diag(1, 4, 9) maps
+// (x, y, z) ↦ (x, 2y, 3z) to the Euclidean picture: the stretched cube's corners (0,0,0), (1,0,0),
+// (0,1/2,0), (0,0,1/3), (1,1/2,1/3) are M-cospherical. A negatively oriented tetrahedron flips
+// the sign.
+TEST(InSphere, ClosedForms) {
+  const Sym3<Rational> I{1, 0, 0, 1, 0, 1};
+  const P3 o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+  EXPECT_EQ(insphere(o, x, y, z, P3{Rational(1, 4), Rational(1, 4), Rational(1, 4)}, I), Sign::positive);
+  EXPECT_EQ(insphere(o, x, y, z, P3{1, 1, 1}, I), Sign::zero);
+  EXPECT_EQ(insphere(o, x, y, z, P3{1, 1, Rational(11, 10)}, I), Sign::negative);
+  EXPECT_EQ(insphere(o, y, x, z, P3{Rational(1, 4), Rational(1, 4), Rational(1, 4)}, I), Sign::negative);
+  const Sym3<Rational> M{1, 0, 0, 4, 0, 9};
+  const P3 y2{0, Rational(1, 2), 0}, z3{0, 0, Rational(1, 3)};
+  EXPECT_EQ(insphere(o, x, y2, z3, P3{1, Rational(1, 2), Rational(1, 3)}, M), Sign::zero);
+  EXPECT_EQ(insphere(o, x, y2, z3, P3{1, Rational(1, 2), Rational(3, 10)}, M), Sign::positive);
+}
+
+// Random integer points and metrics M = LLᵀ + I (L integer lower triangular): the lifted
+// determinant's sign is orientation × the sign found from the solved centre; cospherical fifth
+// points are made exactly (the centre's antipode of a vertex: 2c − a is on the M-sphere).
+TEST(InSphere, AgreesWithTheSolvedCircumcentre) {
+  std::mt19937 rng(39);
+  std::uniform_int_distribution<int> coordinate(-6, 6), entry(-3, 3);
+  int zeros = 0, inside = 0, outside = 0;
+  for (int t = 0; t < 400; ++t) {
+    const auto point = [&] { return P3{coordinate(rng), coordinate(rng), coordinate(rng)}; };
+    const P3 a = point(), b = point(), c = point(), d = point();
+    const Sign o = orientation3(a, b, c, d);
+    if (o == Sign::zero) continue;
+    const Rational l11 = entry(rng), l21 = entry(rng), l22 = entry(rng), l31 = entry(rng), l32 = entry(rng), l33 = entry(rng);
+    const Sym3<Rational> M{l11 * l11 + 1, l11 * l21, l11 * l31, l21 * l21 + l22 * l22 + 1, l21 * l31 + l22 * l32,
+                           l31 * l31 + l32 * l32 + l33 * l33 + 1};
+    P3 e = point();
+    if (t % 4 == 0) {  // the antipode of a through the M-circumcentre: on the sphere, rational
+      std::array<std::array<Rational, 3>, 3> A;
+      std::array<Rational, 3> rhs;
+      const P3* ps[3] = {&b, &c, &d};
+      for (int i = 0; i < 3; ++i) {
+        const std::array<Rational, 3> diff{ps[i]->x - a.x, ps[i]->y - a.y, ps[i]->z - a.z};
+        const auto row = times(M, diff);
+        A[i] = {2 * row[0], 2 * row[1], 2 * row[2]};
+        rhs[i] = q(M, *ps[i], {0, 0, 0}) - q(M, a, {0, 0, 0});
+      }
+      std::array<Rational, 3> centre;
+      for (int k = 0; k < 3; ++k) {
+        auto Ak = A;
+        for (int i = 0; i < 3; ++i) Ak[i][k] = rhs[i];
+        centre[k] = det3(Ak) / det3(A);
+      }
+      e = {2 * centre[0] - a.x, 2 * centre[1] - a.y, 2 * centre[2] - a.z};
+    }
+    const Sign expected = o * inside_by_centre(a, b, c, d, e, M);
+    EXPECT_EQ(insphere(a, b, c, d, e, M), expected) << t;
+    zeros += expected == Sign::zero, inside += expected == o, outside += expected == -o;
+  }
+  EXPECT_GT(zeros, 50);
+  EXPECT_GT(inside, 30);
+  EXPECT_GT(outside, 30);
+}
+
+// Filtered against exact: random doubles across magnitudes 2^±70 (inside and outside the static
+// filter's range), points on a grid with M-cospherical fifth points (the cube's corners under
+// M = diag(1, 4, 9), translated and scaled by powers of two, so exact in doubles), and each moved
+// by one to four ulps.
+TEST(FilteredVsExact, Orientation3AndInSphere) {
+  std::mt19937_64 rng(20261202);
+  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const auto integer = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  const auto nudged = [&](auto x) {
+    const std::size_t i = static_cast<std::size_t>(integer(0, static_cast<int>(x.size()) - 1));
+    for (int k = integer(1, 4); k > 0; --k) x[i] = std::nextafter(x[i], integer(0, 1) ? INFINITY : -INFINITY);
+    return x;
+  };
+  int zero_orientations = 0, zero_spheres = 0;
+  for (int t = 0; t < 3000; ++t) {
+    const int e = integer(-70, 70), m = integer(-70, 70);
+    std::array<double, 12> o;
+    for (double& v : o) v = std::ldexp(uniform(-1, 1), e);
+    checked<Orientation3Kernel>(o);
+    std::array<double, 21> s;
+    for (std::size_t i = 0; i < 15; ++i) s[i] = std::ldexp(uniform(-1, 1), e);
+    const double m11 = std::ldexp(uniform(0.1, 1), m), m22 = std::ldexp(uniform(0.1, 1), m), m33 = std::ldexp(uniform(0.1, 1), m);
+    s[15] = m11, s[16] = uniform(-0.5, 0.5) * std::sqrt(m11 * m22), s[17] = uniform(-0.5, 0.5) * std::sqrt(m11 * m33);
+    s[18] = m22, s[19] = uniform(-0.5, 0.5) * std::sqrt(m22 * m33), s[20] = m33;
+    checked<InSphereKernel>(s);
+    // Exactly degenerate, then a few ulps away.
+    const double scale = std::ldexp(1.0, integer(-40, 40)), cx = integer(-1000, 1000) * scale, cy = integer(-1000, 1000) * scale,
+                 cz = integer(-1000, 1000) * scale;
+    const std::array<double, 12> flat{cx, cy, cz, cx + scale, cy, cz, cx, cy + 3 * scale, cz, cx + 5 * scale, cy + 7 * scale, cz};
+    zero_orientations += checked<Orientation3Kernel>(flat) == Sign::zero;
+    checked<Orientation3Kernel>(nudged(flat));
+    const std::array<double, 21> cube{cx, cy, cz, cx + scale, cy, cz, cx, cy + scale / 2, cz, cx, cy, cz + scale / 4,
+                                      cx + scale, cy + scale / 2, cz + scale / 4, 1, 0, 0, 4, 0, 16};
+    zero_spheres += checked<InSphereKernel>(cube) == Sign::zero;
+    checked<InSphereKernel>(nudged(cube));
+  }
+  EXPECT_EQ(zero_orientations, 3000);
+  EXPECT_EQ(zero_spheres, 3000);
+}
