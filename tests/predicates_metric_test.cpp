@@ -61,6 +61,10 @@ TEST(Metric2, NormalizedMetricHasDeterminantOne) {
   EXPECT_EQ(n->entries().m11, Rational(3, 2));
   EXPECT_FALSE(Metric2(S2("2", "0", "1")).normalized().has_value());  // det 2: √2 irrational
   EXPECT_TRUE(Metric2(S2("1/4", "0", "1/9")).normalized().has_value());  // det 1/36
+  // A rational square root needs both the numerator and the denominator squares (the 2026-12-02
+  // campaign's mutant checking the numerator only survived): det 4/3 and det 3/4 have none.
+  EXPECT_FALSE(Metric2(S2("4", "0", "1/3")).normalized().has_value());
+  EXPECT_FALSE(Metric2(S2("3", "0", "1/4")).normalized().has_value());
 }
 
 TEST(Metric2, NormalizedBisectorAgreesWithRationalNormalization) {
@@ -88,6 +92,8 @@ TEST(Metric3, PositiveDefinitenessAndLdlt) {
   EXPECT_THROW(Metric3(Sym3<Rational>{1, 0, 1, 1, 0, 1}), NotPositiveDefinite);  // det 0
   EXPECT_FALSE(M.normalized().has_value());                                      // 18 is no cube
   EXPECT_TRUE(Metric3(Sym3<Rational>{2, 0, 0, 2, 0, 2}).normalized().has_value());  // det 8
+  EXPECT_FALSE(Metric3(Sym3<Rational>{8, 0, 0, 1, 0, Rational(1, 3)}).normalized().has_value());  // det 8/3: 3 is no cube
+  EXPECT_FALSE(Metric3(Sym3<Rational>{3, 0, 0, 1, 0, Rational(1, 8)}).normalized().has_value());  // det 3/8: 3 is no cube
 }
 
 TEST(NumberTypes, DoublesAreTheRationalsTheyDenote) {

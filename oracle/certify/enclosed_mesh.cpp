@@ -1,6 +1,7 @@
 #include "oracle/certify/enclosed_mesh.hpp"
 
 #include "predicates/orientation.hpp"
+#include "predicates/orientation3.hpp"
 
 #include <cmath>
 
@@ -35,6 +36,26 @@ Sign EnclosedMesh::orientation(int a, int b, int c) const {
       std::array<FilterInterval, 6>{pa.x, pa.y, pb.x, pb.y, pc.x, pc.y}, [&] {
         const auto& s = mesh.sites;
         return std::array<Rational, 6>{s[a].x, s[a].y, s[b].x, s[b].y, s[c].x, s[c].y};
+      });
+}
+
+EnclosedMesh3::EnclosedMesh3(const geometry::Mesh3<Rational>& m) : mesh(m) {
+  vertex.reserve(m.vertices.size());
+  approx.reserve(m.vertices.size());
+  for (const auto& p : m.vertices) {
+    vertex.push_back({enclose(p.x), enclose(p.y), enclose(p.z)});
+    approx.push_back({approximate(p.x), approximate(p.y), approximate(p.z)});
+  }
+  metric.reserve(m.metrics.size());
+  for (const auto& M : m.metrics) metric.push_back({enclose(M.m11), enclose(M.m12), enclose(M.m13), enclose(M.m22), enclose(M.m23), enclose(M.m33)});
+}
+
+Sign EnclosedMesh3::orientation(int a, int b, int c, int d) const {
+  const auto &pa = vertex[a], &pb = vertex[b], &pc = vertex[c], &pd = vertex[d];
+  return predicates::interval_then_exact<predicates::Orientation3Kernel>(
+      std::array<FilterInterval, 12>{pa.x, pa.y, pa.z, pb.x, pb.y, pb.z, pc.x, pc.y, pc.z, pd.x, pd.y, pd.z}, [&] {
+        const auto& v = mesh.vertices;
+        return std::array<Rational, 12>{v[a].x, v[a].y, v[a].z, v[b].x, v[b].y, v[b].z, v[c].x, v[c].y, v[c].z, v[d].x, v[d].y, v[d].z};
       });
 }
 

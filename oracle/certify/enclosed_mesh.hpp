@@ -7,6 +7,7 @@
 // order is kept) select candidates (the site tree, the grids) and give the approximate values
 // reported beside the verdicts.
 #include "geometry/mesh.hpp"
+#include "geometry/mesh3.hpp"
 #include "numbers/filter_interval.hpp"
 
 #include <vector>
@@ -23,6 +24,19 @@ struct EnclosedMesh {
   std::vector<predicates::Point2<FilterInterval>> site;   // encloses mesh.sites[i]
   std::vector<predicates::Sym2<FilterInterval>> metric;   // encloses mesh.metrics[i]
   std::vector<predicates::Point2<double>> approx;          // approximate(mesh.sites[i])
+};
+
+// The same for a tetrahedral mesh (issue 39).
+struct EnclosedMesh3 {
+  explicit EnclosedMesh3(const geometry::Mesh3<Rational>& m);
+
+  // The exact orientation of vertices a, b, c, d (interval first; predicates/orientation3.hpp).
+  Sign orientation(int a, int b, int c, int d) const;
+
+  const geometry::Mesh3<Rational>& mesh;
+  std::vector<predicates::Point3<FilterInterval>> vertex;   // encloses mesh.vertices[i]
+  std::vector<predicates::Sym3<FilterInterval>> metric;     // encloses mesh.metrics[i]
+  std::vector<predicates::Point3<double>> approx;           // approximate(mesh.vertices[i])
 };
 
 // q rounded towards zero to a double (GMP's mpq_get_d): within one ulp, monotone, no allocation.

@@ -1,0 +1,230 @@
+#include "oracle/certify/tetrahedralization_check.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+namespace anisocert::oracle {
+namespace {
+
+using Triple = std::array<int, 3>;
+
+std::string triple_text(const Triple& t) {
+  return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
+}
+
+// A tetrahedron's face with its outward orientation: `sorted` its vertices in increasing order,
+// `even` whether the outward triple is an even permutation (a rotation) of `sorted`.
+struct Face {
+  Triple sorted;
+  bool even;
+  int tetrahedron;
+  Triple outward;
+};
+
+Face face(const Triple& outward, int t) {
+  Triple s = outward;
+  std::sort(s.begin(), s.end());
+  // A rotation of the sorted triple is even; a rotation of its reverse is odd.
+  const bool even = (outward[0] == s[0] && outward[1] == s[1]) || (outward[0] == s[1] && outward[1] == s[2]) ||
+                    (outward[0] == s[2] && outward[1] == s[0]);
+  return {s, even, t, outward};
+}
+
+}  // namespace
+
+void TetrahedralizationCheck::fail(std::string text) {
+  if (failures.size() < described) failures.push_back(std::move(text));
+  ++failure_count;
+}
+
+TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::size_t described) {
+  TetrahedralizationCheck r;
+  r.described = described;
+  const auto& tets = m.mesh.tetrahedra;
+  const std::size_t n = m.mesh.vertices.size();
+  std::vector<int> bad;
+
+  // Orientation: the outward faces of a positively oriented (a, b, c, d) are (b, c, d), (a, d, c),
+  // (a, b, d), (a, c, b) (for the unit tetrahedron the first has normal (1, 1, 1)/…, away from a);
+  // of a negatively oriented one, the same reversed.
+  r.checks_run.push_back("every tetrahedron has the same non-zero orientation (exact)");
+  std::vector<Sign> sign(tets.size());
+  std::size_t positive = 0, negative = 0;
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const auto& v = tets[t];
+    sign[t] = v[0] == v[1] || v[0] == v[2] || v[0] == v[3] || v[1] == v[2] || v[1] == v[3] || v[2] == v[3]
+                  ? Sign::zero
+                  : m.orientation(v[0], v[1], v[2], v[3]);
+    positive += sign[t] == Sign::positive, negative += sign[t] == Sign::negative;
+  }
+  r.orientation = positive == 0 && negative == 0 ? "" : positive >= negative ? "positive" : "negative";
+  const Sign usual = positive >= negative ? Sign::positive : Sign::negative;
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const auto& v = tets[t];
+    if (sign[t] == Sign::zero) {
+      r.fail("tetrahedron " + std::to_string(t) + " (vertices " + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " +
+             std::to_string(v[2]) + ", " + std::to_string(v[3]) + ") is flat: its vertices are coplanar or repeated");
+      bad.push_back(static_cast<int>(t));
+    } else if (sign[t] != usual) {
+      r.fail("tetrahedron " + std::to_string(t) + " is " + (usual == Sign::positive ? "negatively" : "positively") + " oriented, " +
+             std::to_string(usual == Sign::positive ? positive : negative) + " others " +
+             (usual == Sign::positive ? "positively" : "negatively") + ": the file mixes the two conventions");
+      bad.push_back(static_cast<int>(t));
+    }
+  }
+
+  // Faces, each with its tetrahedron's outward orientation (by the tetrahedron's own sign, so
+  // that two tetrahedra on one side of a face are found whatever the convention).
+  r.checks_run.push_back("every face is in one tetrahedron (boundary) or in two on opposite sides of it");
+  std::vector<Face> faces;
+  faces.reserve(4 * tets.size());
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const auto& [a, b, c, d] = tets[t];
+    const int ti = static_cast<int>(t);
+    std::array<Triple, 4> out{Triple{b, c, d}, Triple{a, d, c}, Triple{a, b, d}, Triple{a, c, b}};
+    for (Triple& f : out) {
+      if (sign[t] == Sign::negative) std::swap(f[1], f[2]);
+      faces.push_back(face(f, ti));
+    }
+  }
+  std::sort(faces.begin(), faces.end(),
+            [](const Face& x, const Face& y) { return std::tie(x.sorted, x.tetrahedron) < std::tie(y.sorted, y.tetrahedron); });
+  std::vector<Triple> boundary;  // outward
+  std::vector<int> boundary_tetrahedron;
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].sorted == faces[i].sorted) ++j;
+    if (j - i == 1) {
+      boundary.push_back(faces[i].outward), boundary_tetrahedron.push_back(faces[i].tetrahedron);
+    } else if (j - i == 2) {
+      ++r.interior_faces;
+      if (faces[i].even == faces[i + 1].even) {
+        r.fail("face " + triple_text(faces[i].sorted) + " is in tetrahedra " + std::to_string(faces[i].tetrahedron) + " and " +
+               std::to_string(faces[i + 1].tetrahedron) + ", which lie on the same side of it (they overlap)");
+        bad.push_back(faces[i].tetrahedron), bad.push_back(faces[i + 1].tetrahedron);
+      }
+    } else {
+      std::string which;
+      for (std::size_t k = i; k < j && k < i + 4; ++k) which += (k > i ? ", " : "") + std::to_string(faces[k].tetrahedron);
+      r.fail("face " + triple_text(faces[i].sorted) + " is in " + std::to_string(j - i) + " tetrahedra (" + which + (j - i > 4 ? ", …" : "") + ")");
+      for (std::size_t k = i; k < j; ++k) bad.push_back(faces[k].tetrahedron);
+    }
+    i = j;
+  }
+  r.boundary_faces = boundary.size();
+
+  r.checks_run.push_back("every vertex is a vertex of a tetrahedron");
+  std::vector<char> used(n, 0);
+  for (const auto& t : tets)
+    for (int v : t) used[static_cast<std::size_t>(v)] = 1;
+  for (std::size_t v = 0; v < n; ++v)
+    if (!used[v]) r.fail("vertex " + std::to_string(v) + " is a vertex of no tetrahedron");
+
+  // The boundary surface: each boundary edge in two boundary faces, once in each direction; the
+  // boundary faces at a vertex one cycle of its link.
+  r.checks_run.push_back("the boundary is a closed 2-manifold (no pinched edge or vertex)");
+  struct Directed {
+    int lo, hi;
+    bool forward;
+  };
+  std::vector<Directed> edges;
+  edges.reserve(3 * boundary.size());
+  for (const Triple& f : boundary)
+    for (int k = 0; k < 3; ++k) {
+      const int p = f[static_cast<std::size_t>(k)], q = f[static_cast<std::size_t>((k + 1) % 3)];
+      edges.push_back({std::min(p, q), std::max(p, q), p < q});
+    }
+  std::sort(edges.begin(), edges.end(), [](const Directed& x, const Directed& y) {
+    return std::tie(x.lo, x.hi, x.forward) < std::tie(y.lo, y.hi, y.forward);
+  });
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
+    const std::string e = "boundary edge (" + std::to_string(edges[i].lo) + ", " + std::to_string(edges[i].hi) + ")";
+    if (j - i != 2) r.fail(e + " is in " + std::to_string(j - i) + " boundary faces" + (j - i > 2 ? " (a pinched edge)" : ""));
+    else if (edges[i].forward == edges[i + 1].forward) r.fail(e + " runs the same way in its two boundary faces");
+    i = j;
+  }
+  // The link of v: for each boundary face (v, q, r), rotated to start at v, the edge q → r.
+  struct Link {
+    int v, q, r;
+  };
+  std::vector<Link> links;
+  links.reserve(3 * boundary.size());
+  for (const Triple& f : boundary)
+    for (int k = 0; k < 3; ++k)
+      links.push_back({f[static_cast<std::size_t>(k)], f[static_cast<std::size_t>((k + 1) % 3)], f[static_cast<std::size_t>((k + 2) % 3)]});
+  std::sort(links.begin(), links.end(), [](const Link& x, const Link& y) { return std::tie(x.v, x.q) < std::tie(y.v, y.q); });
+  for (std::size_t i = 0; i < links.size();) {
+    std::size_t j = i + 1;
+    while (j < links.size() && links[j].v == links[i].v) ++j;
+    // Cycles of q ↦ r among links[i, j) (sorted by q: a binary search per step).
+    std::vector<char> seen(j - i, 0);
+    std::size_t cycles = 0;
+    bool broken = false;
+    for (std::size_t s = i; s < j && !broken; ++s) {
+      if (seen[s - i]) continue;
+      ++cycles;
+      std::size_t at = s;
+      for (std::size_t steps = 0; steps <= j - i; ++steps) {
+        seen[at - i] = 1;
+        const int next = links[at].r;
+        const auto found = std::lower_bound(links.begin() + static_cast<long>(i), links.begin() + static_cast<long>(j), next,
+                                            [](const Link& x, int q) { return x.q < q; });
+        if (found == links.begin() + static_cast<long>(j) || found->q != next) {
+          broken = true;  // an open fan: an edge in one boundary face, named above
+          break;
+        }
+        at = static_cast<std::size_t>(found - links.begin());
+        if (at == s) break;
+      }
+    }
+    if (!broken && cycles > 1)
+      r.fail("vertex " + std::to_string(links[i].v) + " is pinched: its boundary faces make " + std::to_string(cycles) +
+             " cycles around it, not one");
+    i = j;
+  }
+
+  const auto& declared = m.mesh.triangles;
+  if (!declared.empty()) {
+    r.checks_run.push_back("the declared boundary triangles are exactly the boundary faces");
+    std::vector<std::pair<Triple, int>> d, b;
+    for (std::size_t k = 0; k < declared.size(); ++k) {
+      Triple s = declared[k];
+      std::sort(s.begin(), s.end());
+      d.emplace_back(s, static_cast<int>(k));
+    }
+    for (std::size_t k = 0; k < boundary.size(); ++k) {
+      Triple s = boundary[k];
+      std::sort(s.begin(), s.end());
+      b.emplace_back(s, boundary_tetrahedron[k]);
+    }
+    std::sort(d.begin(), d.end()), std::sort(b.begin(), b.end());
+    std::size_t i = 0, j = 0;
+    while (i < d.size() || j < b.size()) {
+      if (j == b.size() || (i < d.size() && d[i].first < b[j].first)) {
+        const bool repeated = i > 0 && d[i - 1].first == d[i].first;
+        r.fail("declared triangle " + std::to_string(d[i].second) + " " + triple_text(declared[static_cast<std::size_t>(d[i].second)]) +
+               (repeated ? " is declared twice" : " is not a boundary face of the tetrahedra"));
+        ++i;
+      } else if (i == d.size() || b[j].first < d[i].first) {
+        r.fail("the boundary face " + triple_text(b[j].first) + " of tetrahedron " + std::to_string(b[j].second) +
+               " is not among the declared triangles");
+        ++j;
+      } else {
+        ++i, ++j;
+      }
+    }
+  }
+  r.checks_run.push_back("not checked: that the boundary surface does not intersect itself (the tetrahedra could then cover some "
+                         "points twice)");
+
+  std::sort(bad.begin(), bad.end());
+  bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+  r.bad_tetrahedra = std::move(bad);
+  r.valid = r.failure_count == 0 && !tets.empty();
+  if (tets.empty()) r.fail("the mesh has no tetrahedron");
+  return r;
+}
+
+}  // namespace anisocert::oracle
