@@ -62,6 +62,8 @@ def first_stage(file):
 # Tests of the build rather than of behaviour (the installed package, the include graph): a
 # one-line change inside a function cannot fail them, and they take a third of the suite's time.
 EXCLUDED = r"Api\.ConsumerBuildsAgainstInstalledPackage|LayerIncludes\."
+# The cases per property of the whole suite's middle stage (Campaign.whole_suite).
+QUICK_CASES = 100
 # The survivors argued equivalent in docs/mutation.md, matched by file and line text.
 EQUIVALENT = ROOT / "tests" / "mutation" / "equivalent.json"
 # The binaries CTest runs (benchmarks are not built).
@@ -254,12 +256,12 @@ def listed(path):
     return out
 
 
-def run(cmd, timeout, log):
+def run(cmd, timeout, log, env=None):
     """Exit code, or None on timeout (the process group is killed)."""
     with open(log, "a") as out:
         out.write(f"$ {' '.join(cmd)}\n")
         out.flush()
-        p = subprocess.Popen(cmd, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT, start_new_session=True)
+        p = subprocess.Popen(cmd, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT, start_new_session=True, env=env)
         try:
             return p.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -296,9 +298,31 @@ class Campaign:
         replay = [f"fuzz_replay_{h}" for h in fuzz_harnesses()]
         return run(["cmake", "--build", str(self.build), "-j", self.jobs, "--target", *TARGETS, *replay], timeout, self.log)
 
-    def ctest(self, timeout, per_test):
+    def ctest(self, timeout, per_test, label_option=()):
         return run(["ctest", "--test-dir", str(self.build), "-j", self.jobs, "--stop-on-failure", "--timeout",
-                    str(per_test), "-E", EXCLUDED], timeout, self.log)
+                    str(per_test), "-E", EXCLUDED, *label_option], timeout, self.log)
+
+    def quick_properties(self, timeout):
+        """Exit code of every property at QUICK_CASES cases, in one fail-fast process."""
+        env = dict(os.environ, RC_PARAMS=f"max_success={QUICK_CASES}")
+        with open(self.log, "a") as out:
+            out.write(f"$ RC_PARAMS={env['RC_PARAMS']} property_tests --gtest_fail_fast\n")
+        return run([str(self.build / "bin" / "property_tests"), "--gtest_fail_fast", "--gtest_brief=1"], timeout, self.log, env)
+
+    def whole_suite(self, times):
+        """The whole suite in three stages, each only if the ones before pass: every test but the
+        properties, the properties at QUICK_CASES cases, the properties as CTest runs them (the
+        suite's own cases). The first and last are the whole suite; the middle one finds most
+        mutants the properties kill at a fifth of their cost. The stage that decided, and an exit
+        code (None on timeout)."""
+        budget = lambda k: 3 * times[k] + 120
+        rc = self.ctest(budget("rest"), int(budget("rest")), ("-LE", "property"))
+        if rc != 0:
+            return "whole suite", rc
+        rc = self.quick_properties(budget("quick"))
+        if rc != 0:
+            return f"properties at {QUICK_CASES} cases", rc
+        return "properties", self.ctest(budget("properties"), int(budget("properties")), ("-L", "property"))
 
     def first_tests(self, folder, timeout):
         """Exit code of the tests that cover `folder`, or None on timeout."""
@@ -306,7 +330,7 @@ class Campaign:
         return run([str(self.build / "bin" / binary), f"--gtest_filter={tests}", "--gtest_fail_fast", "--gtest_brief=1"],
                    timeout, self.log)
 
-    def verdict(self, m, suite_seconds, first_seconds):
+    def verdict(self, m, suite_seconds, first_seconds):  # suite_seconds: per stage of whole_suite
         """killed, survived, timeout or stillborn, and the stage that decided."""
         path = ROOT / m.file
         original = path.read_bytes()
@@ -317,7 +341,6 @@ class Campaign:
         try:
             if self.build_all(1800) != 0:
                 return "stillborn", "build"
-            budget = 3 * suite_seconds + 120
             folder = first_stage(m.file)
             if folder:
                 rc = self.first_tests(folder, 3 * first_seconds[folder] + 60)
@@ -325,10 +348,10 @@ class Campaign:
                     return "timeout", "first tests"
                 if rc != 0:
                     return "killed", "first tests"
-            rc = self.ctest(budget, int(budget))
+            stage, rc = self.whole_suite(suite_seconds)
             if rc is None:
-                return "timeout", "whole suite"
-            return ("killed", "whole suite") if rc != 0 else ("survived", "")
+                return "timeout", stage
+            return ("killed", stage) if rc != 0 else ("survived", "")
         finally:
             path.write_bytes(original)  # byte for byte; its new mtime makes the next build redo it
             self.backup.unlink()
@@ -386,11 +409,14 @@ def main():
     if c.build_all(7200) != 0:
         print(f"mutate: the unmutated project does not build (see {c.log})", file=sys.stderr)
         return 2
-    start = time.monotonic()
-    if c.ctest(7200, 1800) != 0:
-        print(f"mutate: the unmutated suite fails (see {c.log}): fix it first", file=sys.stderr)
-        return 2
-    suite = time.monotonic() - start
+    suite = {}  # each stage of the whole suite, unmutated, for its own budget
+    for stage, call in (("rest", lambda: c.ctest(7200, 1800, ("-LE", "property"))), ("quick", lambda: c.quick_properties(7200)),
+                        ("properties", lambda: c.ctest(7200, 1800, ("-L", "property")))):
+        start = time.monotonic()
+        if call() != 0:
+            print(f"mutate: the unmutated suite fails at {stage} (see {c.log}): fix it first", file=sys.stderr)
+            return 2
+        suite[stage] = time.monotonic() - start
     first = {}  # each first stage's unmutated time, for its own budget
     for folder in sorted({first_stage(x.file) for x in mutants} - {None}):
         start = time.monotonic()
@@ -437,7 +463,9 @@ def write_summary(report, results, shard, shards, suite, seconds, equivalent):
         parts = r["file"].split("/")
         by_folder.setdefault("/".join(parts[:2]) if parts[0] in ("refiners", "io") and len(parts) > 2 else parts[0], []).append(r)
     out = [f"# Mutation campaign, shard {shard}/{shards}", "",
-           f"{len(results)} mutants in {seconds / 60:.1f} min (unmutated suite {suite:.0f} s).", "",
+           f"{len(results)} mutants in {seconds / 60:.1f} min (unmutated suite: every test but the properties "
+           f"{suite['rest']:.0f} s, the properties at {QUICK_CASES} cases {suite['quick']:.0f} s, at the suite's own "
+           f"{suite['properties']:.0f} s).", "",
            "| folder | mutants | killed | timed out | survived | did not compile | score |", "|---|---|---|---|---|---|---|"]
     total = {"killed": 0, "timeout": 0, "survived": 0, "stillborn": 0}
     for folder, rs in sorted(by_folder.items()):
