@@ -34,6 +34,10 @@ std::optional<Rational> exact_root(const Rational& q, unsigned k) {
 
 }  // namespace
 
+Rational determinant(const Sym3<Rational>& m) {
+  return m.m11 * (m.m22 * m.m33 - m.m23 * m.m23) - m.m12 * (m.m12 * m.m33 - m.m23 * m.m13) + m.m13 * (m.m12 * m.m23 - m.m22 * m.m13);
+}
+
 // Sylvester's criterion, i.e. the pivots of LDLᵀ are positive.
 Metric2::Metric2(const Sym2<Rational>& m) : m_(m) {
   require_positive(m.m11, show(m), "m11");
@@ -47,6 +51,10 @@ Metric2 Metric2::from_doubles(double m11, double m12, double m22) {
 Rational Metric2::determinant() const { return m_.m11 * m_.m22 - m_.m12 * m_.m12; }
 
 bool positive_definite(const Sym2<Rational>& m) { return m.m11 > 0 && m.m11 * m.m22 - m.m12 * m.m12 > 0; }
+
+bool positive_definite(const Sym3<Rational>& m) {
+  return m.m11 > 0 && m.m11 * m.m22 - m.m12 * m.m12 > 0 && determinant(m) > 0;
+}
 
 LDLt2 Metric2::ldlt() const {
   return {m_.m12 / m_.m11, m_.m11, determinant() / m_.m11};
@@ -69,11 +77,7 @@ Metric3::Metric3(const Sym3<Rational>& m) : m_(m) {
   require_positive(determinant(), s, "det");
 }
 
-Rational Metric3::determinant() const {
-  const Sym3<Rational>& m = m_;
-  return m.m11 * (m.m22 * m.m33 - m.m23 * m.m23) - m.m12 * (m.m12 * m.m33 - m.m23 * m.m13) +
-         m.m13 * (m.m12 * m.m23 - m.m22 * m.m13);
-}
+Rational Metric3::determinant() const { return predicates::determinant(m_); }
 
 LDLt3 Metric3::ldlt() const {
   const Sym3<Rational>& m = m_;

@@ -27,6 +27,10 @@ struct LDLt3 {
 // Whether m is symmetric positive definite, exactly: m11 > 0 and m11 m22 − m12² > 0 (what Metric2
 // requires, as a test for readers that name the place themselves).
 bool positive_definite(const Sym2<Rational>& m);
+// The same for a 3×3 matrix by Sylvester's criterion: m11 > 0, m11 m22 − m12² > 0 and det > 0 (the
+// determinant alone is not enough: diag(−1, −1, 1) has det 1).
+bool positive_definite(const Sym3<Rational>& m);
+Rational determinant(const Sym3<Rational>& m);
 
 class Metric2 {
  public:

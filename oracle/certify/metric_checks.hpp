@@ -52,6 +52,9 @@ struct AngleReport {
 // counted.
 LengthReport check_lengths(const EnclosedMesh& m, const std::vector<std::pair<int, int>>& edges,
                            const std::optional<std::pair<Rational, Rational>>& range, std::size_t described = all_witnesses);
+// The same for a tetrahedral mesh (issue 39).
+LengthReport check_lengths(const EnclosedMesh3& m, const std::vector<std::pair<int, int>>& edges,
+                           const std::optional<std::pair<Rational, Rational>>& range, std::size_t described = all_witnesses);
 QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>& min_quality,
                             std::size_t described = all_witnesses);
 AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& min_angle_degrees,

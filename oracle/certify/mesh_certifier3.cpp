@@ -1,0 +1,204 @@
+#include "oracle/certify/mesh_certifier3.hpp"
+
+#include "predicates/insphere.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace anisocert::oracle {
+namespace {
+
+using I = FilterInterval;
+
+// The vertices in a uniform grid over their approximations, about one per cell: the candidates of
+// a box are the vertices of the cells it meets, then those whose approximation lies in it.
+class VertexGrid {
+ public:
+  explicit VertexGrid(const std::vector<predicates::Point3<double>>& p) : p_(p) {
+    lo_ = {INFINITY, INFINITY, INFINITY}, hi_ = {-INFINITY, -INFINITY, -INFINITY};
+    for (const auto& q : p) {
+      const std::array<double, 3> c{q.x, q.y, q.z};
+      for (int k = 0; k < 3; ++k) lo_[k] = std::min(lo_[k], c[k]), hi_[k] = std::max(hi_[k], c[k]);
+    }
+    const double per_axis = std::max(1.0, std::cbrt(static_cast<double>(p.size())));
+    for (int k = 0; k < 3; ++k) {
+      n_[k] = std::max(1, static_cast<int>(per_axis));
+      step_[k] = hi_[k] > lo_[k] ? (hi_[k] - lo_[k]) / n_[k] : 1;
+    }
+    std::vector<std::pair<std::size_t, int>> keyed;
+    keyed.reserve(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) keyed.emplace_back(cell({p[i].x, p[i].y, p[i].z}), static_cast<int>(i));
+    std::sort(keyed.begin(), keyed.end());
+    start_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2] + 1, 0);
+    for (const auto& [c, i] : keyed) ++start_[c + 1], ids_.push_back(i);
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+  }
+
+  // The vertices whose approximations lie in [lo, hi] (closed).
+  void query(const std::array<double, 3>& lo, const std::array<double, 3>& hi, std::vector<int>& out) const {
+    out.clear();
+    std::array<int, 3> a{}, b{};
+    for (int k = 0; k < 3; ++k) {
+      if (hi[k] < lo_[k] || lo[k] > hi_[k]) return;
+      a[k] = index(k, lo[k]), b[k] = index(k, hi[k]);
+    }
+    for (int x = a[0]; x <= b[0]; ++x)
+      for (int y = a[1]; y <= b[1]; ++y)
+        for (int z = a[2]; z <= b[2]; ++z) {
+          const std::size_t c = (static_cast<std::size_t>(x) * n_[1] + y) * n_[2] + z;
+          for (std::size_t j = start_[c]; j < start_[c + 1]; ++j) {
+            const auto& q = p_[static_cast<std::size_t>(ids_[j])];
+            if (q.x >= lo[0] && q.x <= hi[0] && q.y >= lo[1] && q.y <= hi[1] && q.z >= lo[2] && q.z <= hi[2]) out.push_back(ids_[j]);
+          }
+        }
+  }
+
+ private:
+  int index(int k, double v) const {
+    const double t = std::floor((v - lo_[k]) / step_[k]);
+    return static_cast<int>(std::clamp(t, 0.0, static_cast<double>(n_[k] - 1)));  // clamped in doubles: no overflow
+  }
+  std::size_t cell(const std::array<double, 3>& v) const {
+    return (static_cast<std::size_t>(index(0, v[0])) * n_[1] + index(1, v[1])) * n_[2] + index(2, v[2]);
+  }
+  const std::vector<predicates::Point3<double>>& p_;
+  std::array<double, 3> lo_, hi_, step_;
+  std::array<int, 3> n_;
+  std::vector<std::size_t> start_;
+  std::vector<int> ids_;
+};
+
+I det3(const std::array<std::array<I, 3>, 3>& m) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+std::array<I, 3> times(const predicates::Sym3<I>& M, const std::array<I, 3>& v) {
+  return {M.m11 * v[0] + M.m12 * v[1] + M.m13 * v[2], M.m12 * v[0] + M.m22 * v[1] + M.m23 * v[2], M.m13 * v[0] + M.m23 * v[1] + M.m33 * v[2]};
+}
+
+// A box (lo, hi) that certainly holds the M-circumellipsoid of tetrahedron p (with its approximate
+// vertices within an ulp of it too), or nothing when the enclosure cannot give one. The centre is
+// a + x with 2(q − a)ᵀ M x = (q − a)ᵀ M (q − a) for q = b, c, d; r² = xᵀMx; the ellipsoid
+// {y : (y − c)ᵀ M (y − c) ≤ r²} spans c_i ± √(r² (M⁻¹)_ii) along axis i.
+std::optional<std::pair<std::array<double, 3>, std::array<double, 3>>> ellipsoid_box(const EnclosedMesh3& m, const std::array<int, 4>& t,
+                                                                                      const predicates::Sym3<I>& M) {
+  const auto& a = m.vertex[static_cast<std::size_t>(t[0])];
+  std::array<std::array<I, 3>, 3> A;
+  std::array<I, 3> rhs;
+  for (int i = 0; i < 3; ++i) {
+    const auto& q = m.vertex[static_cast<std::size_t>(t[static_cast<std::size_t>(i + 1)])];
+    const std::array<I, 3> d{q.x - a.x, q.y - a.y, q.z - a.z};
+    const auto Md = times(M, d);
+    A[static_cast<std::size_t>(i)] = {Md[0] * 2.0, Md[1] * 2.0, Md[2] * 2.0};
+    rhs[static_cast<std::size_t>(i)] = d[0] * Md[0] + d[1] * Md[1] + d[2] * Md[2];
+  }
+  const I D = det3(A);
+  if (!(D.lo > 0 || D.hi < 0)) return std::nullopt;
+  std::array<I, 3> x;
+  for (int k = 0; k < 3; ++k) {
+    auto Ak = A;
+    for (int i = 0; i < 3; ++i) Ak[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = rhs[static_cast<std::size_t>(i)];
+    x[static_cast<std::size_t>(k)] = det3(Ak) / D;
+  }
+  const auto Mx = times(M, x);
+  const I r2 = x[0] * Mx[0] + x[1] * Mx[1] + x[2] * Mx[2];
+  const I detM = det3({{{M.m11, M.m12, M.m13}, {M.m12, M.m22, M.m23}, {M.m13, M.m23, M.m33}}});
+  if (!(detM.lo > 0)) return std::nullopt;
+  const std::array<I, 3> cofactor{M.m22 * M.m33 - M.m23 * M.m23, M.m11 * M.m33 - M.m13 * M.m13, M.m11 * M.m22 - M.m12 * M.m12};
+  const std::array<I, 3> centre{a.x + x[0], a.y + x[1], a.z + x[2]};
+  std::array<double, 3> lo, hi;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const I half = sqrt(r2 * cofactor[i] / detM);
+    lo[i] = (centre[i] - half).lo, hi[i] = (centre[i] + half).hi;
+    if (!std::isfinite(lo[i]) || !std::isfinite(hi[i])) return std::nullopt;
+    // The grid holds approximations within an ulp of the exact vertices.
+    lo[i] = std::nextafter(std::nextafter(lo[i], -INFINITY), -INFINITY), hi[i] = std::nextafter(std::nextafter(hi[i], INFINITY), INFINITY);
+  }
+  return std::pair{lo, hi};
+}
+
+// sign of the in-sphere test of e against tetrahedron t in the metric of vertex v (interval first).
+Sign insphere(const EnclosedMesh3& m, const std::array<int, 4>& t, int e, int v) {
+  const auto& P = m.vertex;
+  const auto& M = m.metric[static_cast<std::size_t>(v)];
+  std::array<FilterInterval, 21> in;
+  std::array<int, 5> idx{t[0], t[1], t[2], t[3], e};
+  for (std::size_t k = 0; k < 5; ++k) {
+    const auto& p = P[static_cast<std::size_t>(idx[k])];
+    in[3 * k] = p.x, in[3 * k + 1] = p.y, in[3 * k + 2] = p.z;
+  }
+  in[15] = M.m11, in[16] = M.m12, in[17] = M.m13, in[18] = M.m22, in[19] = M.m23, in[20] = M.m33;
+  return predicates::interval_then_exact<predicates::InSphereKernel>(in, [&] {
+    const auto& X = m.mesh.vertices;
+    const auto& N = m.mesh.metrics[static_cast<std::size_t>(v)];
+    std::array<Rational, 21> q;
+    for (std::size_t k = 0; k < 5; ++k) {
+      const auto& p = X[static_cast<std::size_t>(idx[k])];
+      q[3 * k] = p.x, q[3 * k + 1] = p.y, q[3 * k + 2] = p.z;
+    }
+    q[15] = N.m11, q[16] = N.m12, q[17] = N.m13, q[18] = N.m22, q[19] = N.m23, q[20] = N.m33;
+    return q;
+  });
+}
+
+std::vector<std::pair<int, int>> unique_edges(const std::vector<std::array<int, 4>>& tets) {
+  std::vector<std::pair<int, int>> e;
+  e.reserve(6 * tets.size());
+  for (const auto& t : tets)
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j) e.emplace_back(std::min(t[i], t[j]), std::max(t[i], t[j]));
+  std::sort(e.begin(), e.end());
+  e.erase(std::unique(e.begin(), e.end()), e.end());
+  return e;
+}
+
+}  // namespace
+
+Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certify3Options& o) {
+  const EnclosedMesh3 m(mesh);
+  Certify3Report r;
+  r.tetrahedra = mesh.tetrahedra.size();
+  r.uniform_violations = WitnessList(o.described_witnesses);
+  r.uniform_ties = WitnessList(o.described_witnesses);
+  if (o.valid) r.valid = check_tetrahedralization(m, o.described_witnesses);
+  const bool has_metrics = mesh.metrics.size() == mesh.vertices.size() && !mesh.metrics.empty();
+  if (o.uniform && has_metrics) {
+    r.uniform_checked = true;
+    const VertexGrid grid(m.approx);
+    std::vector<int> candidates;
+    for (std::size_t ti = 0; ti < mesh.tetrahedra.size(); ++ti) {
+      const auto& t = mesh.tetrahedra[ti];
+      const Sign orientation = m.orientation(t[0], t[1], t[2], t[3]);
+      if (orientation == Sign::zero) {
+        ++r.unmeasured;
+        continue;
+      }
+      const int tetrahedron = static_cast<int>(ti);
+      for (const int v : t) {
+        const auto box = ellipsoid_box(m, t, m.metric[static_cast<std::size_t>(v)]);
+        if (box) {
+          grid.query(box->first, box->second, candidates);
+        } else {
+          candidates.resize(mesh.vertices.size());
+          for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k] = static_cast<int>(k);
+        }
+        for (const int e : candidates) {
+          if (e == t[0] || e == t[1] || e == t[2] || e == t[3]) continue;
+          ++r.insphere_tests;
+          const Sign s = insphere(m, t, e, v) * orientation;
+          const auto text = [&, e, v] {
+            return "vertex " + std::to_string(e) + " is " + (s == Sign::positive ? "strictly inside" : "on") +
+                   " the circumsphere of tetrahedron " + std::to_string(tetrahedron) + " in the metric of its vertex " + std::to_string(v);
+          };
+          if (s == Sign::positive) r.uniform_violations.add(v, tetrahedron, e, text);
+          else if (s == Sign::zero) r.uniform_ties.add(v, tetrahedron, e, text);
+        }
+      }
+    }
+  }
+  if (o.metric && has_metrics) r.lengths = check_lengths(m, unique_edges(mesh.tetrahedra), o.length_range, o.described_witnesses);
+  return r;
+}
+
+}  // namespace anisocert::oracle

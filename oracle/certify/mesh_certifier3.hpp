@@ -1,0 +1,48 @@
+#pragma once
+// The exact certifier of a tetrahedral mesh with per-vertex 3×3 metrics (issue 39), the 3D twin of
+// mesh_certifier.hpp:
+//  - valid: tetrahedralization_check.hpp;
+//  - locally uniform (LU §3, in dimension 3): no vertex strictly inside the M_v-circumellipsoid of
+//    a tetrahedron incident to v (the lifted in-sphere test in M_v, predicates/insphere.hpp, with
+//    the tetrahedron's own orientation); vertices exactly on it are ties, reported apart;
+//  - conforming to its metric: edge lengths in both endpoints' metrics, the share in
+//    [1/√2, √2] decided exactly, and a range as a verdict (metric_checks.hpp, one loop for both
+//    dimensions).
+// Each check's verdict stands on its own; a flat tetrahedron is counted as unmeasured by the
+// locally uniform check. Candidates for an M_v-circumellipsoid come from a grid of the vertices,
+// within its bounding box enclosed in interval arithmetic (the centre solved by Cramer's rule,
+// the half-widths r·√((M⁻¹)ᵢᵢ)); when the enclosure fails (a nearly flat tetrahedron), every
+// vertex is a candidate. Each decision is the exact in-sphere sign, interval first.
+#include "geometry/mesh3.hpp"
+#include "oracle/certify/metric_checks.hpp"
+#include "oracle/certify/tetrahedralization_check.hpp"
+
+#include <optional>
+
+namespace anisocert::oracle {
+
+struct Certify3Options {
+  bool valid = true, uniform = true;
+  bool metric = false;                                        // edge lengths in the metrics
+  std::optional<std::pair<Rational, Rational>> length_range;  // verdict: every metric length in it
+  std::size_t described_witnesses = default_described_witnesses;
+};
+
+struct Certify3Report {
+  std::optional<TetrahedralizationCheck> valid;
+  bool uniform_checked = false;
+  WitnessList uniform_violations, uniform_ties;  // vertex v, tetrahedron, the vertex inside (or on) the M_v-sphere
+  std::size_t insphere_tests = 0, unmeasured = 0;
+  std::optional<LengthReport> lengths;
+  std::size_t tetrahedra = 0;
+
+  bool valid_holds() const { return valid && valid->valid; }
+  bool holds(const Certify3Options& o) const {
+    return (!o.valid || valid_holds()) && (!o.uniform || uniform_violations.empty()) && (!lengths || lengths->range_violations.empty());
+  }
+};
+
+// The uniform and metric checks need mesh.metrics (one per vertex).
+Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certify3Options& options);
+
+}  // namespace anisocert::oracle
