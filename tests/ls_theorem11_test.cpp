@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
 using anisocert::parse_rational;
 using anisocert::Rational;
 using namespace anisocert::theory;
@@ -141,4 +144,32 @@ TEST(LS_T11, SignChangeNeedsAnOrderedBracketWithTheSigns) {
   EXPECT_TRUE(brackets_sign_change(g, Rational(1), Rational(2), 64));
   EXPECT_FALSE(brackets_sign_change(g, Rational(1), Rational(5, 4), 64));
   EXPECT_FALSE(brackets_sign_change(g, Rational(3, 2), Rational(2), 64));
+}
+
+// enclose_sign_change halves its bracket until lo and hi are adjacent prec-bit numbers, which takes
+// about prec steps from [1, 2]: f is evaluated at most prec + 3 times (twice for the ends, once per
+// step). The roots √2, √3, √(5/2) and ∛3 end with the bracket's midpoint rounding to
+// lo for some and to hi for others (ties to even); a version that did not stop at hi, or not at
+// all, ran to its step bound (4 prec + 64: the 2026-12-02 campaign).
+TEST(LS_T11, SignChangeStopsWhenTheBracketEndsAreAdjacent) {
+  for (const auto& [k, c] : std::vector<std::pair<int, Rational>>{{2, 2}, {2, 3}, {2, Rational(5, 2)}, {3, 3}}) {
+    int calls = 0;
+    const mpfr_prec_t prec = 64;
+    const Interval root = enclose_sign_change(
+        [&, k = k, c = c](const Interval& x) {
+          ++calls;
+          // Evaluated at 4 prec bits, so that f decides at adjacent prec-bit points (the roots are
+          // irrational): the loop ends at adjacency, not at an undecided value.
+          const Interval y = x.at_precision(4 * prec);
+          Interval p = y;
+          for (int i = 1; i < k; ++i) p = p * y;
+          return p - Interval(c, 4 * prec);
+        },
+        1, 2, prec);
+    EXPECT_LE(calls, static_cast<int>(prec) + 3) << k << " " << c;
+    Interval power = root;
+    for (int i = 1; i < k; ++i) power = power * root;
+    EXPECT_TRUE((power - Interval(c, prec)).has_zero()) << k << " " << c;  // it holds the root
+    EXPECT_LE(root.upper_double() - root.lower_double(), 0x1p-51) << k << " " << c;  // and is tight
+  }
 }

@@ -210,3 +210,23 @@ TEST(MeshCertifier, UniformCheckOnTwoThreadsGivesTheOneThreadReport) {
     for (std::size_t i = 0; i < a.described().size(); ++i) EXPECT_EQ(a.described()[i].text, b.described()[i].text);
   }
 }
+
+// Every constrained segment is a union of edges, the sites on it ordered by their exact parameter
+// along it: sites 4 = (1, 0), 5 = (2, 0), 6 = (3, 0) on the segment 4–6, and triangles that join 4–5
+// but not 5–6 (the edge (5/2, −1)–(5/2, 1) crosses between them). The check names 5 and 6. (A
+// version whose parameter was off by a factor that grows with the segment's x dropped site 6 as
+// beyond the segment and passed it: the 2026-12-02 campaign.)
+TEST(MeshCertifier, ASegmentWithAGapBetweenItsSitesIsNamed) {
+  Mesh<Rational> m;
+  m.sites = {{0, -1}, {4, -1}, {4, 1}, {0, 1}, {1, 0}, {2, 0}, {3, 0}, {Rational(5, 2), -1}, {Rational(5, 2), 1}};
+  m.triangles = {{0, 4, 3}, {0, 7, 5}, {0, 5, 4}, {4, 5, 3}, {5, 8, 3}, {5, 7, 8}, {7, 1, 6}, {7, 6, 8}, {6, 1, 2}, {6, 2, 8}};
+  m.segments = {{4, 6}};
+  CertifyOptions o;
+  o.uniform = false;
+  const CertifyReport r = certify_mesh(m, o);
+  ASSERT_TRUE(r.valid);
+  EXPECT_TRUE(r.valid->is_triangulation);
+  ASSERT_EQ(r.segment_failure_count, 1u);
+  EXPECT_NE(r.segment_failures[0].find("sites 5 and 6 are consecutive on it but not joined by an edge"), std::string::npos)
+      << r.segment_failures[0];
+}

@@ -54,4 +54,7 @@ TEST(DecimalEnclosure, CertifiedDigitsAreACommonTruncation) {
   EXPECT_EQ(common_significant_digits({"10", "100"}), 0);
   EXPECT_EQ(common_significant_digits({"0.0031415", "0.0031416"}), 4);
   EXPECT_EQ(common_significant_digits({"78.98984", "78.98985"}), 6);
+  // The sign is no digit: a negative enclosure has as many as its mirror image.
+  EXPECT_EQ(common_significant_digits({"-78.98985", "-78.98984"}), 6);
+  EXPECT_EQ(common_significant_digits({"-0.0031416", "-0.0031415"}), 4);
 }

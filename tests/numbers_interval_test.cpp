@@ -52,3 +52,13 @@ TEST(Interval, DegreesOfPiOverSixIsThirty) {
   EXPECT_TRUE(thirty.contains(Rational(30)));
   EXPECT_TRUE(thirty.inside(Rational(29999999, 1000000), Rational(30000001, 1000000)));
 }
+
+// [lo, hi] ⊂ (outer.lo, outer.hi) needs both ends strictly inside (the 2026-12-02 campaign's
+// mutant checking the upper end only survived).
+TEST(Interval, StrictlyInsideNeedsBothEnds) {
+  const Interval outer(0.5, 2.0, 64);
+  EXPECT_TRUE(Interval(1.0, 1.5, 64).strictly_inside(outer));
+  EXPECT_FALSE(Interval(0.25, 1.5, 64).strictly_inside(outer));  // the lower end outside
+  EXPECT_FALSE(Interval(0.5, 1.5, 64).strictly_inside(outer));   // on the lower end
+  EXPECT_FALSE(Interval(1.0, 2.0, 64).strictly_inside(outer));   // on the upper end
+}

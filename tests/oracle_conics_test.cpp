@@ -268,3 +268,28 @@ TEST(NarrowedBox, HoldsTheExactCommonPointInAFewUlps) {
 TEST(NarrowedBox, TangentCurvesAreLeftToTheExactPath) {
   EXPECT_FALSE(narrowed_box({1, 0, 1, 0, 0, -1}, {0, 0, 0, 0, 1, -1}, {{-1e-3, 1e-3}, {1 - 1e-3, 1 + 1e-3}}).has_value());
 }
+
+// The filtered common points come sorted by x, then y (common_points.hpp), as the exact ones do:
+// x² + y² = 1 and x = 1/3 meet at (1/3, ∓√8/3), the lower first. Two copies of one filtered point
+// compare equal without their exact point being built ("two copies of one construction are equal
+// without arithmetic", docs/oracle.md § Filters): x² + y² = 1 and y = 2x meet at ±(1/√5, 2/√5),
+// whose boxes are apart, so nothing needs an exact point. (The 2026-12-02 campaign's mutants
+// sorting y downwards and comparing copies exactly survived.)
+TEST(CommonPoints, FilteredPointsAreSortedAndCopiesCompareWithoutExactPoints) {
+  FilterContext context;
+  const FilterScope scope(context);
+  const CommonPoints c = common_points({1, 0, 1, 0, 0, -1}, {0, 0, 0, 1, 0, Rational(-1, 3)}, {{-2, 2}, {-2, 2}}, Rational(1, 1024));
+  ASSERT_EQ(c.points.size(), 2u);
+  EXPECT_EQ(context.counts.roots_filtered, 1u);  // the certified path, not the exact one
+  EXPECT_EQ(compare_y(c.points[0], c.points[1]), Sign::negative);
+  EXPECT_LT(c.points[0].y.hi, 0.0);
+  const CommonPoints d = common_points({1, 0, 1, 0, 0, -1}, {0, 0, 0, 2, -1, 0}, {{-2, 2}, {-2, 2}}, Rational(1, 1024));
+  ASSERT_EQ(d.points.size(), 2u);
+  const std::uint64_t built = context.counts.exact_points;
+  const LocatedPoint copy = d.points[1];
+  EXPECT_EQ(compare_x(copy, d.points[1]), Sign::zero);
+  EXPECT_EQ(compare_y(copy, d.points[1]), Sign::zero);
+  EXPECT_TRUE(same_point(copy, d.points[1]));
+  EXPECT_EQ(compare_x(d.points[0], copy), Sign::negative);
+  EXPECT_EQ(context.counts.exact_points, built);
+}

@@ -414,6 +414,13 @@ TEST(SqrtSign, HandCheckedCases) {
   // −1 − √1 < 0 (a mutant that compared magnitudes here answered 0).
   EXPECT_EQ(sign_of_root_sum(0, 1, 2, 1, 2), Sign::positive);
   EXPECT_EQ(sign_of_root_sum(-1, 0, 0, -1, 1), Sign::negative);
+  // Opposite signs where a² − b² = 3 − 6 + 2√2 hangs on the cross term 2xy√X: 1 + √2 − √6 =
+  // 2.41421 − 2.44949 < 0 (a version with 3xy there answered positive: the 2026-12-02 campaign).
+  EXPECT_EQ(sign_of_root_sum(1, 1, 2, -1, 6), Sign::negative);
+  EXPECT_EQ(sign_of_root_sum(-1, -1, 2, 1, 6), Sign::positive);
+  // A negative radicand is no real number: refused, in either place.
+  EXPECT_THROW(sign_of_root_sum(1, 1, -2), std::domain_error);
+  EXPECT_THROW(sign_of_root_sum(1, 1, 2, 1, -3), std::domain_error);
 }
 
 TEST(BadInput, NonFiniteInputsAreNamed) {

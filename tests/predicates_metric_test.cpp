@@ -116,6 +116,7 @@ TEST(Distortion, TheFirstMetricThatIsNotPositiveDefiniteIsNamed) {
                                     std::tuple{Sym2<Rational>{-1, 0, 1}, Sym2<Rational>{0, 0, 1}, "m11 = -1 "}}) {
     for (const auto& call : std::vector<std::function<void()>>{[&] { compare_tau_squared(P, Q, 2); },
                                                                [&] { compare_tau(P, Q, Sym2<Rational>{1, 0, 1}, Sym2<Rational>{1, 0, 1}); },
+                                                               [&] { compare_tau(Sym2<Rational>{1, 0, 1}, Sym2<Rational>{1, 0, 1}, P, Q); },
                                                                [&] { tau_squared(P, Q); }}) {
       try {
         call();
