@@ -43,6 +43,7 @@ FieldSource background_source(const std::string& text) {
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }
+  if (file.dimension == 3) throw UsageError(mesh_path + ": a tetrahedral mesh is no background for a 2D field");
   if (file.mesh.metrics.empty()) throw UsageError(mesh_path + ": background mesh has no metric (give MESH:METRIC)");
   try {
     auto mesh = std::make_shared<const fields::BackgroundMesh>(file.mesh);

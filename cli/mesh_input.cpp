@@ -24,6 +24,8 @@ io::MeshFile read_mesh_input(const MeshInput& in) {
   io::MeshFile file;
   try {
     file = io::read_mesh_file(in.path, in.format, {in.planar_3d}, in.metric, in.metric_format);
+    if (!in.field.empty() && file.dimension == 3)
+      throw UsageError(in.path + " is a tetrahedral mesh, and the built-in fields are 2D: give its metrics in a Medit .sol of Dimension 3 (--metric)");
     if (!in.field.empty()) {
       io::attach_metrics(file, metrics_at(field_source(in.field, in.params), in.field, file.mesh.sites), "--field " + in.field);
       file.metric_source = "--field " + in.field;

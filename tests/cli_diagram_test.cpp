@@ -57,6 +57,26 @@ TEST(CliDiagram, JsonHasTheDesignFields) {
   EXPECT_NE(picture.find("</svg>"), std::string::npos);
 }
 
+// The filter statistics the summary and stats.filters report, pinned on one small input (four
+// sites, the default domain, one thread): signs decided by intervals 62, exactly 12. They count the
+// work the filters did, so they pin it: the interval shortcut of Builder::nearest ("u is strictly
+// farther") decides without a sign; without it an independent reader's simulation counted 74 / 12,
+// the same diagram otherwise (the 2026-11-30 campaign's mutant 32, told apart on 2026-12-03).
+// A change that meets this test on purpose updates the figures, with the reason.
+TEST(CliDiagram, FilterStatisticsArePinnedOnFourSites) {
+  const std::string in = write_input("four.json", R"({"sites": [{"x": "0", "y": "0", "metric": ["1", "0", "1"]},
+      {"x": "1", "y": "0", "metric": ["2", "0", "1"]}, {"x": "0", "y": "1", "metric": ["1", "0", "3"]},
+      {"x": "3/4", "y": "4/5", "metric": ["1", "0", "1"]}]})");
+  const std::string out = in + ".out.json";
+  const Outcome r = run("diagram " + in + " --threads 1 --quiet --json " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("signs 62 / 12"), std::string::npos) << r.out;
+  std::ifstream f(out);
+  const Json j = Json::parse(f);
+  EXPECT_EQ(j["stats"]["filters"]["signs"]["filtered"], 62);
+  EXPECT_EQ(j["stats"]["filters"]["signs"]["exact"], 12);
+}
+
 TEST(CliDiagram, BadInputNamesTheProblemAndWritesNothing) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {R"({"sites": [{"x": "0.5", "y": "0.5", "metric": ["1","0","1"]},

@@ -140,6 +140,10 @@ TEST(LS_T11, SignChangeNeedsAnOrderedBracketWithTheSigns) {
   }
   const auto g = [](const Interval& x) { return x - Interval(Rational(4, 3), 64); };  // 4/3 is no bisection point
   EXPECT_TRUE(enclose_sign_change(g, Rational(1), Rational(2), 64).inside(Rational(1333, 1000), Rational(1334, 1000)));
+  // Each end's sign is checked on its own (a campaign survivor dropped the lower end's): on
+  // [3/2, 2] g is positive at both ends, 1/6 and 2/3, and on [1, 5/4] negative at both.
+  for (const auto& [a, b] : {std::pair{Rational(3, 2), Rational(2)}, std::pair{Rational(1), Rational(5, 4)}})
+    EXPECT_THROW(enclose_sign_change(g, a, b, 64), std::logic_error) << "[" << a << ", " << b << "]";
   // The bracket test itself: both ends' signs are needed (g(5/4) = −1/12 < 0).
   EXPECT_TRUE(brackets_sign_change(g, Rational(1), Rational(2), 64));
   EXPECT_FALSE(brackets_sign_change(g, Rational(1), Rational(5, 4), 64));

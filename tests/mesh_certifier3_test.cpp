@@ -57,8 +57,8 @@ Certify3Options all_checks() {
 }  // namespace
 
 // 2 × 2 × 2 cubes: 48 tetrahedra, valid; locally uniform with every test a tie or outside: each
-// tetrahedron's sphere holds the other four corners of its cube, in each of its four vertices'
-// metrics (M = I): 48 · 4 · 4 = 768 ties, no violation.
+// tetrahedron's sphere holds the other four corners of its cube, and nothing else. One witness
+// per tetrahedron, as in 2D: 48 ties (one each, the first found), no violation.
 TEST(MeshCertifier3, TheKuhnGridIsValidAndDelaunayWithTies) {
   const Mesh3 m = kuhn_grid(2, {1, 0, 0, 1, 0, 1});
   const Certify3Report r = certify_mesh3(m, all_checks());
@@ -67,7 +67,7 @@ TEST(MeshCertifier3, TheKuhnGridIsValidAndDelaunayWithTies) {
   EXPECT_EQ(r.tetrahedra, 48u);
   EXPECT_TRUE(r.uniform_checked);
   EXPECT_EQ(r.uniform_violations.count(), 0u);
-  EXPECT_EQ(r.uniform_ties.count(), 768u);
+  EXPECT_EQ(r.uniform_ties.count(), 48u);
   EXPECT_TRUE(r.holds(all_checks()));
   // The same grid stretched by M = diag(1, 4, 9) in every metric, its coordinates divided by
   // (1, 2, 3): the picture is the Euclidean one, ties included.
@@ -76,14 +76,14 @@ TEST(MeshCertifier3, TheKuhnGridIsValidAndDelaunayWithTies) {
   s.metrics.assign(s.vertices.size(), Sym3<Rational>{1, 0, 0, 4, 0, 9});
   const Certify3Report t = certify_mesh3(s, all_checks());
   EXPECT_EQ(t.uniform_violations.count(), 0u);
-  EXPECT_EQ(t.uniform_ties.count(), 768u);
+  EXPECT_EQ(t.uniform_ties.count(), 48u);
 }
 
 // Two tetrahedra across the face (0,0,0), (1,0,0), (0,1,0): apexes (0,0,1) and (3/10, 3/10, −1/10).
 // The first one's sphere (centre (1/2, 1/2, 1/2), radius² 3/4) holds the second apex (distance²
 // 0.44), and then the second's holds the first apex (the in-sphere test of five points does not
-// depend on which four make the tetrahedron, up to orientation): each tetrahedron, in each of its
-// four vertices' metrics (M = I), has one vertex inside: 8 violations. The mesh is valid.
+// depend on which four make the tetrahedron, up to orientation): each tetrahedron has one vertex
+// inside, named once (its search stops there): 2 violations. The mesh is valid.
 TEST(MeshCertifier3, AFaceThatShouldFlipIsNamedFromBothSides) {
   Mesh3 m;
   m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {Rational(3, 10), Rational(3, 10), Rational(-1, 10)}};
@@ -91,7 +91,7 @@ TEST(MeshCertifier3, AFaceThatShouldFlipIsNamedFromBothSides) {
   m.metrics.assign(5, Sym3<Rational>{1, 0, 0, 1, 0, 1});
   const Certify3Report r = certify_mesh3(m, all_checks());
   EXPECT_TRUE(r.valid_holds());
-  EXPECT_EQ(r.uniform_violations.count(), 8u);
+  EXPECT_EQ(r.uniform_violations.count(), 2u);
   EXPECT_EQ(r.uniform_ties.count(), 0u);
   ASSERT_FALSE(r.uniform_violations.described().empty());
   EXPECT_NE(r.uniform_violations.described()[0].text.find("strictly inside the circumsphere of tetrahedron 0"), std::string::npos);
@@ -101,6 +101,12 @@ TEST(MeshCertifier3, AFaceThatShouldFlipIsNamedFromBothSides) {
   m.metrics.assign(5, Sym3<Rational>{1, 0, 0, 1, 0, 10000});
   const Certify3Report s = certify_mesh3(m, all_checks());
   EXPECT_EQ(s.uniform_violations.count(), 0u);
+  // Every vertex's own metric is asked: with M = I at vertex 2 only (third in the first
+  // tetrahedron, second in the other), each tetrahedron is caught in vertex 2's metric alone.
+  m.metrics[2] = Sym3<Rational>{1, 0, 0, 1, 0, 1};
+  const Certify3Report u = certify_mesh3(m, all_checks());
+  ASSERT_EQ(u.uniform_violations.count(), 2u);
+  for (const auto& w : u.uniform_violations.described()) EXPECT_EQ(w.vertex, 2) << w.text;
 }
 
 // One Kuhn cube, M = I: its 19 edges are the 12 cube edges (length 1), 6 face diagonals (√2,

@@ -205,6 +205,18 @@ TEST(CertifiedRoots, SearchBoxWithAnInfiniteSideIsLeftToTheExactPath) {
   EXPECT_FALSE(certified_common_roots(C, D, {{1, 2}, {-inf, -1}}).has_value());
 }
 
+// A box that the natural interval extension of A excludes is root-free at once: x² + y² − 1 is at
+// least 1 on [−10, −1]², so the search answers an empty list. (A version whose interval square of
+// a negative interval was [0, max²] could not exclude it, and certified the common point
+// (−1/√2, −1/√2) of the nearby circle and line instead: the 2026-12-02 campaign, told apart by an
+// independent reader.)
+TEST(CertifiedRoots, ABoxTheNaturalExtensionExcludesHasNoRoot) {
+  const auto roots = certified_common_roots(IntervalConic::around({1, 0, 1, 0, 0, -1}), IntervalConic::around({0, 0, 0, 1, -1, 0}),
+                                            {{-10, -1}, {-10, -1}});
+  ASSERT_TRUE(roots.has_value());
+  EXPECT_TRUE(roots->empty());
+}
+
 // A certified root near the search box, never far from it: x = 0 and y = (5/8)x² − 1/8 meet at
 // (0, −1/8) only, 1/8 below the box [−1, 1] × [0, 1/64]. Newton's iterate from a sub-box lands
 // there, far beyond the sub-box's width, and is not a root of the box (issue 38's independent read

@@ -112,8 +112,11 @@ TEST(NumberTypes, DoublesAreTheRationalsTheyDenote) {
 // With both metrics not positive definite, the error names the first (issue 38: the arguments
 // swapped named the second): diag(0, 1) has m11 = 0, diag(−1, 1) has m11 = −1.
 TEST(Distortion, TheFirstMetricThatIsNotPositiveDefiniteIsNamed) {
-  for (const auto& [P, Q, named] : {std::tuple{Sym2<Rational>{0, 0, 1}, Sym2<Rational>{-1, 0, 1}, "m11 = 0 "},
-                                    std::tuple{Sym2<Rational>{-1, 0, 1}, Sym2<Rational>{0, 0, 1}, "m11 = -1 "}}) {
+  for (const auto& pair : {std::tuple{Sym2<Rational>{0, 0, 1}, Sym2<Rational>{-1, 0, 1}, "m11 = 0 "},
+                           std::tuple{Sym2<Rational>{-1, 0, 1}, Sym2<Rational>{0, 0, 1}, "m11 = -1 "}}) {
+    const Sym2<Rational>& P = std::get<0>(pair);  // not a structured binding: clang 14 cannot capture one
+    const Sym2<Rational>& Q = std::get<1>(pair);
+    const char* named = std::get<2>(pair);
     for (const auto& call : std::vector<std::function<void()>>{[&] { compare_tau_squared(P, Q, 2); },
                                                                [&] { compare_tau(P, Q, Sym2<Rational>{1, 0, 1}, Sym2<Rational>{1, 0, 1}); },
                                                                [&] { compare_tau(Sym2<Rational>{1, 0, 1}, Sym2<Rational>{1, 0, 1}, P, Q); },

@@ -124,4 +124,17 @@ TEST(QuasiCocircular, ShrinksToExactCocircularityAsGammaTendsToOne) {
   EXPECT_FALSE(quasi_cocircular(a, b, c, d, {1, 0, 1}, 1));
 }
 
+// Lemma 3.7 asks for d strictly outside one circumellipse and strictly inside another: at the edge
+// of the family, where the extreme metric puts d exactly on the circle and every other one on the
+// same side, the answer is no. For a = (−3, −3), b = (−1, −3), c = (0, 1), d = 0 and M = I,
+// C = Σ cofactorᵢ uᵢuᵢᵀ has trace 18 and determinant −144 (by hand from the definition), so M C
+// has eigenvalues 24 and −6, all exact in doubles; at γ₀ = 2 the least value of the in-circle
+// form, 24/2 − 6·2, is exactly 0, and the greatest 24·2 − 6/2 > 0. Any γ₀ > 2 tips it to yes.
+TEST(QuasiCocircular, TheExtremeMetricPuttingDOnTheCircleIsNoDisagreement) {
+  const Point2<double> a{-3, -3}, b{-1, -3}, c{0, 1}, d{0, 0};
+  EXPECT_FALSE(quasi_cocircular(a, b, c, d, {1, 0, 1}, 2));
+  EXPECT_TRUE(quasi_cocircular(a, b, c, d, {1, 0, 1}, 2.01));
+  EXPECT_FALSE(quasi_cocircular(a, b, c, d, {1, 0, 1}, 1.99));
+}
+
 }  // namespace

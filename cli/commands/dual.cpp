@@ -28,6 +28,8 @@ constexpr std::size_t described_witnesses = 100;
 int run_dual(const DualOptions& o) {
   check_outputs({o.json_path, o.svg_path});  // before the diagram, which can take minutes
   io::MeshFile file = read_mesh_input(o.in);
+  if (file.dimension == 3)
+    throw UsageError(o.in.path + " is a tetrahedral mesh: `dual` asks Labelle and Shewchuk's planar question of triangle meshes");
   geometry::Mesh<Rational>& mesh = file.mesh;
   if (mesh.triangles.empty()) throw UsageError(o.in.path + ": the file has no triangles");
   if (mesh.metrics.empty()) throw UsageError(o.in.path + ": has no metric, which the diagram needs (give --metric FILE or --field NAME)");

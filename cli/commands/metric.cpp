@@ -56,6 +56,7 @@ int run_metric(const MetricOptions& o) {
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }
+  if (f.dimension == 3) throw UsageError(o.at + " is a tetrahedral mesh, and the built-in fields are 2D");
   FieldSource source = field_source(o.field, o.params);
   // A file holds decimals or doubles, and a background mesh's exact P1 values are rationals with
   // no finite decimal expansion in general: every field is written at its doubles.

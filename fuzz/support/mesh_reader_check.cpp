@@ -5,6 +5,7 @@
 #include "fuzz/support/message_contract.hpp"
 #include "io/formats/registry.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
+#include "oracle/certify/mesh_certifier3.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -37,7 +38,21 @@ io::MeshFile read_written(const std::vector<io::FileText>& files, const std::str
   return io::read_mesh_file(mesh_path, format, o, metric_path);
 }
 
+void require_same3(const io::MeshFile& a, const io::MeshFile& b, const std::string& format) {
+  const auto& m = a.mesh3;
+  const auto& n = b.mesh3;
+  require(b.dimension == 3, format + " round trip lost the third dimension");
+  require(m.vertices.size() == n.vertices.size(), format + " round trip changed the vertex count");
+  for (std::size_t i = 0; i < m.vertices.size(); ++i)
+    require(m.vertices[i].x == n.vertices[i].x && m.vertices[i].y == n.vertices[i].y && m.vertices[i].z == n.vertices[i].z,
+            format + " round trip changed vertex " + std::to_string(i + 1));
+  require(m.tetrahedra == n.tetrahedra, format + " round trip changed the tetrahedra");
+  require(m.triangles == n.triangles, format + " round trip changed the triangles");
+  if (!m.metrics.empty() && !n.metrics.empty()) require(m.metrics == n.metrics, format + " round trip changed the metrics");
+}
+
 void require_same(const io::MeshFile& a, const io::MeshFile& b, const std::string& format) {
+  if (a.dimension == 3) return require_same3(a, b, format);
   const auto& m = a.mesh;
   const auto& n = b.mesh;
   require(m.sites.size() == n.sites.size(), format + " round trip changed the vertex count");
@@ -55,6 +70,14 @@ void require_same(const io::MeshFile& a, const io::MeshFile& b, const std::strin
 }
 
 void certify_small(const io::MeshFile& f) {
+  if (f.dimension == 3) {
+    if (f.mesh3.tetrahedra.size() <= max_certified_triangles && f.mesh3.vertices.size() <= 4 * max_certified_triangles) {
+      oracle::Certify3Options o;
+      o.uniform = o.metric = !f.mesh3.metrics.empty();
+      (void)oracle::certify_mesh3(f.mesh3, o);
+    }
+    return;
+  }
   const auto& m = f.mesh;
   if (m.triangles.size() > max_certified_triangles || m.sites.size() > 3 * max_certified_triangles) return;
   oracle::CertifyOptions o;

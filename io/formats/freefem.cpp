@@ -138,6 +138,7 @@ MeshFile read_freefem_file(const std::string& path) { return read_freefem(read_w
 
 // The .msh, and BASE.mtr beside it ("nbv 3") when the mesh has metrics.
 std::vector<FileText> write_freefem_file(const MeshFile& m, const std::string& path) {
+  require_triangle_mesh(m, "FreeFem .msh");
   std::vector<FileText> files{{path, freefem_files::msh_text(m, path)}};
   if (!m.mesh.metrics.empty())
     files.push_back(write_bamg_metric(m.mesh.metrics, std::filesystem::path(path).replace_extension(".mtr").string()));

@@ -847,6 +847,9 @@ std::string gmsh_text(const MeshFile& m, GmshEncoding encoding) {
   return gmsh_format::write(m, encoding == GmshEncoding::binary);
 }
 
-std::vector<FileText> write_gmsh_file(const MeshFile& m, const std::string& path) { return {{path, gmsh_text(m)}}; }
+std::vector<FileText> write_gmsh_file(const MeshFile& m, const std::string& path) {
+  require_triangle_mesh(m, "Gmsh .msh");
+  return {{path, gmsh_text(m)}};
+}
 
 }  // namespace anisocert::io

@@ -3,6 +3,7 @@
 namespace anisocert::io {
 
 std::vector<FileText> write_gmsh_view(const MeshFile& m, const std::string& path) {
+  require_triangle_mesh(m, "a Gmsh tensor view");
   const geometry::Mesh<Rational>& mesh = m.mesh;
   if (mesh.metrics.empty()) throw InputError(path + ": a Gmsh tensor view needs a metric at every vertex");
   std::vector<std::string> xy, tensor;

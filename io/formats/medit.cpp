@@ -5,6 +5,7 @@
 #include "numbers/excerpt.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <bit>
 #include <cstring>
@@ -15,11 +16,12 @@ namespace anisocert::io {
 namespace {
 
 using predicates::Sym2;
+using predicates::Sym3;
 
 // Keyword codes of the binary files (libMeshb's GmfKwdCod enumeration).
 enum Code : int {
-  version_formatted = 1, dimension = 3, vertices = 4, edges = 5, triangles = 6, quadrilaterals = 7, corners = 13, ridges = 14,
-  required_vertices = 15, required_edges = 16, end = 54, sol_at_vertices = 62
+  version_formatted = 1, dimension = 3, vertices = 4, edges = 5, triangles = 6, quadrilaterals = 7, tetrahedra = 8, prisms = 9,
+  hexahedra = 10, corners = 13, ridges = 14, required_vertices = 15, required_edges = 16, end = 54, sol_at_vertices = 62
 };
 
 struct KeywordName {
@@ -28,7 +30,8 @@ struct KeywordName {
 };
 constexpr KeywordName keyword_names[] = {{dimension, "Dimension"},     {vertices, "Vertices"},
                                          {edges, "Edges"},             {triangles, "Triangles"},
-                                         {quadrilaterals, "Quadrilaterals"},
+                                         {quadrilaterals, "Quadrilaterals"}, {tetrahedra, "Tetrahedra"},
+                                         {prisms, "Prisms"},           {hexahedra, "Hexahedra"},
                                          {corners, "Corners"},         {ridges, "Ridges"},
                                          {required_vertices, "RequiredVertices"},
                                          {required_edges, "RequiredEdges"}, {end, "End"},
@@ -163,11 +166,9 @@ class MeditStream {
   bool last_ = false;
 };
 
-int read_dimension(MeditStream& s, const MeditOptions& o) {
+int read_dimension(MeditStream& s) {
   s.set_block("Dimension");
   const std::int64_t d = s.word("the dimension");
-  if (d == 3 && !o.allow_planar_3d)
-    s.fail("Dimension 3: a planar mesh in 3D is read only when allowed (--planar-3d); every z must then be 0");
   if (d != 2 && d != 3) s.fail("Dimension " + std::to_string(d) + " is neither 2 nor 3");
   return static_cast<int>(d);
 }
@@ -193,22 +194,24 @@ MeshFile read_medit(std::string_view bytes, const std::string& source, const Med
   MeditStream s(bytes, source);
   MeshFile f;
   int dim = 0;
+  std::vector<predicates::Point3<Rational>> vertices3;  // Dimension 3: decided at the end
   bool ended = false;
   std::optional<Code> k;
   while (!ended && (k = s.next_keyword())) {
     s.set_block(name_of(*k));
-    const std::int64_t nv = static_cast<std::int64_t>(f.mesh.sites.size());
+    const std::int64_t nv = static_cast<std::int64_t>(dim == 3 ? vertices3.size() : f.mesh.sites.size());
     switch (*k) {
-      case dimension: dim = read_dimension(s, o); break;
+      case dimension: dim = read_dimension(s); break;
       case vertices: {
         if (dim == 0) s.fail("Vertices before Dimension");
         const std::int64_t n = s.count("the vertex count");
         s.check_fits(n, dim * s.real_bytes() + s.int_bytes(), "the vertex");
-        f.mesh.sites.reserve(static_cast<std::size_t>(n));
+        if (dim == 3) vertices3.reserve(static_cast<std::size_t>(n));
+        else f.mesh.sites.reserve(static_cast<std::size_t>(n));
         for (std::int64_t i = 0; i < n; ++i) {
           Rational x = s.real("x"), y = s.real("y");
-          if (dim == 3 && s.real("z") != 0) s.fail("vertex " + std::to_string(i + 1) + " has z != 0: the mesh is not planar");
-          f.mesh.sites.push_back({std::move(x), std::move(y)});
+          if (dim == 3) vertices3.push_back({std::move(x), std::move(y), s.real("z")});
+          else f.mesh.sites.push_back({std::move(x), std::move(y)});
           f.vertex_refs.push_back(read_ref(s));
         }
         break;
@@ -235,8 +238,25 @@ MeshFile read_medit(std::string_view bytes, const std::string& source, const Med
         }
         break;
       }
+      case tetrahedra: {
+        const std::int64_t n = s.count("the tetrahedron count");
+        if (n > 0 && dim != 3) s.fail("Tetrahedra in a mesh of Dimension " + std::to_string(dim));  // MMG writes "Tetrahedra 0" in 2D
+        s.check_fits(n, 5 * s.int_bytes(), "the tetrahedron");
+        f.mesh3.tetrahedra.reserve(static_cast<std::size_t>(n));
+        for (std::int64_t i = 0; i < n; ++i) {
+          const int a = s.index("a tetrahedron's vertex", nv), b = s.index("a tetrahedron's vertex", nv),
+                    c = s.index("a tetrahedron's vertex", nv), d = s.index("a tetrahedron's vertex", nv);
+          f.mesh3.tetrahedra.push_back({a, b, c, d});
+          f.tetrahedron_refs.push_back(read_ref(s));
+        }
+        break;
+      }
       case quadrilaterals:
-        if (s.count("the quadrilateral count") > 0) s.fail("the mesh has quadrilaterals: anisocert certifies meshes of triangles only");
+      case prisms:
+      case hexahedra:
+        if (s.count("the element count") > 0)
+          s.fail(std::string("the mesh has ") + (*k == quadrilaterals ? "quadrilaterals" : *k == prisms ? "prisms" : "hexahedra") +
+                 ": anisocert certifies meshes of triangles or tetrahedra only");
         break;
       case corners: f.corners = read_index_list(s, nv, "a corner"); break;
       case required_vertices: f.required_vertices = read_index_list(s, nv, "a required vertex"); break;
@@ -250,44 +270,87 @@ MeshFile read_medit(std::string_view bytes, const std::string& source, const Med
   }
   s.set_block(nullptr);
   if (dim == 0) s.fail("no Dimension keyword");
+  if (dim == 3) {
+    // Dimension 3: a tetrahedral mesh when it has tetrahedra; without, a planar one (every z = 0)
+    // when allowed; a surface mesh otherwise, which anisocert does not certify.
+    if (vertices3.empty()) s.fail("no Vertices");
+    if (!f.mesh3.tetrahedra.empty()) {
+      f.dimension = 3;
+      f.mesh3.vertices = std::move(vertices3);
+      f.mesh3.triangles = std::move(f.mesh.triangles);
+      f.mesh.triangles.clear();
+      return f;
+    }
+    const auto lifted = std::find_if(vertices3.begin(), vertices3.end(), [](const auto& p) { return p.z != 0; });
+    if (lifted != vertices3.end())
+      s.fail("Dimension 3 with no Tetrahedra, and vertex " + std::to_string(lifted - vertices3.begin() + 1) +
+             " has z != 0: a surface mesh, neither planar nor tetrahedral");
+    if (!o.allow_planar_3d)
+      s.fail("Dimension 3 with every z = 0 and no Tetrahedra: a planar mesh in 3D is read only when allowed (--planar-3d)");
+    for (auto& p : vertices3) f.mesh.sites.push_back({std::move(p.x), std::move(p.y)});
+  }
   if (f.mesh.sites.empty()) s.fail("no Vertices");
   set_constrained_segments(f);
   return f;
 }
 
-std::vector<Sym2<Rational>> read_medit_sol(std::string_view bytes, const std::string& source) {
+namespace {
+
+// The metric of a size h > 0 in dimension 2 or 3: I / h².
+Sym2<Rational> of_size(const Rational& h, Sym2<Rational>*) { return metric_of_size(h); }
+Sym3<Rational> of_size(const Rational& h, Sym3<Rational>*) { return metric3_of_size(h); }
+// A symmetric tensor in the file's order: the lower triangle by rows, m11 m12 m22 (2D), m11 m12 m22
+// m13 m23 m33 (3D).
+Sym2<Rational> tensor(MeditStream& s, Sym2<Rational>*) {
+  Rational m11 = s.real("m11"), m12 = s.real("m12"), m22 = s.real("m22");
+  return {std::move(m11), std::move(m12), std::move(m22)};
+}
+Sym3<Rational> tensor(MeditStream& s, Sym3<Rational>*) {
+  Rational m11 = s.real("m11"), m12 = s.real("m12"), m22 = s.real("m22"), m13 = s.real("m13"), m23 = s.real("m23"), m33 = s.real("m33");
+  return {std::move(m11), std::move(m12), std::move(m13), std::move(m22), std::move(m23), std::move(m33)};
+}
+std::string text(const Sym2<Rational>& m) { return exact_excerpt(m.m11) + " " + exact_excerpt(m.m12) + " " + exact_excerpt(m.m22); }
+std::string text(const Sym3<Rational>& m) {
+  return exact_excerpt(m.m11) + " " + exact_excerpt(m.m12) + " " + exact_excerpt(m.m22) + " " + exact_excerpt(m.m13) + " " +
+         exact_excerpt(m.m23) + " " + exact_excerpt(m.m33);
+}
+bool is_positive_definite(const Sym2<Rational>& m) { return positive_definite(m); }
+bool is_positive_definite(const Sym3<Rational>& m) { return predicates::positive_definite(m); }
+
+// SolAtVertices of a .sol of dimension D (2: Sym2, 3: Sym3).
+template <class Sym, int D>
+std::vector<Sym> read_sol(std::string_view bytes, const std::string& source) {
   MeditStream s(bytes, source);
-  std::vector<Sym2<Rational>> metrics;
+  std::vector<Sym> metrics;
   int dim = 0;
   bool found = false;
   std::optional<Code> k;
   while ((k = s.next_keyword()) && *k != end) {
     s.set_block(name_of(*k));
     if (*k == dimension) {
-      dim = read_dimension(s, MeditOptions{true});
+      dim = read_dimension(s);
       continue;
     }
     if (*k != sol_at_vertices) s.fail(std::string(name_of(*k)) + " does not belong in a solution file");
-    if (dim != 2) s.fail(dim == 0 ? "SolAtVertices before Dimension" : "a metric of Dimension 3 is not a 2D metric");
+    if (dim != D)
+      s.fail(dim == 0 ? std::string("SolAtVertices before Dimension")
+                      : "a metric of Dimension " + std::to_string(dim) + " is not a " + std::to_string(D) + "D metric");
     const std::int64_t n = s.count("the vertex count");
     const std::int64_t types = s.word("the number of solutions per vertex");
     if (types != 1) s.fail(std::to_string(types) + " solutions per vertex: one metric (type 1 or 3) was expected");
     const std::int64_t type = s.word("the solution type");
     if (type != 1 && type != 3) s.fail("solution type " + std::to_string(type) + " is neither 1 (a size) nor 3 (a symmetric tensor)");
-    s.check_fits(n, (type == 1 ? 1 : 3) * s.real_bytes(), "the solution");
+    s.check_fits(n, (type == 1 ? 1 : D * (D + 1) / 2) * s.real_bytes(), "the solution");
     metrics.reserve(static_cast<std::size_t>(n));
     for (std::int64_t i = 0; i < n; ++i) {
       const std::string at = "vertex " + std::to_string(i + 1);
       if (type == 1) {
         const Rational h = s.real("a size");
         if (h <= 0) s.fail(at + ": the size " + exact_excerpt(h) + " is not positive");
-        metrics.push_back(metric_of_size(h));
+        metrics.push_back(of_size(h, static_cast<Sym*>(nullptr)));
       } else {
-        Rational m11 = s.real("m11"), m12 = s.real("m12"), m22 = s.real("m22");
-        Sym2<Rational> m{std::move(m11), std::move(m12), std::move(m22)};
-        if (!positive_definite(m))
-          s.fail(at + ": the metric [" + exact_excerpt(m.m11) + " " + exact_excerpt(m.m12) + " " +
-                 exact_excerpt(m.m22) + "] is not positive definite");
+        Sym m = tensor(s, static_cast<Sym*>(nullptr));
+        if (!is_positive_definite(m)) s.fail(at + ": the metric [" + text(m) + "] is not positive definite");
         metrics.push_back(std::move(m));
       }
     }
@@ -298,11 +361,23 @@ std::vector<Sym2<Rational>> read_medit_sol(std::string_view bytes, const std::st
   return metrics;
 }
 
+}  // namespace
+
+std::vector<Sym2<Rational>> read_medit_sol(std::string_view bytes, const std::string& source) {
+  return read_sol<Sym2<Rational>, 2>(bytes, source);
+}
+
+std::vector<Sym3<Rational>> read_medit_sol3(std::string_view bytes, const std::string& source) {
+  return read_sol<Sym3<Rational>, 3>(bytes, source);
+}
+
 MeshFile read_medit_file(const std::string& path, const MeditOptions& o) { return read_medit(read_whole_file(path), path, o); }
 
 std::vector<Sym2<Rational>> read_medit_sol_file(const std::string& path) {
   return read_medit_sol(read_whole_file(path), path);
 }
+
+std::vector<Sym3<Rational>> read_medit_sol3_file(const std::string& path) { return read_medit_sol3(read_whole_file(path), path); }
 
 // --- writers ---------------------------------------------------------------------------------
 
@@ -380,10 +455,20 @@ class MeditWriter {
   std::size_t next_at_ = 0;
 };
 
-void write_dimension(MeditWriter& w) {
+void write_dimension(MeditWriter& w, int d) {
   w.keyword(dimension);
-  w.word(2);
+  w.word(d);
   w.line_end();
+}
+
+void write_triangles(MeditWriter& w, const std::vector<std::array<int, 3>>& list, const std::vector<int>& refs) {
+  if (list.empty()) return;
+  w.keyword(triangles);
+  w.count(static_cast<std::int64_t>(list.size()));
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    for (int v : list[i]) w.integer(v + 1);
+    w.integer(i < refs.size() ? refs[i] : 0), w.line_end();
+  }
 }
 
 void write_index_list(MeditWriter& w, Code c, const std::vector<int>& list) {
@@ -397,12 +482,18 @@ void write_index_list(MeditWriter& w, Code c, const std::vector<int>& list) {
 
 std::string medit_mesh_text(const MeshFile& m, MeditEncoding e, int version) {
   MeditWriter w(e, version);
-  write_dimension(w);
+  const bool three = m.dimension == 3;
+  write_dimension(w, three ? 3 : 2);
   w.keyword(vertices);
-  w.count(static_cast<std::int64_t>(m.mesh.sites.size()));
-  for (std::size_t i = 0; i < m.mesh.sites.size(); ++i) {
+  const std::size_t n = three ? m.mesh3.vertices.size() : m.mesh.sites.size();
+  w.count(static_cast<std::int64_t>(n));
+  for (std::size_t i = 0; i < n; ++i) {
     const std::string at = "vertex " + std::to_string(i + 1);
-    w.real(m.mesh.sites[i].x, at + " x"), w.real(m.mesh.sites[i].y, at + " y");
+    if (three) {
+      w.real(m.mesh3.vertices[i].x, at + " x"), w.real(m.mesh3.vertices[i].y, at + " y"), w.real(m.mesh3.vertices[i].z, at + " z");
+    } else {
+      w.real(m.mesh.sites[i].x, at + " x"), w.real(m.mesh.sites[i].y, at + " y");
+    }
     w.integer(i < m.vertex_refs.size() ? m.vertex_refs[i] : 0), w.line_end();
   }
   if (!m.mesh.edges.empty()) {
@@ -412,12 +503,13 @@ std::string medit_mesh_text(const MeshFile& m, MeditEncoding e, int version) {
       w.integer(m.mesh.edges[i].first + 1), w.integer(m.mesh.edges[i].second + 1),
           w.integer(i < m.edge_refs.size() ? m.edge_refs[i] : 0), w.line_end();
   }
-  if (!m.mesh.triangles.empty()) {
-    w.keyword(triangles);
-    w.count(static_cast<std::int64_t>(m.mesh.triangles.size()));
-    for (std::size_t i = 0; i < m.mesh.triangles.size(); ++i) {
-      for (int v : m.mesh.triangles[i]) w.integer(v + 1);
-      w.integer(i < m.triangle_refs.size() ? m.triangle_refs[i] : 0), w.line_end();
+  write_triangles(w, three ? m.mesh3.triangles : m.mesh.triangles, m.triangle_refs);
+  if (three && !m.mesh3.tetrahedra.empty()) {
+    w.keyword(tetrahedra);
+    w.count(static_cast<std::int64_t>(m.mesh3.tetrahedra.size()));
+    for (std::size_t i = 0; i < m.mesh3.tetrahedra.size(); ++i) {
+      for (int v : m.mesh3.tetrahedra[i]) w.integer(v + 1);
+      w.integer(i < m.tetrahedron_refs.size() ? m.tetrahedron_refs[i] : 0), w.line_end();
     }
   }
   write_index_list(w, corners, m.corners);
@@ -429,7 +521,7 @@ std::string medit_mesh_text(const MeshFile& m, MeditEncoding e, int version) {
 
 std::string medit_sol_text(const std::vector<Sym2<Rational>>& metrics, MeditEncoding e, int version) {
   MeditWriter w(e, version);
-  write_dimension(w);
+  write_dimension(w, 2);
   w.keyword(sol_at_vertices);
   w.count(static_cast<std::int64_t>(metrics.size()));
   w.word(1), w.word(3), w.line_end();  // one solution per vertex, a symmetric tensor: "1 3"
@@ -440,14 +532,27 @@ std::string medit_sol_text(const std::vector<Sym2<Rational>>& metrics, MeditEnco
   return w.finish();
 }
 
+std::string medit_sol_text(const std::vector<Sym3<Rational>>& metrics, MeditEncoding e, int version) {
+  MeditWriter w(e, version);
+  write_dimension(w, 3);
+  w.keyword(sol_at_vertices);
+  w.count(static_cast<std::int64_t>(metrics.size()));
+  w.word(1), w.word(3), w.line_end();
+  for (std::size_t i = 0; i < metrics.size(); ++i) {
+    const std::string at = "metric " + std::to_string(i + 1);
+    const Sym3<Rational>& m = metrics[i];
+    w.real(m.m11, at), w.real(m.m12, at), w.real(m.m22, at), w.real(m.m13, at), w.real(m.m23, at), w.real(m.m33, at), w.line_end();
+  }
+  return w.finish();
+}
+
 std::vector<FileText> write_medit_file(const MeshFile& m, const std::string& path) {
   const bool binary = path.size() >= 6 && path.compare(path.size() - 6, 6, ".meshb") == 0;
   const MeditEncoding e = binary ? MeditEncoding::binary : MeditEncoding::ascii;
   std::vector<FileText> files{{path, medit_mesh_text(m, e)}};
-  if (!m.mesh.metrics.empty()) {
-    const std::string sol = std::filesystem::path(path).replace_extension(binary ? ".solb" : ".sol").string();
-    files.push_back({sol, medit_sol_text(m.mesh.metrics, e)});
-  }
+  const std::string sol = std::filesystem::path(path).replace_extension(binary ? ".solb" : ".sol").string();
+  if (m.dimension == 3 && !m.mesh3.metrics.empty()) files.push_back({sol, medit_sol_text(m.mesh3.metrics, e)});
+  if (m.dimension != 3 && !m.mesh.metrics.empty()) files.push_back({sol, medit_sol_text(m.mesh.metrics, e)});
   return files;
 }
 

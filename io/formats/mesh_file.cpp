@@ -20,6 +20,23 @@ void attach_metrics(MeshFile& f, std::vector<predicates::Sym2<Rational>> metrics
   f.metric_source = source;
 }
 
+void attach_metrics(MeshFile& f, std::vector<predicates::Sym3<Rational>> metrics, const std::string& source) {
+  if (metrics.size() != f.mesh3.vertices.size())
+    throw InputError(source + ": " + std::to_string(metrics.size()) + " metrics for a mesh of " +
+                     std::to_string(f.mesh3.vertices.size()) + " vertices");
+  f.mesh3.metrics = std::move(metrics);
+  f.metric_source = source;
+}
+
+void require_triangle_mesh(const MeshFile& m, const std::string& format) {
+  if (m.dimension == 3) throw InputError("a tetrahedral mesh cannot be written as " + format + " (Medit .mesh holds tetrahedra)");
+}
+
+predicates::Sym3<Rational> metric3_of_size(const Rational& h) {
+  const Rational inv = 1 / (h * h);
+  return {inv, 0, 0, inv, 0, inv};
+}
+
 predicates::Sym2<Rational> metric_of_size(const Rational& h) {
   const Rational inv = 1 / (h * h);
   return {inv, 0, inv};

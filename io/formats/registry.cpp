@@ -23,7 +23,10 @@ MeshFile read_json(const std::string& path, const ReadOptions&) {
   return f;
 }
 
-std::vector<FileText> write_json(const MeshFile& m, const std::string& path) { return {{path, mesh_json(m.mesh)}}; }
+std::vector<FileText> write_json(const MeshFile& m, const std::string& path) {
+  require_triangle_mesh(m, "anisocert's JSON");
+  return {{path, mesh_json(m.mesh)}};
+}
 
 std::string extension_of(const std::string& path) {
   const auto slash = path.find_last_of('/');
@@ -89,7 +92,7 @@ const std::vector<MeshFormat>& mesh_formats() {
 const std::vector<MetricFormat>& metric_formats() {
   static const std::vector<MetricFormat> formats{
       {"medit", "Medit .sol/.solb: SolAtVertices, type 1 (size) or 3 (tensor)", {".sol", ".solb"}, nullptr,
-       read_medit_sol_file, write_medit_sol},
+       read_medit_sol_file, write_medit_sol, read_medit_sol3_file},
       {"bamg", "BAMG .mtr: nbv 1 (sizes) or nbv 3 (a11 a21 a22)", {".mtr"}, nullptr, read_bamg_metric_file,
        write_bamg_metric},
   };
@@ -131,14 +134,25 @@ MeshFile read_mesh_file(const std::string& path, const std::string& format, cons
   const MeshFormat& mf = mesh_format_of(path, format);
   if (!mf.read) throw InputError(path + ": anisocert writes " + mf.name + " files but does not read them");
   MeshFile f = mf.read(path, o);
-  if (!f.mesh.metrics.empty()) f.metric_source = path;
+  const bool three = f.dimension == 3;
+  const bool has_metrics = three ? !f.mesh3.metrics.empty() : !f.mesh.metrics.empty();
+  if (has_metrics) f.metric_source = path;
   std::string metrics = metric_path;
   // MMG's convention: BASE.mesh's metric is BASE.sol (BASE.meshb's, BASE.solb), read when present.
-  if (metrics.empty() && f.mesh.metrics.empty() && mf.name == "medit") {
+  if (metrics.empty() && !has_metrics && mf.name == "medit") {
     const std::string beside = std::filesystem::path(path).replace_extension(extension_of(path) == ".meshb" ? ".solb" : ".sol").string();
     if (std::ifstream(beside).good()) metrics = beside;
   }
-  if (!metrics.empty()) attach_metrics(f, metric_format_of(metrics, metric_format).read(metrics), metrics);
+  if (metrics.empty()) return f;
+  const MetricFormat& m = metric_format_of(metrics, metric_format);
+  if (!three) {
+    attach_metrics(f, m.read(metrics), metrics);
+  } else if (m.read3) {
+    attach_metrics(f, m.read3(metrics), metrics);
+  } else {
+    throw InputError(metrics + ": " + m.name + " metric files hold 2D metrics, and " + path +
+                     " is a tetrahedral mesh (3D metrics: a Medit .sol of Dimension 3)");
+  }
   return f;
 }
 

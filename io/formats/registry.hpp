@@ -36,6 +36,8 @@ struct MetricFormat {
   bool (*recognizes)(std::string_view head) = nullptr;
   std::vector<predicates::Sym2<Rational>> (*read)(const std::string& path) = nullptr;
   FileText (*write)(const std::vector<predicates::Sym2<Rational>>& metrics, const std::string& path) = nullptr;
+  // The 3×3 metrics of a tetrahedral mesh (nullptr: the format holds 2D metrics only).
+  std::vector<predicates::Sym3<Rational>> (*read3)(const std::string& path) = nullptr;
 };
 
 const std::vector<MeshFormat>& mesh_formats();

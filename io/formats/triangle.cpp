@@ -274,6 +274,7 @@ MeshFile read_triangle_files(const std::string& path) {
 
 // Metrics, corners, required vertices and edges, ridges: Triangle's files have no place for them.
 std::vector<FileText> write_triangle_files(const MeshFile& m, const std::string& path) {
+  require_triangle_mesh(m, "Triangle .node/.ele");
   using namespace triangle_files;
   const std::string base = base_of(path);
   std::vector<FileText> files{{base + ".node", node_text(m, base + ".node")}, {base + ".ele", ele_text(m)}};

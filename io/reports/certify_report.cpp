@@ -103,7 +103,49 @@ void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdic
                        {"violation_count", a.violations.count()}}});
 }
 
+void add_validity3(const oracle::Certify3Report& r, CertifyVerdict& v) {
+  const oracle::TetrahedralizationCheck& t = *r.valid;
+  const std::string more = t.failure_count > t.failures.size()
+                               ? " (" + std::to_string(t.failure_count) + " failures, the first " + std::to_string(t.failures.size()) +
+                                     " described)"
+                               : "";
+  const std::string orientation =
+      t.orientation.empty() ? "" : ", " + t.orientation + " orientation" + (t.orientation == "positive" ? " (Medit's)" : "");
+  v.checks.push_back({"valid", "valid (tetrahedra on opposite sides of each inner face, a closed 2-manifold boundary; not checked: that it does not cross itself)", "valid",
+                      r.valid_holds(), true,
+                      more + " (" + std::to_string(t.boundary_faces) + " boundary faces" + orientation + ")", "",
+                      {texts(t.failures, t.failure_count)},
+                      {{"holds", r.valid_holds()}, {"checks_run", t.checks_run}, {"orientation", t.orientation},
+                       {"boundary_faces", t.boundary_faces}, {"interior_faces", t.interior_faces}, {"failure_count", t.failure_count},
+                       {"bad_tetrahedron_count", t.bad_tetrahedra.size()}}});
+}
+
+void add_uniform3(const oracle::Certify3Report& r, CertifyVerdict& v) {
+  const bool holds = r.uniform_violations.empty();
+  const std::string unmeasured = r.unmeasured ? ", " + std::to_string(r.unmeasured) + " flat tetrahedra cannot be checked" : "";
+  v.checks.push_back({"locally_uniform", "locally uniform (every tetrahedron at v has an empty M_v-circumsphere)", "locally uniform", holds,
+                      true,
+                      " (" + std::to_string(r.insphere_tests) + " nearby vertices tested exactly, " +
+                          std::to_string(r.uniform_ties.count()) + " cospherical ties" + unmeasured + ")",
+                      " (" + std::to_string(r.uniform_ties.count()) + " ties)", {texts(r.uniform_violations)},
+                      {{"holds", holds}, {"insphere_tests", r.insphere_tests}, {"unmeasured_tetrahedra", r.unmeasured},
+                       {"violation_count", r.uniform_violations.count()}, {"tie_count", r.uniform_ties.count()}}});
+}
+
 }  // namespace
+
+CertifyVerdict certify_verdict(const oracle::Certify3Report& r, const oracle::Certify3Options& o, const geometry::Mesh3<Rational>& mesh,
+                               const BoundTexts& b) {
+  CertifyVerdict v;
+  v.dimension = 3;
+  v.vertices = mesh.vertices.size(), v.triangles = mesh.tetrahedra.size(), v.holds = r.holds(o);
+  v.described_witnesses = o.described_witnesses;
+  v.has_metrics = mesh.metrics.size() == mesh.vertices.size() && !mesh.metrics.empty();
+  if (r.valid) add_validity3(r, v);
+  if (r.uniform_checked) add_uniform3(r, v);
+  if (r.lengths) add_lengths(*r.lengths, b, v);
+  return v;
+}
 
 CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::CertifyOptions& o,
                                const geometry::Mesh<Rational>& mesh, const BoundTexts& b) {
@@ -141,7 +183,7 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
 
 std::string full_text(const CertifyVerdict& v, const std::string& input) {
   std::ostringstream o;
-  o << input << ": " << v.vertices << " vertices, " << v.triangles << " triangles";
+  o << input << ": " << v.vertices << " vertices, " << v.triangles << (v.dimension == 3 ? " tetrahedra" : " triangles");
   if (!v.metric_source.empty()) o << ", metrics from " << v.metric_source;
   o << "\n";
   for (const CheckReport& c : v.checks) {
@@ -152,7 +194,8 @@ std::string full_text(const CertifyVerdict& v, const std::string& input) {
     }
   }
   if (!v.has_metrics) o << "  no metric: only validity was checked (the other checks need a metric at every vertex)\n";
-  if (!v.holds) o << "  (witnesses number vertices, triangles and edges from 0, in the order of the file)\n";
+  if (!v.holds)
+    o << "  (witnesses number vertices, " << (v.dimension == 3 ? "tetrahedra" : "triangles") << " and edges from 0, in the order of the file)\n";
   o << (v.holds ? "certified\n" : "not certified\n");
   return o.str();
 }
@@ -173,10 +216,11 @@ struct StreamedList {
   std::function<ReportJson(std::size_t)> entry;
 };
 
-StreamedList witness_list(const char* key, const oracle::WitnessList& ws) {
-  return {key, ws.described().size(), [&ws](std::size_t i) {
+// `element`: what WitnessPlace::triangle numbers ("triangle", or "tetrahedron" in 3D).
+StreamedList witness_list(const char* key, const oracle::WitnessList& ws, const char* element = "triangle") {
+  return {key, ws.described().size(), [&ws, element](std::size_t i) {
             const oracle::MeshWitness& w = ws.described()[i];
-            return ReportJson{{"vertex", w.vertex}, {"triangle", w.triangle}, {"site", w.site}, {"text", w.text}};
+            return ReportJson{{"vertex", w.vertex}, {element, w.triangle}, {"site", w.site}, {"text", w.text}};
           }};
 }
 
@@ -197,6 +241,14 @@ std::vector<StreamedList> lists_of(const std::string& key, const oracle::Certify
   if (key == "quality") return {witness_list("violations", r.quality->violations)};
   if (key == "angles")
     return {witness_list("violations", r.angles->violations), first_of("undecided_triangles", r.angles->undecided_triangles, limit)};
+  return {};
+}
+
+std::vector<StreamedList> lists_of(const std::string& key, const oracle::Certify3Report& r, std::size_t limit) {
+  if (key == "valid") return {first_of("failures", r.valid->failures, limit), first_of("bad_tetrahedra", r.valid->bad_tetrahedra, limit)};
+  if (key == "locally_uniform")
+    return {witness_list("violations", r.uniform_violations, "tetrahedron"), witness_list("ties", r.uniform_ties, "tetrahedron")};
+  if (key == "lengths") return {witness_list("violations", r.lengths->range_violations)};
   return {};
 }
 
@@ -254,17 +306,16 @@ void write_object(std::ostream& out, const ReportJson& fields, const std::vector
   out << "}";
 }
 
-}  // namespace
-
-void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::CertifyReport& r) {
+// The --json report of either dimension: the top-level fields, then each check with its lists.
+template <class Report>
+void write_report_json(std::ostream& out, const CertifyVerdict& v, const Report& r) {
   const std::size_t limit = v.described_witnesses;
-  ReportJson top{{"holds", v.holds},
-                 {"vertices", v.vertices},
-                 {"triangles", v.triangles},
-                 {"has_metrics", v.has_metrics},
-                 {"metric_source", v.metric_source},
-                 {"indices_from", 0},
-                 {"witnesses_listed", limit == oracle::all_witnesses ? ReportJson(nullptr) : ReportJson(limit)}};
+  ReportJson top{{"holds", v.holds}, {"dimension", v.dimension}, {"vertices", v.vertices}};
+  top[v.dimension == 3 ? "tetrahedra" : "triangles"] = v.triangles;
+  top["has_metrics"] = v.has_metrics;
+  top["metric_source"] = v.metric_source;
+  top["indices_from"] = 0;
+  top["witnesses_listed"] = limit == oracle::all_witnesses ? ReportJson(nullptr) : ReportJson(limit);
   // The checks as fields of the top level, each written with its lists (one witness per triangle
   // at most, the first `limit` of them) from the report itself.
   out << "{";
@@ -280,5 +331,10 @@ void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::Certif
   }
   out << "\n}\n";
 }
+
+}  // namespace
+
+void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::CertifyReport& r) { write_report_json(out, v, r); }
+void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::Certify3Report& r) { write_report_json(out, v, r); }
 
 }  // namespace anisocert::io

@@ -5,6 +5,7 @@
 // rendering is bounded by the report's own bound: per list, the exact count and the witnesses the
 // certifier described (CertifyOptions::described_witnesses; the text shows three of them).
 #include "oracle/certify/mesh_certifier.hpp"
+#include "oracle/certify/mesh_certifier3.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -36,6 +37,7 @@ struct CheckReport {
 };
 
 struct CertifyVerdict {
+  int dimension = 2;                       // 3: a tetrahedral mesh (`triangles` then counts tetrahedra)
   std::size_t vertices = 0, triangles = 0;
   std::size_t described_witnesses = oracle::default_described_witnesses;   // per list (oracle::all_witnesses: all)
   bool has_metrics = true;
@@ -51,6 +53,9 @@ struct BoundTexts {
 
 CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::CertifyOptions& o,
                                const geometry::Mesh<Rational>& mesh, const BoundTexts& bounds);
+// The same for a tetrahedral mesh (issue 39).
+CertifyVerdict certify_verdict(const oracle::Certify3Report& r, const oracle::Certify3Options& o,
+                               const geometry::Mesh3<Rational>& mesh, const BoundTexts& bounds);
 
 std::string full_text(const CertifyVerdict& v, const std::string& input);
 std::string one_line(const CertifyVerdict& v);
@@ -58,5 +63,6 @@ std::string one_line(const CertifyVerdict& v);
 // memory), laid out as nlohmann's dump(2) with one line per witness; the report behind v gives
 // the lists, each its first v.described_witnesses entries after its exact count.
 void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::CertifyReport& r);
+void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::Certify3Report& r);
 
 }  // namespace anisocert::io

@@ -174,8 +174,15 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
         ++r.unmeasured;
         continue;
       }
+      // One witness per tetrahedron, as in 2D (mesh_certifier.cpp): its search stops at the first
+      // site strictly inside, and records one tie at most.
       const int tetrahedron = static_cast<int>(ti);
-      for (const int v : t) {
+      bool violated = false, tied = false;
+      for (std::size_t i = 0; i < 4 && !violated; ++i) {
+        const int v = t[i];
+        // A metric equal to an earlier vertex's (a constant field) asks the same question again.
+        const auto same = [&](std::size_t j) { return mesh.metrics[static_cast<std::size_t>(t[j])] == mesh.metrics[static_cast<std::size_t>(v)]; };
+        if ((i > 0 && same(0)) || (i > 1 && same(1)) || (i > 2 && same(2))) continue;
         const auto box = ellipsoid_box(m, t, m.metric[static_cast<std::size_t>(v)]);
         if (box) {
           grid.query(box->first, box->second, candidates);
@@ -187,12 +194,18 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
           if (e == t[0] || e == t[1] || e == t[2] || e == t[3]) continue;
           ++r.insphere_tests;
           const Sign s = insphere(m, t, e, v) * orientation;
+          if (s == Sign::negative || (s == Sign::zero && tied)) continue;
           const auto text = [&, e, v] {
             return "vertex " + std::to_string(e) + " is " + (s == Sign::positive ? "strictly inside" : "on") +
                    " the circumsphere of tetrahedron " + std::to_string(tetrahedron) + " in the metric of its vertex " + std::to_string(v);
           };
-          if (s == Sign::positive) r.uniform_violations.add(v, tetrahedron, e, text);
-          else if (s == Sign::zero) r.uniform_ties.add(v, tetrahedron, e, text);
+          if (s == Sign::positive) {
+            r.uniform_violations.add(v, tetrahedron, e, text);
+            violated = true;
+            break;
+          }
+          r.uniform_ties.add(v, tetrahedron, e, text);
+          tied = true;
         }
       }
     }

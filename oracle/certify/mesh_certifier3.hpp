@@ -4,7 +4,9 @@
 //  - valid: tetrahedralization_check.hpp;
 //  - locally uniform (LU §3, in dimension 3): no vertex strictly inside the M_v-circumellipsoid of
 //    a tetrahedron incident to v (the lifted in-sphere test in M_v, predicates/insphere.hpp, with
-//    the tetrahedron's own orientation); vertices exactly on it are ties, reported apart;
+//    the tetrahedron's own orientation); vertices exactly on it are ties, reported apart; one
+//    witness per tetrahedron as in 2D (its search stops at the first vertex strictly inside, and
+//    records one tie at most), a vertex whose metric equals an earlier one's not asked again;
 //  - conforming to its metric: edge lengths in both endpoints' metrics, the share in
 //    [1/√2, √2] decided exactly, and a range as a verdict (metric_checks.hpp, one loop for both
 //    dimensions).

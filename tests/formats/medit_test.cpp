@@ -4,6 +4,9 @@
 // other byte order, and malformed files refused with the file, the line or byte, and the keyword.
 #include "io/formats/medit.hpp"
 
+#include <array>
+#include <vector>
+
 #include "format_test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -151,11 +154,62 @@ TEST(Medit, SizesAndTensors) {
 
 TEST(Medit, PlanarThreeDimensionalOnlyWhenAllowed) {
   const char* text = "MeshVersionFormatted 2 Dimension 3 Vertices 3 0 0 0 1 1 0 0 2 0 1 0 3 Triangles 1 1 2 3 0 End";
-  EXPECT_NE(error_of([&] { read_medit(text, "p.mesh"); }).find("p.mesh:1: in Dimension: Dimension 3"), std::string::npos);
+  EXPECT_NE(error_of([&] { read_medit(text, "p.mesh"); })
+                .find("p.mesh:1: Dimension 3 with every z = 0 and no Tetrahedra: a planar mesh in 3D is read only when allowed (--planar-3d)"),
+            std::string::npos)
+      << error_of([&] { read_medit(text, "p.mesh"); });
   const MeshFile f = read_medit(text, "p.mesh", {true});
+  EXPECT_EQ(f.dimension, 2);
   EXPECT_EQ(f.mesh.sites[1].x, 1);
   const char* lifted = "MeshVersionFormatted 2 Dimension 3 Vertices 1 0 0 0.5 1 End";
-  EXPECT_NE(error_of([&] { read_medit(lifted, "z.mesh", {true}); }).find("has z != 0"), std::string::npos);
+  EXPECT_NE(error_of([&] { read_medit(lifted, "z.mesh", {true}); }).find("vertex 1 has z != 0: a surface mesh, neither planar nor tetrahedral"),
+            std::string::npos);
+}
+
+// A tetrahedral mesh (issue 39): Dimension 3 with Tetrahedra, its Triangles the declared boundary,
+// every number exact; its .sol of Dimension 3 in Medit's order m11 m12 m22 m13 m23 m33 (the lower
+// triangle by rows: the second entry is m12, the fourth m13); written back and read again the same,
+// in text and binary. Prisms and hexahedra are refused by name.
+TEST(Medit, TetrahedralMeshesAndTheirMetrics) {
+  const char* text =
+      "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 0.125 2\n"
+      "Triangles\n1\n1 3 2 7\nTetrahedra\n1\n1 2 3 4 5\nEnd\n";
+  const MeshFile f = read_medit(text, "t.mesh");
+  ASSERT_EQ(f.dimension, 3);
+  ASSERT_EQ(f.mesh3.vertices.size(), 4u);
+  EXPECT_EQ(f.mesh3.vertices[3].z, Rational(1, 8));
+  EXPECT_EQ(f.mesh3.tetrahedra, (std::vector<std::array<int, 4>>{{0, 1, 2, 3}}));
+  EXPECT_EQ(f.mesh3.triangles, (std::vector<std::array<int, 3>>{{0, 2, 1}}));
+  EXPECT_EQ(f.tetrahedron_refs, std::vector<int>{5});
+  EXPECT_TRUE(f.mesh.sites.empty() && f.mesh.triangles.empty());
+  const auto sol = read_medit_sol3("MeshVersionFormatted 2 Dimension 3 SolAtVertices 2 1 3 4 1 3 0.5 0.25 2 1 0 1 0 0 1 End", "t.sol");
+  ASSERT_EQ(sol.size(), 2u);
+  EXPECT_EQ(sol[0], (anisocert::predicates::Sym3<Rational>{4, 1, Rational(1, 2), 3, Rational(1, 4), 2}));
+  const auto sizes = read_medit_sol3("MeshVersionFormatted 2 Dimension 3 SolAtVertices 1 1 1 0.5 End", "h.sol");
+  EXPECT_EQ(sizes[0], (anisocert::predicates::Sym3<Rational>{4, 0, 0, 4, 0, 4}));
+  // diag(−1, −1, 1) has determinant 1 and is not positive definite (Sylvester's criterion).
+  EXPECT_NE(error_of([] { read_medit_sol3("MeshVersionFormatted 2 Dimension 3 SolAtVertices 1 1 3 -1 0 -1 0 0 1 End", "n.sol"); })
+                .find("n.sol:1: in SolAtVertices: vertex 1: the metric [-1 0 -1 0 0 1] is not positive definite"),
+            std::string::npos);
+  EXPECT_NE(error_of([] { read_medit_sol("MeshVersionFormatted 2 Dimension 3 SolAtVertices 1 1 1 0.5 End", "d.sol"); })
+                .find("a metric of Dimension 3 is not a 2D metric"),
+            std::string::npos);
+  MeshFile g = f;
+  g.mesh3.metrics = {{4, 1, Rational(1, 2), 3, Rational(1, 4), 2}, {1, 0, 0, 1, 0, 1}, {1, 0, 0, 1, 0, 1}, {2, 0, 0, 2, 0, 2}};
+  for (const auto e : {MeditEncoding::ascii, MeditEncoding::binary}) {
+    const MeshFile back = read_medit(medit_mesh_text(g, e), "back");
+    EXPECT_EQ(back.dimension, 3);
+    EXPECT_EQ(back.mesh3.tetrahedra, g.mesh3.tetrahedra);
+    EXPECT_EQ(back.mesh3.triangles, g.mesh3.triangles);
+    EXPECT_EQ(back.mesh3.vertices[3].z, Rational(1, 8));
+    EXPECT_EQ(read_medit_sol3(medit_sol_text(g.mesh3.metrics, e), "back.sol"), g.mesh3.metrics);
+  }
+  EXPECT_NE(error_of([] { read_medit("MeshVersionFormatted 2 Dimension 3 Vertices 1 0 0 0 1 Prisms 1 1 1 1 1 1 1 0 End", "p.mesh"); })
+                .find("the mesh has prisms: anisocert certifies meshes of triangles or tetrahedra only"),
+            std::string::npos);
+  EXPECT_NE(error_of([] { read_medit("MeshVersionFormatted 2 Dimension 2 Vertices 1 0 0 1 Tetrahedra 1 1 1 1 1 0 End", "t2.mesh"); })
+                .find("Tetrahedra in a mesh of Dimension 2"),
+            std::string::npos);
 }
 
 TEST(Medit, MalformedFilesNameTheFileTheLineAndTheKeyword) {

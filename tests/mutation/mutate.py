@@ -336,6 +336,9 @@ class Campaign:
         original = path.read_bytes()
         self.backup.write_text(json.dumps({"file": m.file, "text": original.decode("latin-1")}))
         lines = original.decode().split("\n")
+        if lines[m.line - 1] != m.before:  # a file left mutated by a killed run would make a no-op mutant
+            self.backup.unlink()
+            raise RuntimeError(f"{m.file}:{m.line} is not the line the mutant was made from: restore the sources first")
         lines[m.line - 1] = m.after
         path.write_text("\n".join(lines))
         try:
@@ -386,6 +389,8 @@ def main():
         print(f"mutate: --shard {a.shard}: expected I/N with 0 <= I < N", file=sys.stderr)
         return 2
     shard, shards = int(m.group(1)), int(m.group(2))
+    c = Campaign(a)
+    c.restore_interrupted()  # before the selection: it reads the sources
     try:
         chosen = listed(a.mutants) if a.mutants else select(folders, a.count, a.seed, a.headers)
     except (OSError, ValueError, KeyError) as e:
@@ -402,8 +407,6 @@ def main():
 
     signal.signal(signal.SIGINT, interrupted)  # also when started in the background, where it is ignored
     signal.signal(signal.SIGTERM, interrupted)
-    c = Campaign(a)
-    c.restore_interrupted()
     c.configure()
     print(f"mutate: building {c.build.name} and running the unmutated suite", file=sys.stderr)
     if c.build_all(7200) != 0:
