@@ -20,6 +20,7 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <map>
 #include <set>
 
 namespace {
@@ -194,6 +195,55 @@ TEST(StarSet, NewSiteInOneCircumcircleUpdatesTheFanInPlace) {
   EXPECT_EQ(fan, (std::set<std::array<int, 2>>{{0, 1}, {1, 2}, {2, k}, {k, 3}, {3, 0}}));
   // The stars k does not reach are left as they are.
   EXPECT_EQ(stars.update(0, k), refiners::star::StarSet::Update::unchanged);
+}
+
+// S_v is wrapped from v's M-nearest site, decided exactly among the sites whose double distances
+// tie to 10⁻¹⁰ (star_set.cpp): with M = I, v = (1/2, 1/2), a = v + (1/8, 0) and b = v + (0, 1/8 +
+// 2⁻⁴⁵), |vb|² − |va|² = 2⁻⁴⁶ + 2⁻⁹⁰ is a relative 4.5·10⁻¹³ of |va|² = 1/64 (by hand): a tie for the
+// doubles, and a is nearer. v's closed fan starts with a triangle (a, ·) whichever order the
+// sites come in (a campaign survivor took the farthest of the near-ties).
+TEST(StarSet, TheFanStartsAtTheExactlyNearestOfNearTies) {
+  const refiners::common::Domain domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  const double a = 0.5 + 0.125, b = 0.5 + 0.125 + std::ldexp(1.0, -45);
+  for (const bool a_first : {true, false}) {
+    std::vector<predicates::Point2<double>> points{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}};
+    points.push_back(a_first ? predicates::Point2<double>{a, 0.5} : predicates::Point2<double>{0.5, b});
+    points.push_back(a_first ? predicates::Point2<double>{0.5, b} : predicates::Point2<double>{a, 0.5});
+    refiners::common::Sites sites = isotropic_sites(domain, points);
+    const refiners::common::Boundary boundary(domain, sites);
+    refiners::star::StarSet stars(domain, sites, boundary);
+    for (std::size_t v = 0; v < points.size(); ++v) stars.add(0);
+    stars.recompute(4);
+    const int nearest = a_first ? 5 : 6;
+    ASSERT_FALSE(stars[4].triangles.empty());
+    EXPECT_EQ(stars[4].triangles.front()[0], nearest) << (a_first ? "a listed first" : "b listed first");
+  }
+}
+
+// Regression (a second reader's input, 2026-12-03): v = (1/2, 1/2) with M = [[1, 1], [1, 1 + 2⁻⁴⁰]]
+// (positive definite, condition about 2⁴²) and three sites within 10⁻⁷ of each other near v. The
+// doubles took site 6 for the M-nearest, which is no Delaunay neighbour, and the wrapping from it
+// wound three times around v: (5,6)(6,7)(7,1)(1,5)(5,7)(7,1)(1,5)(5,7)(7,1). Decided exactly, the
+// fan closes once: each neighbour starts exactly one triangle and ends exactly one.
+TEST(StarSet, TheFirstNeighbourIsNearestExactlyUnderANearlySingularMetric) {
+  const refiners::common::Domain domain({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  refiners::common::Sites sites(domain, fields::make_field("constant", {{"m11", 1}, {"m12", 0}, {"m22", 1}}));
+  for (const predicates::Point2<double> q : std::vector<predicates::Point2<double>>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}) sites.add(q);
+  sites.add({0.5, 0.5}, predicates::Sym2<double>{1.0, 1.0, 1.0 + std::ldexp(1.0, -40)});
+  sites.add({0.49046249392524577, 0.5095375061035156});
+  sites.add({0.4904623985290528, 0.5095376014709472});
+  sites.add({0.4904624938677231, 0.5095375061035156});
+  const refiners::common::Boundary boundary(domain, sites);
+  refiners::star::StarSet stars(domain, sites, boundary);
+  for (int v = 0; v < 8; ++v) stars.add(0);
+  for (int v = 0; v < 8; ++v) stars.recompute(v);
+  const auto& fan = stars[4].triangles;
+  ASSERT_FALSE(fan.empty());
+  std::map<int, int> starts, ends;
+  for (const auto& t : fan) ++starts[t[0]], ++ends[t[1]];
+  for (const auto& [w, n] : starts) EXPECT_EQ(n, 1) << "site " << w << " starts " << n << " triangles of v's fan";
+  EXPECT_EQ(starts.size(), fan.size());
+  for (std::size_t i = 0; i < fan.size(); ++i) EXPECT_EQ(fan[i][1], fan[(i + 1) % fan.size()][0]) << "the fan does not close once";
 }
 
 // Pick_valid's picking region beyond the doubles in one coordinate only (pick_valid.hpp: then the

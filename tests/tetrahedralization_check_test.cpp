@@ -133,8 +133,9 @@ TEST(TetrahedralizationCheck, PinchedEdgesAndVerticesAreNamed) {
   EXPECT_EQ(v.failure_count, 1u) << all(v);
 }
 
-// The declared boundary triangles: the 12 boundary faces, some reversed, pass; one missing, one
-// declared twice and one that is an interior face are each named.
+// The declared triangles: the 12 boundary faces, some reversed, pass; an interior face declared
+// too is an interface between subdomains (counted, as MMG and Gmsh write them); one boundary face
+// missing, one declared twice and three corners that are no face are each named.
 TEST(TetrahedralizationCheck, DeclaredTrianglesMustBeTheBoundaryFaces) {
   Mesh3 m;
   add_cube(m, {0, 0, 0});
@@ -162,10 +163,21 @@ TEST(TetrahedralizationCheck, DeclaredTrianglesMustBeTheBoundaryFaces) {
   m.triangles.pop_back();
   m.triangles.push_back(m.triangles.front());
   m.triangles.push_back(interior);
+  // Three corners of the cube that are no face of its tetrahedra.
+  std::array<int, 3> none{};
+  for (int a = 0; a < 8; ++a)
+    for (int b = a + 1; b < 8; ++b)
+      for (int d = b + 1; d < 8; ++d)
+        if (!std::binary_search(faces.begin(), faces.end(), std::array<int, 3>{a, b, d})) none = {a, b, d};
+  ASSERT_NE(none, (std::array<int, 3>{0, 0, 0}));
+  m.triangles.push_back(none);
   const auto c = check(m);
   EXPECT_FALSE(c.valid);
+  EXPECT_EQ(c.declared_interfaces, 1u) << all(c);
   EXPECT_TRUE(names(c, "is declared twice")) << all(c);
-  EXPECT_TRUE(names(c, "is not a boundary face of the tetrahedra")) << all(c);
+  EXPECT_TRUE(names(c, "(" + std::to_string(none[0]) + ", " + std::to_string(none[1]) + ", " + std::to_string(none[2]) +
+                           ") is not a face of the tetrahedra"))
+      << all(c);
   std::array<int, 3> sorted = missing;
   std::sort(sorted.begin(), sorted.end());
   EXPECT_TRUE(names(c, "the boundary face (" + std::to_string(sorted[0]) + ", " + std::to_string(sorted[1]) + ", " +

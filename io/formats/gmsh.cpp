@@ -3,8 +3,10 @@
 // manual is silent, gmsh 4.8.4's own files decide (tests/formats/peers/gmsh): a binary file keeps
 // its section names and the $MeshFormat and $NodeData headers as text lines, and a binary
 // $NodeData record starts with an int node tag.
-// Beyond gmsh.hpp's summary: triangles get their reference as edges do (triangle_refs); the
-// metric is the first $NodeData view with 1, 3 or 9 components (other views are skipped); the
+// Beyond gmsh.hpp's summary: triangles get their reference as edges do (triangle_refs); with
+// 4-node tetrahedra (type 4) the mesh is tetrahedral (issue 39), its triangles the declared
+// boundary and interface faces, otherwise every z must be 0; the metric is the first $NodeData
+// view with 1, 3 or 9 components (1 or 9 for tetrahedra; other views are skipped); the
 // lines of a partitioned mesh that lie on a partition interface are no boundary and are skipped;
 // the writer puts the triangles of each distinct reference on a surface of their own.
 #include "io/formats/gmsh.hpp"
@@ -27,6 +29,7 @@ namespace {
 namespace gmsh_format {  // io/ is one unity-build unit: these names stay apart from the other formats'
 
 using Metric = predicates::Sym2<Rational>;
+using Metric3 = predicates::Sym3<Rational>;
 
 bool blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
 
@@ -236,7 +239,11 @@ struct Reading {
   std::unordered_map<std::uint64_t, int> site_of;   // node tag -> site
   std::map<std::pair<int, int>, Entity> entities;  // by (dim, tag), from $Entities and $PartitionedEntities
   bool elements_read = false;
+  std::vector<Rational> z;                          // per site
+  std::vector<std::array<int, 4>> tetrahedra;       // type 4: then the mesh is tetrahedral
+  std::vector<int> tetrahedron_refs;
   std::optional<std::vector<Metric>> metrics;       // from the first $NodeData view that is a metric
+  std::optional<std::vector<Metric3>> metrics3;     // the same for a tetrahedral mesh (known from $Elements)
   std::uint64_t reserve_cap;                        // a count from the file reserves no more (8 bytes a node at least)
 };
 
@@ -254,13 +261,12 @@ void add_node(Input& in, Reading& r, std::uint64_t tag) {
   r.tags.push_back(tag);
 }
 
-// A node's x y z: the mesh must be planar, every z exactly 0.
+// A node's x y z (z must be 0 unless the mesh has tetrahedra: decided at the end).
 void add_point(Input& in, Reading& r, std::uint64_t tag) {
   const std::string node = node_name(static_cast<std::int64_t>(tag));
   Rational x = in.real("the x of " + node);
   Rational y = in.real("the y of " + node);
-  const Rational z = in.real("the z of " + node);
-  if (z != 0) in.fail(node + " has z = " + exact_excerpt(z) + ": the mesh must be planar (every z exactly 0)");
+  r.z.push_back(in.real("the z of " + node));
   r.f.mesh.sites.push_back({std::move(x), std::move(y)});
 }
 
@@ -316,38 +322,50 @@ int site_of(Input& in, const Reading& r, std::uint64_t element, std::uint64_t no
   return it->second;
 }
 
-// The surface elements of § "elm-type" other than the 3-node triangle: a mesh holding one is not a
-// mesh of linear triangles, and skipping it would leave a hole the certifier would blame on the mesh.
-const char* other_surface_element(std::int32_t type) {
+// The surface and volume elements of § "elm-type" other than the 3-node triangle and the 4-node
+// tetrahedron: a mesh holding one is not a mesh of linear simplices, and skipping it would leave a
+// hole the certifier would blame on the mesh.
+const char* other_element(std::int32_t type) {
   switch (type) {
     case 3: return "a 4-node quadrangle";
+    case 5: return "an 8-node hexahedron";
+    case 6: return "a 6-node prism";
+    case 7: return "a 5-node pyramid";
     case 9: return "a 6-node (second-order) triangle";
     case 10: return "a 9-node quadrangle";
+    case 11: return "a 10-node (second-order) tetrahedron";
+    case 12: case 17: case 92: case 93: return "a higher-order hexahedron";
+    case 13: case 18: return "a higher-order prism";
+    case 14: case 19: return "a higher-order pyramid";
     case 16: return "an 8-node quadrangle";
     case 20: case 21: case 22: case 23: case 24: case 25: return "a higher-order triangle";
+    case 29: case 30: case 31: return "a higher-order tetrahedron";
     default: return nullptr;
   }
 }
 
-// An element's node tags, after its tag: a 2-node line (type 1: a boundary edge) or a 3-node
-// triangle (type 2) is kept with its reference; another surface element is refused; any other
-// type is skipped.
+// An element's node tags, after its tag: a 2-node line (type 1: a boundary edge), a 3-node
+// triangle (type 2) or a 4-node tetrahedron (type 4) is kept with its reference; another surface
+// or volume element is refused; any other type (a point) is skipped.
 void read_element(Input& in, Reading& r, std::uint64_t tag, std::int32_t type, int ref) {
-  if (const char* other = other_surface_element(type))
+  if (const char* other = other_element(type))
     in.fail("element " + std::to_string(tag) + " is " + other + " (type " + std::to_string(type) +
-            "): anisocert certifies meshes of 3-node triangles only");
-  if (type != 1 && type != 2) return in.skip_element(type, tag);
-  const int k = type == 1 ? 2 : 3;
-  std::array<int, 3> v{};
+            "): anisocert certifies meshes of 3-node triangles or 4-node tetrahedra only");
+  if (type != 1 && type != 2 && type != 4) return in.skip_element(type, tag);
+  const int k = type == 1 ? 2 : type == 2 ? 3 : 4;
+  std::array<int, 4> v{};
   for (int j = 0; j < k; ++j) v[j] = site_of(in, r, tag, in.size("a node tag of element " + std::to_string(tag)));
   in.end_record("element " + std::to_string(tag) + " (type " + std::to_string(type) + ") needs exactly " + std::to_string(k) +
                 " node tags on its line");
   if (type == 1) {
     r.f.mesh.edges.emplace_back(v[0], v[1]);
     r.f.edge_refs.push_back(ref);
-  } else {
-    r.f.mesh.triangles.push_back(v);
+  } else if (type == 2) {
+    r.f.mesh.triangles.push_back({v[0], v[1], v[2]});
     r.f.triangle_refs.push_back(ref);
+  } else {
+    r.tetrahedra.push_back(v);
+    r.tetrahedron_refs.push_back(ref);
   }
 }
 
@@ -487,27 +505,47 @@ std::string values_text(const std::vector<Rational>& v) {
   return "[" + t + "]";
 }
 
-// The metric of a node from its values: a size h > 0 (I/h², metric_of_size), m11 m12 m22, or a
-// 3×3 tensor row by row, symmetric exactly, whose z row and column the planar mesh ignores.
-Metric metric_of(Input& in, const std::string& node, const std::vector<Rational>& v) {
-  if (v.size() == 1) {
-    if (v[0] <= 0) in.fail("the size of " + node + " is " + exact_excerpt(v[0]) + ", not positive");
-    return metric_of_size(v[0]);
-  }
-  if (v.size() == 3) return {v[0], v[1], v[2]};
+// A 9-component tensor row by row must be symmetric exactly.
+void check_symmetric(Input& in, const std::string& node, const std::vector<Rational>& v) {
   for (const auto& [i, j] : {std::pair<std::size_t, std::size_t>{1, 3}, {2, 6}, {5, 7}})  // m12 m21, m13 m31, m23 m32
     if (v[i] != v[j])
       in.fail("the tensor of " + node + ", " + values_text(v) + ", is not symmetric: value " + std::to_string(i + 1) +
               " is " + exact_excerpt(v[i]) + " but value " + std::to_string(j + 1) + " is " + exact_excerpt(v[j]));
+}
+
+Rational size_of(Input& in, const std::string& node, const Rational& h) {
+  if (h <= 0) in.fail("the size of " + node + " is " + exact_excerpt(h) + ", not positive");
+  return h;
+}
+
+// The metric of a node of a triangle mesh from its values: a size h > 0 (I/h², metric_of_size),
+// m11 m12 m22, or a 3×3 tensor row by row, symmetric exactly, whose z row and column the planar
+// mesh ignores.
+Metric metric_of(Input& in, const std::string& node, const std::vector<Rational>& v) {
+  if (v.size() == 1) return metric_of_size(size_of(in, node, v[0]));
+  if (v.size() == 3) return {v[0], v[1], v[2]};
+  check_symmetric(in, node, v);
   return {v[0], v[1], v[4]};
 }
 
-// § $NodeData: the metric is the first view with 1, 3 or 9 components; each record is nodeTag
-// value ..., and every node must have exactly one. Other views are skipped.
-void read_node_data(Input& in, Reading& r) {
-  const DataHeader h = read_data_header(in);
-  if (r.metrics || (h.components != 1 && h.components != 3 && h.components != 9)) return skip_data(in, h, false);
-  std::vector<std::optional<Metric>> of_site(r.tags.size());
+// The metric of a node of a tetrahedral mesh: a size h > 0 (I/h²) or a 3×3 tensor row by row,
+// symmetric exactly.
+Metric3 metric3_of(Input& in, const std::string& node, const std::vector<Rational>& v) {
+  if (v.size() == 1) return metric3_of_size(size_of(in, node, v[0]));
+  check_symmetric(in, node, v);
+  return {v[0], v[1], v[2], v[4], v[5], v[8]};
+}
+
+std::vector<Rational> entries(const Metric& m) { return {m.m11, m.m12, m.m22}; }
+std::vector<Rational> entries(const Metric3& m) { return {m.m11, m.m12, m.m13, m.m22, m.m23, m.m33}; }
+const char* entry_names(const Metric&) { return "[m11, m12, m22]"; }
+const char* entry_names(const Metric3&) { return "[m11, m12, m13, m22, m23, m33]"; }
+
+// One metric view's records: nodeTag value ..., every node exactly one, each metric positive
+// definite (exactly: Sylvester's minors).
+template <class M, class Of>
+std::vector<M> read_metric_view(Input& in, const Reading& r, const DataHeader& h, Of&& of) {
+  std::vector<std::optional<M>> of_site(r.tags.size());
   std::vector<Rational> v(static_cast<std::size_t>(h.components));
   for (std::int64_t i = 0; i < h.count; ++i) {
     const std::int64_t tag =
@@ -515,21 +553,35 @@ void read_node_data(Input& in, Reading& r) {
     const std::string node = node_name(tag);
     const auto site = tag > 0 ? r.site_of.find(static_cast<std::uint64_t>(tag)) : r.site_of.end();
     if (site == r.site_of.end()) in.fail("the view gives a value to " + node + ", which is not in $Nodes");
-    std::optional<Metric>& m = of_site[static_cast<std::size_t>(site->second)];
+    std::optional<M>& m = of_site[static_cast<std::size_t>(site->second)];
     if (m) in.fail(node + " has two values");
     for (std::size_t c = 0; c < v.size(); ++c) v[c] = in.real("value " + std::to_string(c + 1) + " of " + node);
-    m = metric_of(in, node, v);
+    m = of(in, node, v);
     if (!positive_definite(*m))
-      in.fail("the metric of " + node + ", [m11, m12, m22] = " + values_text({m->m11, m->m12, m->m22}) + " (from " +
-              values_text(v) + "), is not positive definite");
+      in.fail("the metric of " + node + ", " + entry_names(*m) + " = " + values_text(entries(*m)) + " (from " + values_text(v) +
+              "), is not positive definite");
   }
-  r.metrics.emplace();
+  std::vector<M> out;
+  out.reserve(of_site.size());
   for (std::size_t s = 0; s < of_site.size(); ++s) {
     if (!of_site[s])
       in.fail(node_name(static_cast<std::int64_t>(r.tags[s])) + " has no value: the view has " + std::to_string(h.count) +
               " values for " + std::to_string(of_site.size()) + " nodes");
-    r.metrics->push_back(std::move(*of_site[s]));
+    out.push_back(std::move(*of_site[s]));
   }
+  return out;
+}
+
+// § $NodeData: the metric is the first view with 1, 3 or 9 components (a tetrahedral mesh: 1 or
+// 9; its tetrahedra are known, $Elements coming before $NodeData in what gmsh writes). Other views
+// are skipped.
+void read_node_data(Input& in, Reading& r) {
+  const DataHeader h = read_data_header(in);
+  const bool three = !r.tetrahedra.empty();
+  const bool metric = h.components == 1 || h.components == 9 || (!three && h.components == 3);
+  if (r.metrics || r.metrics3 || !metric) return skip_data(in, h, false);
+  if (three) r.metrics3 = read_metric_view<Metric3>(in, r, h, metric3_of);
+  else r.metrics = read_metric_view<Metric>(in, r, h, metric_of);
 }
 
 // 4.1 § $Periodic: numPeriodicLinks; each entityDim entityTag entityTagMaster, numAffine value
@@ -650,6 +702,25 @@ MeshFile read(std::string_view bytes, const std::string& source) {
   Reading r(bytes.size());
   read_sections(in, source, format.version, r);
   r.f.vertex_refs.assign(r.f.mesh.sites.size(), 0);
+  if (!r.tetrahedra.empty()) {  // a tetrahedral mesh: its triangles are the declared boundary (or interface) faces
+    if (r.metrics) throw InputError(source + ": the metric view comes before the tetrahedra of $Elements, and was read as 2D");
+    MeshFile& f = r.f;
+    f.dimension = 3;
+    f.mesh3.vertices.reserve(f.mesh.sites.size());
+    for (std::size_t i = 0; i < f.mesh.sites.size(); ++i)
+      f.mesh3.vertices.push_back({std::move(f.mesh.sites[i].x), std::move(f.mesh.sites[i].y), std::move(r.z[i])});
+    f.mesh.sites.clear();
+    f.mesh3.tetrahedra = std::move(r.tetrahedra);
+    f.tetrahedron_refs = std::move(r.tetrahedron_refs);
+    f.mesh3.triangles = std::move(f.mesh.triangles);
+    f.mesh.triangles.clear();
+    if (r.metrics3) attach_metrics(f, std::move(*r.metrics3), source);
+    return std::move(r.f);
+  }
+  for (std::size_t i = 0; i < r.z.size(); ++i)
+    if (r.z[i] != 0)
+      throw InputError(source + ": " + node_name(static_cast<std::int64_t>(r.tags[i])) + " has z = " + exact_excerpt(r.z[i]) +
+                       ", and there is no tetrahedron: the mesh must be planar (every z exactly 0) or tetrahedral");
   if (r.metrics) attach_metrics(r.f, std::move(*r.metrics), source);
   return std::move(r.f);
 }
@@ -698,24 +769,41 @@ std::map<int, std::int32_t> entities_of(const std::vector<int>& refs, std::size_
   return entities;
 }
 
-// § $Entities: one curve per edge reference, one surface per triangle reference (one surface,
-// that holds the nodes, when there is no triangle), the reference as the entity's physical tag
-// (none for 0); no points, no bounding entities; each entity's box is the mesh's.
-void write_entities(Output& out, const geometry::Mesh<Rational>& mesh, const std::map<int, std::int32_t>& curves,
-                    const std::map<int, std::int32_t>& surfaces) {
+// What the writer puts in the file, the same for a triangle mesh and a tetrahedral one: the
+// nodes' x y z (z = 0 in 2D), the lines, triangles and tetrahedra with their references.
+struct Shape {
+  std::vector<std::array<Rational, 3>> points;
+  const std::vector<std::array<int, 3>>* triangles;
+  const std::vector<std::array<int, 4>>* tetrahedra;  // empty for a triangle mesh
+};
+
+Shape shape_of(const MeshFile& m) {
+  Shape s{{}, m.dimension == 3 ? &m.mesh3.triangles : &m.mesh.triangles, &m.mesh3.tetrahedra};
+  if (m.dimension == 3)
+    for (const auto& p : m.mesh3.vertices) s.points.push_back({p.x, p.y, p.z});
+  else
+    for (const auto& p : m.mesh.sites) s.points.push_back({p.x, p.y, Rational(0)});
+  return s;
+}
+
+// § $Entities: one curve per edge reference, one surface per triangle reference, one volume per
+// tetrahedron reference (one surface or volume, that holds the nodes, when there is no element
+// of the mesh's dimension), the reference as the entity's physical tag (none for 0); no points,
+// no bounding entities; each entity's box is the mesh's.
+void write_entities(Output& out, const Shape& shape, const std::array<std::map<int, std::int32_t>, 3>& entities) {
   std::array<Rational, 6> box{};  // minX minY minZ maxX maxY maxZ
-  for (std::size_t i = 0; i < mesh.sites.size(); ++i) {
-    const auto& p = mesh.sites[i];
-    box[0] = i == 0 ? p.x : std::min(box[0], p.x);
-    box[1] = i == 0 ? p.y : std::min(box[1], p.y);
-    box[3] = i == 0 ? p.x : std::max(box[3], p.x);
-    box[4] = i == 0 ? p.y : std::max(box[4], p.y);
-  }
+  for (std::size_t i = 0; i < shape.points.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const Rational& q = shape.points[i][c];
+      box[c] = i == 0 ? q : std::min(box[c], q);
+      box[c + 3] = i == 0 ? q : std::max(box[c + 3], q);
+    }
   out.begin("Entities");
-  for (std::size_t count : {std::size_t{0}, curves.size(), surfaces.size(), std::size_t{0}}) out.size(count);
+  out.size(0);
+  for (const auto& e : entities) out.size(e.size());
   out.end_record();
-  for (const auto* entities : {&curves, &surfaces})
-    for (const auto& [ref, tag] : *entities) {
+  for (const auto& e : entities)
+    for (const auto& [ref, tag] : e) {
       out.int32(tag);
       for (const Rational& q : box) out.real(q, "a coordinate of the bounding box");
       out.size(ref == 0 ? 0 : 1);
@@ -726,24 +814,22 @@ void write_entities(Output& out, const geometry::Mesh<Rational>& mesh, const std
   out.end("Entities");
 }
 
-// § $Nodes: one block, on the first surface; site i is node i + 1.
-void write_nodes(Output& out, const geometry::Mesh<Rational>& mesh, std::int32_t surface) {
-  const std::uint64_t n = mesh.sites.size();
+// § $Nodes: one block, on the first entity of the mesh's dimension; site i is node i + 1.
+void write_nodes(Output& out, const Shape& shape, std::int32_t dim, std::int32_t entity) {
+  const std::uint64_t n = shape.points.size();
   out.begin("Nodes");
   for (std::uint64_t v : {std::uint64_t{1}, n, std::uint64_t{n > 0}, n}) out.size(v);
   out.end_record();
-  for (std::int32_t v : {2, surface, 0}) out.int32(v);
+  for (std::int32_t v : {dim, entity, 0}) out.int32(v);
   out.size(n);
   out.end_record();
   for (std::uint64_t i = 1; i <= n; ++i) {
     out.size(i);
     out.end_record();
   }
-  for (std::size_t i = 0; i < mesh.sites.size(); ++i) {
+  for (std::size_t i = 0; i < shape.points.size(); ++i) {
     const std::string what = "a coordinate of site " + std::to_string(i);
-    out.real(mesh.sites[i].x, what);
-    out.real(mesh.sites[i].y, what);
-    out.real(0, what);
+    for (const Rational& q : shape.points[i]) out.real(q, what);
     out.end_record();
   }
   out.end("Nodes");
@@ -751,7 +837,7 @@ void write_nodes(Output& out, const geometry::Mesh<Rational>& mesh, std::int32_t
 
 // A block of § $Elements: consecutive elements with one reference (the file keeps their order).
 struct Block {
-  std::int32_t dim, entity;  // dim 1: lines (elementType 1) on a curve; 2: triangles (type 2) on a surface
+  std::int32_t dim, entity;  // 1: lines (elementType 1); 2: triangles (type 2); 3: tetrahedra (type 4)
   std::size_t first, count;
 };
 
@@ -765,45 +851,52 @@ std::vector<Block> blocks_of(std::int32_t dim, const std::vector<int>& refs, std
   return blocks;
 }
 
-// § $Elements: the edges as 2-node lines on their curves, then the triangles on their surfaces;
-// element tags 1, 2, ... in that order.
-void write_elements(Output& out, const MeshFile& m, const std::map<int, std::int32_t>& curves,
-                    const std::map<int, std::int32_t>& surfaces) {
-  std::vector<Block> blocks = blocks_of(1, m.edge_refs, m.mesh.edges.size(), curves);
-  for (const Block& b : blocks_of(2, m.triangle_refs, m.mesh.triangles.size(), surfaces)) blocks.push_back(b);
-  const std::uint64_t total = m.mesh.edges.size() + m.mesh.triangles.size();
+// § $Elements: the edges as 2-node lines on their curves, the triangles on their surfaces, the
+// tetrahedra in their volumes; element tags 1, 2, ... in that order.
+void write_elements(Output& out, const MeshFile& m, const Shape& shape, const std::array<std::map<int, std::int32_t>, 3>& entities) {
+  std::vector<Block> blocks = blocks_of(1, m.edge_refs, m.mesh.edges.size(), entities[0]);
+  for (const Block& b : blocks_of(2, m.triangle_refs, shape.triangles->size(), entities[1])) blocks.push_back(b);
+  for (const Block& b : blocks_of(3, m.tetrahedron_refs, shape.tetrahedra->size(), entities[2])) blocks.push_back(b);
+  const std::uint64_t total = m.mesh.edges.size() + shape.triangles->size() + shape.tetrahedra->size();
   out.begin("Elements");
   for (std::uint64_t v : {std::uint64_t{blocks.size()}, total, std::uint64_t{total > 0}, total}) out.size(v);
   out.end_record();
   std::uint64_t tag = 0;
+  const auto node = [&](int v) { out.size(static_cast<std::uint64_t>(v) + 1); };
   for (const Block& b : blocks) {
-    for (std::int32_t v : {b.dim, b.entity, b.dim}) out.int32(v);  // the elementType is the dimension here
+    for (std::int32_t v : {b.dim, b.entity, b.dim == 3 ? 4 : b.dim}) out.int32(v);
     out.size(b.count);
     out.end_record();
     for (std::size_t i = b.first; i < b.first + b.count; ++i) {
       out.size(++tag);
-      if (b.dim == 1) {
-        for (int v : {m.mesh.edges[i].first, m.mesh.edges[i].second}) out.size(static_cast<std::uint64_t>(v) + 1);
-      } else {
-        for (int v : m.mesh.triangles[i]) out.size(static_cast<std::uint64_t>(v) + 1);
-      }
+      if (b.dim == 1) node(m.mesh.edges[i].first), node(m.mesh.edges[i].second);
+      else if (b.dim == 2) std::for_each((*shape.triangles)[i].begin(), (*shape.triangles)[i].end(), node);
+      else std::for_each((*shape.tetrahedra)[i].begin(), (*shape.tetrahedra)[i].end(), node);
       out.end_record();
     }
   }
   out.end("Elements");
 }
 
-// § $NodeData: one view "metric", time 0, step 0, 9 components — m11 m12 0 m12 m22 0 0 0 1 — for
-// each node (its tag an int in binary).
-void write_metrics(Output& out, const std::vector<Metric>& metrics) {
+// A node's nine values, row by row: 2D m11 m12 0 m12 m22 0 0 0 1; 3D the full tensor.
+std::array<const Rational*, 9> nine(const Metric& M) {
+  static const Rational zero = 0, one = 1;
+  return {&M.m11, &M.m12, &zero, &M.m12, &M.m22, &zero, &zero, &zero, &one};
+}
+std::array<const Rational*, 9> nine(const Metric3& M) {
+  return {&M.m11, &M.m12, &M.m13, &M.m12, &M.m22, &M.m23, &M.m13, &M.m23, &M.m33};
+}
+
+// § $NodeData: one view "metric", time 0, step 0, 9 components for each node (its tag an int in
+// binary).
+template <class M>
+void write_metrics(Output& out, const std::vector<M>& metrics) {
   out.begin("NodeData");
   out.text("1\n\"metric\"\n1\n0\n3\n0\n9\n" + std::to_string(metrics.size()) + "\n");
-  const Rational zero = 0, one = 1;
   for (std::size_t i = 0; i < metrics.size(); ++i) {
-    const Metric& M = metrics[i];
     const std::string what = "the metric of site " + std::to_string(i);
     out.int32(static_cast<std::int32_t>(i + 1));
-    for (const Rational* q : {&M.m11, &M.m12, &zero, &M.m12, &M.m22, &zero, &zero, &zero, &one}) out.real(*q, what);
+    for (const Rational* q : nine(metrics[i])) out.real(*q, what);
     out.end_record();
   }
   out.end("NodeData");
@@ -812,21 +905,25 @@ void write_metrics(Output& out, const std::vector<Metric>& metrics) {
 // § MSH file format: $MeshFormat (4.1), $Entities, $Nodes, $Elements, and $NodeData when the mesh
 // has metrics.
 std::string write(const MeshFile& m, bool binary) {
-  const auto& mesh = m.mesh;
-  if (!mesh.metrics.empty() && mesh.metrics.size() != mesh.sites.size())
-    throw InputError("Gmsh: " + std::to_string(mesh.metrics.size()) + " metrics for a mesh of " +
-                     std::to_string(mesh.sites.size()) + " vertices");
+  const Shape shape = shape_of(m);
+  const std::size_t metrics = m.dimension == 3 ? m.mesh3.metrics.size() : m.mesh.metrics.size();
+  if (metrics != 0 && metrics != shape.points.size())
+    throw InputError("Gmsh: " + std::to_string(metrics) + " metrics for a mesh of " + std::to_string(shape.points.size()) +
+                     " vertices");
   Output out(binary);
   out.text(out.binary() ? "$MeshFormat\n4.1 1 8\n" : "$MeshFormat\n4.1 0 8\n");
   if (out.binary()) out.int32(1);  // § $MeshFormat: the int 1, that gives the byte order
   out.end("MeshFormat");
-  const auto curves = entities_of(m.edge_refs, mesh.edges.size());
-  auto surfaces = entities_of(m.triangle_refs, mesh.triangles.size());
-  if (surfaces.empty()) surfaces.emplace(0, 1);
-  write_entities(out, mesh, curves, surfaces);
-  write_nodes(out, mesh, surfaces.begin()->second);
-  write_elements(out, m, curves, surfaces);
-  if (!mesh.metrics.empty()) write_metrics(out, mesh.metrics);
+  std::array<std::map<int, std::int32_t>, 3> entities{entities_of(m.edge_refs, m.mesh.edges.size()),
+                                                      entities_of(m.triangle_refs, shape.triangles->size()),
+                                                      entities_of(m.tetrahedron_refs, shape.tetrahedra->size())};
+  const std::size_t top = m.dimension == 3 ? 2 : 1;  // the entities of the mesh's dimension, which hold the nodes
+  if (entities[top].empty()) entities[top].emplace(0, 1);
+  write_entities(out, shape, entities);
+  write_nodes(out, shape, static_cast<std::int32_t>(top + 1), entities[top].begin()->second);
+  write_elements(out, m, shape, entities);
+  if (m.dimension == 3 && metrics != 0) write_metrics(out, m.mesh3.metrics);
+  if (m.dimension != 3 && metrics != 0) write_metrics(out, m.mesh.metrics);
   return std::move(out).str();
 }
 
@@ -847,9 +944,6 @@ std::string gmsh_text(const MeshFile& m, GmshEncoding encoding) {
   return gmsh_format::write(m, encoding == GmshEncoding::binary);
 }
 
-std::vector<FileText> write_gmsh_file(const MeshFile& m, const std::string& path) {
-  require_triangle_mesh(m, "Gmsh .msh");
-  return {{path, gmsh_text(m)}};
-}
+std::vector<FileText> write_gmsh_file(const MeshFile& m, const std::string& path) { return {{path, gmsh_text(m)}}; }
 
 }  // namespace anisocert::io

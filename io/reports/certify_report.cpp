@@ -113,10 +113,14 @@ void add_validity3(const oracle::Certify3Report& r, CertifyVerdict& v) {
       t.orientation.empty() ? "" : ", " + t.orientation + " orientation" + (t.orientation == "positive" ? " (Medit's)" : "");
   v.checks.push_back({"valid", "valid (tetrahedra on opposite sides of each inner face, a closed 2-manifold boundary; not checked: that it does not cross itself)", "valid",
                       r.valid_holds(), true,
-                      more + " (" + std::to_string(t.boundary_faces) + " boundary faces" + orientation + ")", "",
+                      more + " (" + std::to_string(t.boundary_faces) + " boundary faces" +
+                          (t.declared_interfaces ? ", " + std::to_string(t.declared_interfaces) + " declared interface triangles" : "") +
+                          orientation + ")",
+                      "",
                       {texts(t.failures, t.failure_count)},
                       {{"holds", r.valid_holds()}, {"checks_run", t.checks_run}, {"orientation", t.orientation},
-                       {"boundary_faces", t.boundary_faces}, {"interior_faces", t.interior_faces}, {"failure_count", t.failure_count},
+                       {"boundary_faces", t.boundary_faces}, {"interior_faces", t.interior_faces},
+                       {"declared_interfaces", t.declared_interfaces}, {"failure_count", t.failure_count},
                        {"bad_tetrahedron_count", t.bad_tetrahedra.size()}}});
 }
 

@@ -91,6 +91,7 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
             [](const Face& x, const Face& y) { return std::tie(x.sorted, x.tetrahedron) < std::tie(y.sorted, y.tetrahedron); });
   std::vector<Triple> boundary;  // outward
   std::vector<int> boundary_tetrahedron;
+  std::vector<Triple> interior;  // sorted triples, in order
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i + 1;
     while (j < faces.size() && faces[j].sorted == faces[i].sorted) ++j;
@@ -98,6 +99,7 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
       boundary.push_back(faces[i].outward), boundary_tetrahedron.push_back(faces[i].tetrahedron);
     } else if (j - i == 2) {
       ++r.interior_faces;
+      interior.push_back(faces[i].sorted);
       if (faces[i].even == faces[i + 1].even) {
         r.fail("face " + triple_text(faces[i].sorted) + " is in tetrahedra " + std::to_string(faces[i].tetrahedron) + " and " +
                std::to_string(faces[i + 1].tetrahedron) + ", which lie on the same side of it (they overlap)");
@@ -187,7 +189,7 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
 
   const auto& declared = m.mesh.triangles;
   if (!declared.empty()) {
-    r.checks_run.push_back("the declared boundary triangles are exactly the boundary faces");
+    r.checks_run.push_back("every boundary face is declared, every declared triangle a face (interior: an interface), once");
     std::vector<std::pair<Triple, int>> d, b;
     for (std::size_t k = 0; k < declared.size(); ++k) {
       Triple s = declared[k];
@@ -204,8 +206,12 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
     while (i < d.size() || j < b.size()) {
       if (j == b.size() || (i < d.size() && d[i].first < b[j].first)) {
         const bool repeated = i > 0 && d[i - 1].first == d[i].first;
-        r.fail("declared triangle " + std::to_string(d[i].second) + " " + triple_text(declared[static_cast<std::size_t>(d[i].second)]) +
-               (repeated ? " is declared twice" : " is not a boundary face of the tetrahedra"));
+        const bool interface = !repeated && std::binary_search(interior.begin(), interior.end(), d[i].first);
+        if (interface)
+          ++r.declared_interfaces;
+        else
+          r.fail("declared triangle " + std::to_string(d[i].second) + " " + triple_text(declared[static_cast<std::size_t>(d[i].second)]) +
+                 (repeated ? " is declared twice" : " is not a face of the tetrahedra"));
         ++i;
       } else if (i == d.size() || b[j].first < d[i].first) {
         r.fail("the boundary face " + triple_text(b[j].first) + " of tetrahedron " + std::to_string(b[j].second) +

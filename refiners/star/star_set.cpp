@@ -9,12 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace anisocert::refiners::star {
 namespace {
-
-constexpr double inf = std::numeric_limits<double>::infinity();
 
 // The search for S_v's candidates (floating-point boxes; every decision on the candidates is an
 // exact predicate). A candidate set that misses a Delaunay neighbour would make S_v wrong. The
@@ -33,9 +30,6 @@ constexpr double reach_margin = 1.0001;
 //  - the search radius grows fourfold (in M-distance²) until the fan fits and is complete, up to
 //    four times Ω's squared M-diameter, beyond which no site lies.
 constexpr double reach_growth = 4;
-// The first neighbour is the M-nearest candidate: by doubles, and by the exact comparison among
-// the candidates whose double distances are within 10⁻¹⁰ (relative) of the least.
-constexpr double near_tie = 1 + 1e-10;
 
 // Folds one triangle of S_v, with circumellipse c in M = M_v, into the star's reach (the M-distance
 // from v to the far side of c, squared; returned unsquared) and its conflict zone's box.
@@ -124,14 +118,13 @@ void StarSet::recompute(int v) {
       R2 *= reach_growth;
       continue;
     }
-    auto d2 = [&](int c) { return predicates::quadratic_form(M, x[c].x - pv.x, x[c].y - pv.y); };
-    double least = inf;
-    for (int c : cand) least = std::min(least, d2(c));
+    // The first neighbour is the M-nearest candidate, decided exactly (a nearest site is a Delaunay
+    // neighbour: the circle on the segment to it as diameter holds no site). Chosen by doubles,
+    // even within 10⁻¹⁰, a metric of condition 2⁴⁰ made it a site that is none, and the fan wound
+    // three times around v (tests/refiner_star_test.cpp, found by a second reader).
     int first = -1;
     for (int c : cand)
-      if (d2(c) <= least * near_tie &&
-          (first < 0 || predicates::compare_scaled_lengths(1.0, pv, x[c], M, pv, x[first], M) == Sign::negative))
-        first = c;
+      if (first < 0 || predicates::compare_scaled_lengths(1.0, pv, x[c], M, pv, x[first], M) == Sign::negative) first = c;
     std::vector<int>& ring = ring_;
     ring.assign(1, first);
     bool closed = false;

@@ -66,7 +66,7 @@ TEST(Gmsh, RecognizesItsFileByTheFirstToken) {
   EXPECT_FALSE(looks_like_gmsh(""));
 }
 
-// 2.2: sparse, unordered node tags (10, 3, 7, 20, 99), a point, a tetrahedron, lines with 2 tags,
+// 2.2: sparse, unordered node tags (10, 3, 7, 20, 99), two points, lines with 2 tags,
 // with none and with 3; the first tag is the reference.
 const std::string v22 = R"($MeshFormat
 2.2 0 8
@@ -91,7 +91,7 @@ $Elements
 3 1 0 3 7
 4 2 2 3 1 10 3 7
 5 2 3 3 1 4 10 7 20
-6 4 2 3 1 10 3 7 20
+6 15 2 3 1 20
 7 1 3 8 2 1 20 10
 $EndElements
 )";
@@ -102,7 +102,7 @@ TEST(Gmsh, Reads22WithSparseTagsAndFirstTagReferences) {
   ASSERT_EQ(f.mesh.sites.size(), 5u);
   EXPECT_EQ(f.mesh.sites[3].x, Rational(1, 10));  // "20 0.1 1 0": exactly 1/10
   EXPECT_EQ(f.mesh.sites[4].x, 5);
-  // Tags 10, 3, 7, 20 are sites 0, 1, 2, 3; the point (15) and the tetrahedron (4) are skipped.
+  // Tags 10, 3, 7, 20 are sites 0, 1, 2, 3; the points (type 15) are skipped.
   EXPECT_EQ(f.mesh.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}}));
   EXPECT_EQ(f.triangle_refs, (std::vector<int>{3, 3}));
   EXPECT_EQ(f.mesh.edges, (std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {3, 0}}));
@@ -113,7 +113,7 @@ TEST(Gmsh, Reads22WithSparseTagsAndFirstTagReferences) {
 
 // 4.1: a point, a curve with two physical tags (11 first), a curve without any, a surface with
 // physical tag 4; node blocks on each, the curve's parametric (one u per node); element blocks
-// of points, lines, triangles and a tetrahedron (a volume element: skipped).
+// of points (skipped), lines, triangles and another point.
 const std::string v41 = R"($MeshFormat
 4.1 0 8
 $EndMeshFormat
@@ -152,8 +152,8 @@ $Elements
 4 30 8
 2 2 2 1
 5 40 2 8
-2 2 4 1
-6 40 2 30 8
+0 1 15 1
+6 30
 $EndElements
 )";
 
@@ -299,8 +299,8 @@ class Bytes {
 };
 
 // § MSH file format, 4.1 binary: a curve with physical tag 9 and a surface; nodes 7, 3, 5 at
-// (0.1, 0), (1, 0), (0, 1) — 0.1 the double nearest 1/10; two lines, a tetrahedron (skipped: 4
-// node tags), a triangle; a 3-component $NodeData (tags ints).
+// (0.1, 0), (1, 0), (0, 1) — 0.1 the double nearest 1/10; two lines, a point (skipped: 1 node
+// tag), a triangle; a 3-component $NodeData (tags ints).
 std::string hand_binary(bool big_endian) {
   Bytes b(big_endian);
   b.text("$MeshFormat\n4.1 1 8\n").i32(1).text("\n$EndMeshFormat\n");
@@ -311,7 +311,7 @@ std::string hand_binary(bool big_endian) {
   b.f64(0.1).f64(0).f64(0).f64(1).f64(0).f64(0).f64(0).f64(1).f64(0).text("\n$EndNodes\n");
   b.text("$Elements\n").u64(3).u64(4).u64(1).u64(4);
   b.i32(1).i32(4).i32(1).u64(2).u64(1).u64(7).u64(3).u64(2).u64(3).u64(5);
-  b.i32(2).i32(1).i32(4).u64(1).u64(3).u64(7).u64(3).u64(5).u64(7);
+  b.i32(0).i32(1).i32(15).u64(1).u64(3).u64(7);
   b.i32(2).i32(1).i32(2).u64(1).u64(4).u64(7).u64(3).u64(5).text("\n$EndElements\n");
   b.text("$NodeData\n1\n\"m\"\n1\n0\n3\n0\n3\n3\n");
   b.i32(3).f64(2).f64(0.5).f64(3).i32(5).f64(1).f64(0).f64(1).i32(7).f64(4).f64(-1).f64(1).text("\n$EndNodeData\n");
@@ -341,10 +341,10 @@ TEST(Gmsh, BinaryFailuresNameTheByteAndTheSection) {
   const std::size_t cut = nodes + 32 + 20 + 24 + 32 + 3;
   EXPECT_EQ(error_of(file.substr(0, cut)),
             "t.msh: byte " + std::to_string(cut - 3) + ": in $Nodes: the file ends inside the y of node 3 (8 bytes needed)");
-  // The tetrahedron's type made unknown: its node tags cannot be skipped.
+  // The point's type made unknown: its node tags cannot be skipped.
   std::string unknown = file;
   // After the header (4 sizes) and the line block (3 ints, a size, 2 lines of 3 sizes): the
-  // tetrahedron block's entityDim, entityTag, then its elementType, big-endian 4.
+  // point block's entityDim, entityTag, then its elementType, big-endian 15.
   const std::size_t quad = file.find("$Elements\n") + 10 + 32 + 20 + 2 * 24 + 8;
   unknown[quad + 3] = 100;
   EXPECT_NE(error_of(unknown).find("in $Elements: element 3 has type 100, whose number of nodes the manual does not list"),
@@ -354,6 +354,77 @@ TEST(Gmsh, BinaryFailuresNameTheByteAndTheSection) {
   order[order.find("4.1 1 8\n") + 8] = 2;  // the little-endian int 1 became 2
   EXPECT_EQ(error_of(order),
             "t.msh: byte 20: in $MeshFormat: the int that gives the byte order is 2, not 1 in either byte order");
+}
+
+// Tetrahedra (type 4) make the mesh tetrahedral (issue 39): a 2.2 file of one tetrahedron, its
+// four faces as triangles with physical tag 2, node 4 at z = 1/2 (no longer refused), tags
+// sparse; the metric view's 9 values become the 3×3 metric (m11 m12 m13 m22 m23 m33), a
+// 1-component view I/h², a 3-component view is a vector in 3D and skipped.
+std::string tetrahedron22(const std::string& views) {
+  return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n9 0 0 0.5\n$EndNodes\n"
+         "$Elements\n5\n1 2 2 2 1 1 3 2\n2 2 2 2 1 1 2 9\n3 2 2 2 1 2 3 9\n4 2 2 2 1 3 1 9\n5 4 2 7 1 1 2 3 9\n$EndElements\n" +
+         views;
+}
+
+TEST(Gmsh, TetrahedraMakeATetrahedralMesh) {
+  const MeshFile f = read_gmsh(tetrahedron22(""), "tet.msh");
+  ASSERT_EQ(f.dimension, 3);
+  ASSERT_EQ(f.mesh3.vertices.size(), 4u);
+  EXPECT_EQ(f.mesh3.vertices[3].z, Rational(1, 2));
+  EXPECT_TRUE(f.mesh.sites.empty());
+  EXPECT_EQ(f.mesh3.tetrahedra, (std::vector<std::array<int, 4>>{{0, 1, 2, 3}}));
+  EXPECT_EQ(f.tetrahedron_refs, std::vector<int>{7});
+  EXPECT_EQ(f.mesh3.triangles.size(), 4u);
+  EXPECT_EQ(f.triangle_refs, std::vector<int>(4, 2));
+  EXPECT_TRUE(f.mesh.triangles.empty());
+  const MeshFile m = read_gmsh(tetrahedron22(view(9, {"1 4 1 2 1 5 3 2 3 9", "2 1 0 0 0 1 0 0 0 1", "3 1 0 0 0 1 0 0 0 1",
+                                                      "9 1 0 0 0 1 0 0 0 1"})),
+                               "m.msh");
+  ASSERT_EQ(m.mesh3.metrics.size(), 4u);
+  EXPECT_EQ(m.mesh3.metrics[0], (predicates::Sym3<Rational>{4, 1, 2, 5, 3, 9}));
+  const MeshFile h = read_gmsh(tetrahedron22(view(3, {"1 1 0 0", "2 1 0 0", "3 1 0 0", "9 1 0 0"}) +
+                                             view(1, {"1 0.5", "2 0.5", "3 0.5", "9 0.5"})),
+                               "h.msh");
+  ASSERT_EQ(h.mesh3.metrics.size(), 4u);
+  EXPECT_EQ(h.mesh3.metrics[2], (predicates::Sym3<Rational>{4, 0, 0, 4, 0, 4}));
+  // Refused: a 3D metric with a negative leading minor of order 2 (diag(−1, −1, 1) has det 1);
+  // an asymmetric tensor; a hexahedron; a tetrahedron's fifth node tag.
+  const std::string identity = "2 1 0 0 0 1 0 0 0 1\n3 1 0 0 0 1 0 0 0 1\n9 1 0 0 0 1 0 0 0 1";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {tetrahedron22(view(9, {"1 -1 0 0 0 -1 0 0 0 1", identity})),
+       "in $NodeData: the metric of node 1, [m11, m12, m13, m22, m23, m33] = [-1, 0, 0, -1, 0, 1]"},
+      {tetrahedron22(view(9, {"1 1 0 0.5 0 1 0 0 0 1", identity})), "value 3 is 0.5 but value 7 is 0"},
+      {tetrahedron22("").replace(tetrahedron22("").find("5 4 2 7 1 1 2 3 9"), 17, "5 5 2 7 1 1 2 3 9 1 2 3 9"),
+       "in $Elements: element 5 is an 8-node hexahedron (type 5): anisocert certifies meshes of 3-node triangles or 4-node tetrahedra only"},
+      {tetrahedron22("").replace(tetrahedron22("").find("5 4 2 7 1 1 2 3 9"), 17, "5 4 2 7 1 1 2 3 9 9"),
+       "in $Elements: element 5 (type 4) needs exactly 4 node tags on its line"},
+  };
+  for (const auto& [text, message] : cases) EXPECT_NE(error_of(text).find(message), std::string::npos) << error_of(text);
+  // Without the tetrahedron, z = 1/2 is refused.
+  std::string flat = tetrahedron22("");
+  flat.replace(flat.find("5\n1 2 2"), 1, "4").replace(flat.find("5 4 2 7 1 1 2 3 9\n"), 18, "");
+  EXPECT_NE(error_of(flat).find("node 9 has z = 0.5, and there is no tetrahedron"), std::string::npos) << error_of(flat);
+}
+
+// The writer writes a tetrahedral mesh back (4.1, ASCII and binary): the same vertices, z
+// included, tetrahedra, triangles, references and 3×3 metrics.
+TEST(Gmsh, TetrahedralMeshesAreWrittenBackExactly) {
+  const MeshFile f = read_gmsh(tetrahedron22(view(9, {"1 4 1 2 1 5 3 2 3 9", "2 1 0 0 0 1 0 0 0 1", "3 2 0 0 0 1 0 0 0 1",
+                                                      "9 1 0 0 0 1 0 0 0 0.25"})),
+                               "m.msh");
+  for (const GmshEncoding e : {GmshEncoding::ascii, GmshEncoding::binary}) {
+    const MeshFile g = read_gmsh(gmsh_text(f, e), "again.msh");
+    ASSERT_EQ(g.dimension, 3);
+    EXPECT_EQ(g.mesh3.vertices.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+      EXPECT_EQ(g.mesh3.vertices[i].z, f.mesh3.vertices[i].z);
+      EXPECT_EQ(g.mesh3.metrics[i], f.mesh3.metrics[i]);
+    }
+    EXPECT_EQ(g.mesh3.tetrahedra, f.mesh3.tetrahedra);
+    EXPECT_EQ(g.tetrahedron_refs, f.tetrahedron_refs);
+    EXPECT_EQ(g.mesh3.triangles, f.mesh3.triangles);
+    EXPECT_EQ(g.triangle_refs, f.triangle_refs);
+  }
 }
 
 TEST(Gmsh, HostileCountsFailWithoutAllocating) {

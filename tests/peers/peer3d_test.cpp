@@ -1,0 +1,149 @@
+// A 3D peer (issue 39): Gmsh meshes the unit box with tetrahedra (its Delaunay algorithm, then its
+// optimiser, which does not keep the Delaunay property), and `anisocert certify` decides its
+// validity and local uniformity for M = I, i.e. which tetrahedra have a vertex strictly inside
+// their circumsphere. The count is checked against a brute force written here from the
+// definition, sharing no code with the certifier or the readers: the file parsed by hand (MSH
+// 2.2 ASCII), each circumcentre solved from three linear equations in rationals, every vertex's
+// squared distance compared with the radius².
+#include "numbers/rational.hpp"
+#include "tests/cli_run.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <map>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using anisocert::Rational;
+using Point = std::array<Rational, 3>;
+
+struct Tets {
+  std::vector<Point> vertices;
+  std::vector<std::array<std::size_t, 4>> tetrahedra;
+};
+
+// MSH 2.2 ASCII: $Nodes (tag x y z), $Elements (tag type ntags tags... nodes); type 4 only.
+Tets parse_msh22(const std::string& path) {
+  std::ifstream in(path);
+  Tets t;
+  std::string word;
+  std::map<long, std::size_t> index;
+  while (in >> word) {
+    if (word == "$Nodes") {
+      std::size_t n = 0;
+      in >> n;
+      for (std::size_t i = 0; i < n; ++i) {
+        long tag = 0;
+        std::string x, y, z;
+        in >> tag >> x >> y >> z;
+        index[tag] = i;
+        t.vertices.push_back({anisocert::parse_rational(x), anisocert::parse_rational(y), anisocert::parse_rational(z)});
+      }
+    } else if (word == "$Elements") {
+      std::size_t n = 0;
+      in >> n;
+      std::string line;
+      std::getline(in, line);
+      for (std::size_t i = 0; i < n && std::getline(in, line);) {
+        std::istringstream s(line);
+        long tag = 0, type = 0, ntags = 0, v = 0;
+        if (!(s >> tag >> type >> ntags)) continue;
+        ++i;
+        for (long k = 0; k < ntags; ++k) s >> v;
+        if (type != 4) continue;
+        std::array<std::size_t, 4> tet{};
+        for (auto& x : tet) s >> v, x = index.at(v);
+        t.tetrahedra.push_back(tet);
+      }
+    }
+  }
+  return t;
+}
+
+Rational distance2(const Point& p, const Point& q) {
+  Rational d = 0;
+  for (std::size_t i = 0; i < 3; ++i) d += (p[i] - q[i]) * (p[i] - q[i]);
+  return d;
+}
+
+// The circumcentre c: 2 (p_k − p_0)·c = |p_k|² − |p_0|², k = 1, 2, 3, by Gauss–Jordan elimination.
+Point circumcentre(const std::array<Point, 4>& p) {
+  std::array<std::array<Rational, 4>, 3> a;
+  for (std::size_t k = 0; k < 3; ++k) {
+    for (std::size_t i = 0; i < 3; ++i) a[k][i] = 2 * (p[k + 1][i] - p[0][i]);
+    a[k][3] = distance2(p[k + 1], Point{0, 0, 0}) - distance2(p[0], Point{0, 0, 0});
+  }
+  for (std::size_t c = 0; c < 3; ++c) {
+    std::size_t pivot = c;
+    while (a[pivot][c] == 0) ++pivot;  // the tetrahedron is not flat: a pivot exists
+    std::swap(a[c], a[pivot]);
+    for (std::size_t r = 0; r < 3; ++r)
+      if (r != c && a[r][c] != 0) {
+        const Rational f = a[r][c] / a[c][c];
+        for (std::size_t j = c; j < 4; ++j) a[r][j] -= f * a[c][j];
+      }
+  }
+  return {a[0][3] / a[0][0], a[1][3] / a[1][1], a[2][3] / a[2][2]};
+}
+
+TEST(Gmsh3D, LocallyUniformVerdictIsTheBruteForceCount) {
+  if (run_command("command -v gmsh").exit_code != 0) GTEST_SKIP() << "gmsh is not installed";
+  const fs::path dir = fs::path(::testing::TempDir()) / ("anisocert_peer3d_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "box.geo") << "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\nMesh.CharacteristicLengthMax = 0.3;\n";
+  const std::string mesh = (dir / "box.msh").string();
+  ASSERT_EQ(run_command("gmsh -3 " + (dir / "box.geo").string() + " -format msh22 -o " + mesh + " > /dev/null 2>&1").exit_code, 0);
+  const Tets t = parse_msh22(mesh);
+  ASSERT_GT(t.tetrahedra.size(), 100u);
+  // M = I at every vertex: a Medit .sol of sizes h = 1.
+  {
+    std::ofstream sol(dir / "box.sol");
+    sol << "MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n" << t.vertices.size() << "\n1 1\n";
+    for (std::size_t i = 0; i < t.vertices.size(); ++i) sol << "1\n";
+    sol << "End\n";
+  }
+  const std::string json = (dir / "c.json").string();
+  const Outcome r = run_command(std::string(ANISOCERT_BIN) + " certify " + mesh + " --metric " + (dir / "box.sol").string() +
+                                " --json " + json);
+  ASSERT_NE(r.exit_code, 2) << r.out << r.err;
+  std::size_t violated = 0, tied_only = 0, tied = 0;
+  for (const auto& tet : t.tetrahedra) {
+    const std::array<Point, 4> p{t.vertices[tet[0]], t.vertices[tet[1]], t.vertices[tet[2]], t.vertices[tet[3]]};
+    const Point c = circumcentre(p);
+    const Rational r2 = distance2(c, p[0]);
+    bool inside = false, on = false;
+    for (std::size_t v = 0; v < t.vertices.size(); ++v) {
+      if (v == tet[0] || v == tet[1] || v == tet[2] || v == tet[3]) continue;
+      const Rational d = distance2(c, t.vertices[v]);
+      inside = inside || d < r2, on = on || d == r2;
+    }
+    violated += inside, tied_only += on && !inside, tied += on;
+  }
+  std::ifstream in(json);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_TRUE(j["valid"]["holds"].get<bool>()) << r.out;
+  EXPECT_EQ(j["tetrahedra"].get<std::size_t>(), t.tetrahedra.size());
+  // One witness per tetrahedron: the violations are the tetrahedra with a vertex inside, exactly;
+  // a tie is recorded for a tetrahedron whose first finding is one, so the tie count lies between
+  // the tetrahedra with only ties and those with any.
+  EXPECT_EQ(j["locally_uniform"]["violation_count"].get<std::size_t>(), violated) << r.out;
+  EXPECT_GE(j["locally_uniform"]["tie_count"].get<std::size_t>(), tied_only) << r.out;
+  EXPECT_LE(j["locally_uniform"]["tie_count"].get<std::size_t>(), tied) << r.out;
+  EXPECT_EQ(r.exit_code, violated == 0 ? 0 : 1) << r.out;
+  std::printf("gmsh box: %zu tetrahedra, %zu with a vertex strictly inside their circumsphere, %zu tied\n", t.tetrahedra.size(),
+              violated, tied);
+  fs::remove_all(dir);
+}
+
+}  // namespace
