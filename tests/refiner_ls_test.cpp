@@ -119,6 +119,29 @@ TEST(DelaunayInMetric, EveryCircumellipseIsEmptyAndTheCountsAreEuler) {
   }
 }
 
+// The ghosts are placed around the extent box wherever it is: a box 2²⁰ away from the origin (in
+// x, in y, in both, and negative), its 7 × 7 grid points all inserted; the triangles of sites
+// tile their hull exactly (a campaign survivor centred the ghosts at a quarter of the box's
+// x-extent, which no box at the origin notices).
+TEST(DelaunayInMetric, TheGhostsSurroundABoxFarFromTheOrigin) {
+  const double far = std::ldexp(1.0, 20);
+  for (const auto& [ox, oy] : {std::pair{far, 0.0}, std::pair{0.0, far}, std::pair{far, far}, std::pair{-far, -far}}) {
+    DelaunayInMetric d({1, 0, 4}, {ox, ox + 1, oy, oy + 1});
+    std::vector<Point2<double>> points;
+    for (int i = 0; i <= 6; ++i)
+      for (int j = 0; j <= 6; ++j) points.push_back({ox + (i * 5 % 7) / 6.0, oy + (j * 3 % 7) / 6.0});
+    for (std::size_t i = 0; i < points.size(); ++i) ASSERT_NO_THROW(d.insert(static_cast<int>(i), points[i])) << ox << ", " << oy;
+    Rational real_area2 = 0;
+    for (std::size_t t = 0; t < d.slots(); ++t) {
+      const auto& tri = d.triangle(static_cast<int>(t));
+      if (!tri.alive || !d.real(static_cast<int>(t))) continue;
+      const auto &a = d.point(tri.v[0]), &b = d.point(tri.v[1]), &c = d.point(tri.v[2]);
+      real_area2 += (Rational(b.x) - Rational(a.x)) * (Rational(c.y) - Rational(a.y)) - (Rational(b.y) - Rational(a.y)) * (Rational(c.x) - Rational(a.x));
+    }
+    EXPECT_EQ(real_area2, 2) << ox << ", " << oy;  // twice the unit square's area
+  }
+}
+
 TEST(DelaunayInMetric, RefusesASiteTwice) {
   DelaunayInMetric d({1, 0, 1}, {0, 1, 0, 1});
   d.insert(0, {0.5, 0.5});

@@ -81,7 +81,7 @@ const std::vector<MeshFormat>& mesh_formats() {
        [](const std::string& p, const ReadOptions&) { return read_gmsh_file(p); }, write_gmsh_file},
       {"freefem", "FreeFem++ .msh (nv nt nbe); metrics in BAMG .mtr", {".msh"}, looks_like_freefem,
        [](const std::string& p, const ReadOptions&) { return read_freefem_file(p); }, write_freefem_file},
-      {"triangle", "Triangle .node/.ele/.poly (boundary markers, holes)", {".node", ".ele", ".poly"}, nullptr,
+      {"triangle", "Triangle .node/.ele/.poly (boundary markers, holes); TetGen .node/.ele/.face (3D)", {".node", ".ele", ".poly", ".face"}, nullptr,
        [](const std::string& p, const ReadOptions&) { return read_triangle_files(p); }, write_triangle_files, false},
       {"gmsh-view", "Gmsh list-based tensor view .pos, a background metric for Gmsh's BAMG (written only)", {".pos"}, nullptr,
        nullptr, write_gmsh_view},

@@ -115,7 +115,9 @@ TEST(Triangle, RefusesMalformedFilesNamingTheFileTheLineAndTheSection) {
   const char* node = "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n";
   const char* ele = "1 3 0\n1 1 2 3\n";
   const std::vector<std::tuple<const char*, const char*, const char*, const char*>> cases{
-      {"3 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n", ele, "", "t.node:1: vertex header: dimension 3: Triangle's files are planar"},
+      {"3 4 0 0\n1 0 0 0 0\n2 1 0 0 0\n3 0 1 0 0\n", ele, "", "t.node:1: vertex header: dimension 4: Triangle's files are planar (2), TetGen's spatial (3)"},
+      {"3 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n", ele, "", "t.ele:1: tetrahedron header: 3 nodes per tetrahedron, where TetGen writes 4"},
+      {node, ele, "1 3 0 0\n1 0 0 0\n0 0\n0\n", "t.poly:1: vertex header: dimension 3: Triangle's files are planar (dimension 2)"},
       {"3 2 0 2\n", ele, "", "t.node:1: vertex header: number of boundary markers is 2, outside [0, 1]"},
       {"-3 2 0 0\n", ele, "", "t.node:1: vertex header: number of vertices is -3"},
       {"3 2 0 0\n2 0 0\n", ele, "", "t.node:2: vertex 2: expected vertex 0 or 1"},
@@ -207,7 +209,7 @@ TEST(Triangle, AMissingEleIsNamedWithTheGivenPath) {
   const fs::path dir = fresh_dir("missing_ele");
   std::ofstream(dir / "m.node") << node_from_0;
   const std::string error = error_of([&] { read_triangle_files((dir / "m.node").string()); });
-  EXPECT_NE(error.find((dir / "m.node").string() + ": the Triangle mesh needs " + (dir / "m.ele").string() +
+  EXPECT_NE(error.find((dir / "m.node").string() + ": the Triangle or TetGen mesh needs " + (dir / "m.ele").string() +
                        ", which does not exist"),
             std::string::npos)
       << error;
@@ -215,6 +217,43 @@ TEST(Triangle, AMissingEleIsNamedWithTheGivenPath) {
 
 // Each catalogue case (tests/formats/malformed/triangle-*) fails in the reader with its message,
 // naming the file case.json names.
+// TetGen's files (TetGen 1.5 manual § 5.2), numbered from 0 here: a .node of dimension 3 makes a
+// tetrahedral mesh; the .ele's region attribute is the tetrahedron's reference, the .face's
+// markers the faces'; the writer's .node/.ele/.face read back the same; 10-node tetrahedra and
+// a face corner out of range are refused with the file and line.
+TEST(TetGen, ReadsTetrahedraAndFacesAndWritesThemBack) {
+  const char* node = "4 3 0 1\n0 0 0 0 1\n1 1 0 0 1\n2 0 1 0 1\n3 0 0 0.5 2\n";
+  const char* ele = "1 4 1\n0 0 1 2 3 7\n";
+  const char* face = "# boundary faces\n4 1\n0 0 2 1 5\n1 0 1 3 5\n2 1 2 3 6\n3 2 0 3 5\n";
+  const MeshFile f = read_triangle(node, ele, "", "t", face);
+  ASSERT_EQ(f.dimension, 3);
+  ASSERT_EQ(f.mesh3.vertices.size(), 4u);
+  EXPECT_EQ(f.mesh3.vertices[3].z, q("0.5"));
+  EXPECT_EQ(f.vertex_refs, (std::vector<int>{1, 1, 1, 2}));
+  EXPECT_EQ(f.mesh3.tetrahedra, (std::vector<std::array<int, 4>>{{0, 1, 2, 3}}));
+  EXPECT_EQ(f.tetrahedron_refs, std::vector<int>{7});
+  EXPECT_EQ(f.mesh3.triangles, (std::vector<std::array<int, 3>>{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}));
+  EXPECT_EQ(f.triangle_refs, (std::vector<int>{5, 5, 6, 5}));
+  const fs::path dir = fs::temp_directory_path() / "tetgen_test_round_trip";
+  fs::create_directories(dir);
+  for (const FileText& w : write_triangle_files(f, (dir / "m.node").string())) std::ofstream(w.path) << w.content;
+  const MeshFile g = read_triangle_files((dir / "m.ele").string());
+  ASSERT_EQ(g.dimension, 3);
+  EXPECT_EQ(g.mesh3.vertices[3].z, q("0.5"));
+  EXPECT_EQ(g.mesh3.tetrahedra, f.mesh3.tetrahedra);
+  EXPECT_EQ(g.tetrahedron_refs, f.tetrahedron_refs);
+  EXPECT_EQ(g.mesh3.triangles, f.mesh3.triangles);
+  EXPECT_EQ(g.triangle_refs, f.triangle_refs);
+  EXPECT_EQ(g.vertex_refs, f.vertex_refs);
+  fs::remove_all(dir);
+  EXPECT_NE(error_of([&] { read_triangle(node, "1 10 0\n0 0 1 2 3 0 1 2 3 0 1\n", "", "t"); })
+                .find("t.ele:1: tetrahedron header: 10 nodes per tetrahedron (TetGen's -o2 quadratic elements) are not read"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { read_triangle(node, ele, "", "t", "1 0\n0 0 1 4\n"); }).find("t.face:2: face 0: corner 4 is out of range"),
+            std::string::npos)
+      << error_of([&] { read_triangle(node, ele, "", "t", "1 0\n0 0 1 4\n"); });
+}
+
 TEST(Triangle, CatalogueCasesFailInTheReaderWithTheirMessages) {
   int cases = 0;
   for (const auto& d : fs::directory_iterator(ANISOCERT_MALFORMED_DIR)) {

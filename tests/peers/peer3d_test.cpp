@@ -1,10 +1,10 @@
-// A 3D peer (issue 39): Gmsh meshes the unit box with tetrahedra (its Delaunay algorithm, then its
-// optimiser, which does not keep the Delaunay property), and `anisocert certify` decides its
-// validity and local uniformity for M = I, i.e. which tetrahedra have a vertex strictly inside
-// their circumsphere. The count is checked against a brute force written here from the
-// definition, sharing no code with the certifier or the readers: the file parsed by hand (MSH
-// 2.2 ASCII), each circumcentre solved from three linear equations in rationals, every vertex's
-// squared distance compared with the radius².
+// 3D peers (issue 39): Gmsh and TetGen mesh the unit box with tetrahedra (Delaunay, then an
+// optimiser that does not keep the Delaunay property), and `anisocert certify` decides each
+// mesh's validity and local uniformity for M = I, i.e. which tetrahedra have a vertex strictly
+// inside their circumsphere. The count is checked against a brute force written here from the
+// definition, sharing no code with the certifier or the readers: the files parsed by hand (MSH
+// 2.2 ASCII; TetGen's .node/.ele), each circumcentre solved from three linear equations in
+// rationals, every vertex's squared distance compared with the radius².
 #include "numbers/rational.hpp"
 #include "tests/cli_run.hpp"
 
@@ -70,6 +70,32 @@ Tets parse_msh22(const std::string& path) {
   return t;
 }
 
+// TetGen's .node ("n 3 attributes markers", then "i x y z ...") and .ele ("n 4 attribute", then
+// "i a b c d ..."), numbered from 1 as tetgen writes them by default.
+Tets parse_tetgen(const std::string& base) {
+  Tets t;
+  std::ifstream node(base + ".node"), ele(base + ".ele");
+  std::size_t n = 0, dim = 0, attributes = 0, markers = 0;
+  node >> n >> dim >> attributes >> markers;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::string k, x, y, z, skip;
+    node >> k >> x >> y >> z;
+    for (std::size_t a = 0; a < attributes + markers; ++a) node >> skip;
+    t.vertices.push_back({anisocert::parse_rational(x), anisocert::parse_rational(y), anisocert::parse_rational(z)});
+  }
+  std::size_t m = 0, nodes = 0, region = 0;
+  ele >> m >> nodes >> region;
+  for (std::size_t i = 0; i < m; ++i) {
+    std::size_t k = 0, skip = 0;
+    std::array<std::size_t, 4> tet{};
+    ele >> k >> tet[0] >> tet[1] >> tet[2] >> tet[3];
+    for (auto& v : tet) --v;
+    for (std::size_t a = 0; a < region; ++a) ele >> skip;
+    t.tetrahedra.push_back(tet);
+  }
+  return t;
+}
+
 Rational distance2(const Point& p, const Point& q) {
   Rational d = 0;
   for (std::size_t i = 0; i < 3; ++i) d += (p[i] - q[i]) * (p[i] - q[i]);
@@ -96,15 +122,8 @@ Point circumcentre(const std::array<Point, 4>& p) {
   return {a[0][3] / a[0][0], a[1][3] / a[1][1], a[2][3] / a[2][2]};
 }
 
-TEST(Gmsh3D, LocallyUniformVerdictIsTheBruteForceCount) {
-  if (run_command("command -v gmsh").exit_code != 0) GTEST_SKIP() << "gmsh is not installed";
-  const fs::path dir = fs::path(::testing::TempDir()) / ("anisocert_peer3d_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "box.geo") << "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\nMesh.CharacteristicLengthMax = 0.3;\n";
-  const std::string mesh = (dir / "box.msh").string();
-  ASSERT_EQ(run_command("gmsh -3 " + (dir / "box.geo").string() + " -format msh22 -o " + mesh + " > /dev/null 2>&1").exit_code, 0);
-  const Tets t = parse_msh22(mesh);
+// Certifies `mesh` (read by anisocert) for M = I and compares with the brute force on `t`.
+void expect_brute_force_count(const std::string& peer, const fs::path& dir, const std::string& mesh, const Tets& t) {
   ASSERT_GT(t.tetrahedra.size(), 100u);
   // M = I at every vertex: a Medit .sol of sizes h = 1.
   {
@@ -141,8 +160,37 @@ TEST(Gmsh3D, LocallyUniformVerdictIsTheBruteForceCount) {
   EXPECT_GE(j["locally_uniform"]["tie_count"].get<std::size_t>(), tied_only) << r.out;
   EXPECT_LE(j["locally_uniform"]["tie_count"].get<std::size_t>(), tied) << r.out;
   EXPECT_EQ(r.exit_code, violated == 0 ? 0 : 1) << r.out;
-  std::printf("gmsh box: %zu tetrahedra, %zu with a vertex strictly inside their circumsphere, %zu tied\n", t.tetrahedra.size(),
-              violated, tied);
+  std::printf("%s box: %zu tetrahedra, %zu with a vertex strictly inside their circumsphere, %zu tied\n", peer.c_str(),
+              t.tetrahedra.size(), violated, tied);
+}
+
+fs::path fresh_dir(const std::string& peer) {
+  const fs::path dir = fs::path(::testing::TempDir()) / ("anisocert_peer3d_" + peer + "_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(Gmsh3D, LocallyUniformVerdictIsTheBruteForceCount) {
+  const fs::path dir = fresh_dir("gmsh");
+  std::ofstream(dir / "box.geo") << "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\nMesh.CharacteristicLengthMax = 0.3;\n";
+  const std::string mesh = (dir / "box.msh").string();
+  ASSERT_EQ(run_command("gmsh -3 " + (dir / "box.geo").string() + " -format msh22 -o " + mesh + " > /dev/null 2>&1").exit_code, 0);
+  expect_brute_force_count("gmsh", dir, mesh, parse_msh22(mesh));
+  fs::remove_all(dir);
+}
+
+// The unit cube as a TetGen PLC (six square facets, markers 1 to 6), meshed with quality and a
+// volume bound: `tetgen -pq1.414a0.01 box.poly` writes box.1.node/.ele/.face.
+TEST(TetGen3D, LocallyUniformVerdictIsTheBruteForceCount) {
+  const fs::path dir = fresh_dir("tetgen");
+  std::ofstream poly(dir / "box.poly");
+  poly << "8 3 0 0\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 0 1\n6 1 0 1\n7 1 1 1\n8 0 1 1\n6 1\n";
+  for (const char* facet : {"1 2 3 4", "5 6 7 8", "1 2 6 5", "2 3 7 6", "3 4 8 7", "4 1 5 8"}) poly << "1 0 1\n4 " << facet << "\n";
+  poly << "0\n0\n";
+  poly.close();
+  ASSERT_EQ(run_command("cd " + dir.string() + " && tetgen -pq1.414a0.01 box.poly > /dev/null 2>&1").exit_code, 0);
+  expect_brute_force_count("tetgen", dir, (dir / "box.1.ele").string(), parse_tetgen((dir / "box.1").string()));
   fs::remove_all(dir);
 }
 
