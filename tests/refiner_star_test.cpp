@@ -246,6 +246,46 @@ TEST(StarSet, TheFirstNeighbourIsNearestExactlyUnderANearlySingularMetric) {
   for (std::size_t i = 0; i < fan.size(); ++i) EXPECT_EQ(fan[i][1], fan[(i + 1) % fan.size()][0]) << "the fan does not close once";
 }
 
+// nearest_candidate (gift_wrap.hpp) is the exact M-nearest, the first listed of equals, against
+// the squared lengths computed in rationals: metrics of condition 2²⁰ to 2⁵⁰ in any direction,
+// candidates in a cluster 2⁻³⁰ wide, a tenth away along the metric's nearly null direction (where
+// the doubles' cancellation misleads them), and an exact duplicate.
+TEST(GiftWrap, TheNearestCandidateIsTheExactlyNearest) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1), angle(0, M_PI);
+  std::uniform_int_distribution<int> decades(0, 60), pick(0, 11);
+  int misled = 0;
+  for (int round = 0; round < 400; ++round) {
+    const double l1 = 1, l2 = std::ldexp(1.0, -20 - decades(rng) / 2), a = angle(rng), c = std::cos(a), s = std::sin(a);
+    const predicates::Sym2<double> M{l1 * c * c + l2 * s * s, (l1 - l2) * c * s, l1 * s * s + l2 * c * c};
+    const predicates::Point2<double> p{u(rng), u(rng)};
+    std::vector<predicates::Point2<double>> points;
+    for (int i = 0; i < 12; ++i) {
+      const double t = 0.1 + std::ldexp(u(rng), -30), e = std::ldexp(u(rng), -30);  // along (−s, c), across (c, s)
+      points.push_back({p.x - s * t + c * e, p.y + c * t + s * e});
+    }
+    points.push_back(points[static_cast<std::size_t>(pick(rng))]);  // an exact duplicate
+    std::vector<int> cand(points.size());
+    std::iota(cand.begin(), cand.end(), 0);
+    std::shuffle(cand.begin(), cand.end(), rng);
+    const auto q = [&](int i) {
+      const Rational dx = Rational(points[static_cast<std::size_t>(i)].x) - Rational(p.x), dy = Rational(points[static_cast<std::size_t>(i)].y) - Rational(p.y);
+      return Rational(M.m11) * dx * dx + 2 * Rational(M.m12) * dx * dy + Rational(M.m22) * dy * dy;
+    };
+    int want = cand[0];
+    for (int i : cand)
+      if (q(i) < q(want)) want = i;
+    int by_doubles = cand[0];
+    for (int i : cand)
+      if (predicates::quadratic_form(M, points[static_cast<std::size_t>(i)].x - p.x, points[static_cast<std::size_t>(i)].y - p.y) <
+          predicates::quadratic_form(M, points[static_cast<std::size_t>(by_doubles)].x - p.x, points[static_cast<std::size_t>(by_doubles)].y - p.y))
+        by_doubles = i;
+    misled += q(by_doubles) != q(want);
+    ASSERT_EQ(refiners::star::nearest_candidate(p, M, cand, points), want) << "round " << round;
+  }
+  EXPECT_GT(misled, 10);  // the cases are ones where doubles alone pick a farther candidate
+}
+
 // Pick_valid's picking region beyond the doubles in one coordinate only (pick_valid.hpp: then the
 // triangle's centroid). M = diag(2⁻¹⁰⁷⁴, 10³⁰⁸) and r² = 1.7·10³⁰⁸ give M-ball half-widths
 // δr/√m11 ≈ 3·10³¹⁵ (beyond DBL_MAX: the drawn x is ±∞) and δr/√m22 ≈ 0.65 (y stays finite, inside

@@ -24,9 +24,7 @@ bool PickValid::forbidden(const Point2<double>& x, double r_tau, const std::vect
   const auto& pts = sites_.points;
   const Sym2<double> M = sites_.field.at(x.x, x.y);
   auto d2 = [&](const Point2<double>& p, const Point2<double>& q) { return predicates::quadratic_form(M, p.x - q.x, p.y - q.y); };
-  int first = cand[0];
-  for (int c : cand)
-    if (d2(pts[c], x) < d2(pts[first], x)) first = c;
+  const int first = nearest_candidate(x, M, cand, pts);
   const double g2 = p_.gamma0 * p_.gamma0, beta_r2 = p_.beta * p_.beta * r_tau * r_tau, rho2 = p_.rho0 * p_.rho0;
   int a = first;
   for (std::size_t guard = 0; guard <= cand.size(); ++guard) {

@@ -3,7 +3,6 @@
 #include "geometry/circumellipse.hpp"
 #include "geometry/ellipse_box.hpp"
 #include "predicates/incircle.hpp"
-#include "predicates/length_compare.hpp"
 #include "predicates/orientation.hpp"
 #include "refiners/star/gift_wrap.hpp"
 
@@ -118,13 +117,7 @@ void StarSet::recompute(int v) {
       R2 *= reach_growth;
       continue;
     }
-    // The first neighbour is the M-nearest candidate, decided exactly (a nearest site is a Delaunay
-    // neighbour: the circle on the segment to it as diameter holds no site). Chosen by doubles,
-    // even within 10⁻¹⁰, a metric of condition 2⁴⁰ made it a site that is none, and the fan wound
-    // three times around v (tests/refiner_star_test.cpp, found by a second reader).
-    int first = -1;
-    for (int c : cand)
-      if (first < 0 || predicates::compare_scaled_lengths(1.0, pv, x[c], M, pv, x[first], M) == Sign::negative) first = c;
+    const int first = nearest_candidate(pv, M, cand, x);  // a Delaunay neighbour (gift_wrap.hpp)
     std::vector<int>& ring = ring_;
     ring.assign(1, first);
     bool closed = false;
