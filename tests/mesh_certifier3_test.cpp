@@ -4,12 +4,13 @@
 // centre are Σ (k − 1/2)², 3/4 only for k ∈ {0, 1}), two tetrahedra across a face that break the
 // Delaunay condition, and metric lengths at the exact boundary √2.
 
+#include "geometry/kuhn_grid.hpp"
 #include "oracle/certify/mesh_certifier3.hpp"
-#include "predicates/orientation3.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 
 using anisocert::Rational;
 using anisocert::Sign;
@@ -19,31 +20,9 @@ using anisocert::predicates::Sym3;
 
 namespace {
 
-int vertex(Mesh3& m, int x, int y, int z) {
-  for (std::size_t i = 0; i < m.vertices.size(); ++i)
-    if (m.vertices[i].x == x && m.vertices[i].y == y && m.vertices[i].z == z) return static_cast<int>(i);
-  m.vertices.push_back({x, y, z});
-  return static_cast<int>(m.vertices.size() - 1);
-}
-
-// The n × n × n grid of unit cubes, each in its six Kuhn tetrahedra, positively oriented; metric M
-// everywhere.
+// The n × n × n Kuhn grid (geometry/kuhn_grid.hpp) with metric M everywhere.
 Mesh3 kuhn_grid(int n, const Sym3<Rational>& M) {
-  Mesh3 m;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        std::array<int, 3> axes{0, 1, 2};
-        do {
-          std::array<int, 3> p{i, j, k};
-          std::array<int, 4> t{};
-          t[0] = vertex(m, p[0], p[1], p[2]);
-          for (std::size_t s = 0; s < 3; ++s) ++p[static_cast<std::size_t>(axes[s])], t[s + 1] = vertex(m, p[0], p[1], p[2]);
-          const auto& v = m.vertices;
-          if (anisocert::predicates::orientation3(v[t[0]], v[t[1]], v[t[2]], v[t[3]]) == Sign::negative) std::swap(t[2], t[3]);
-          m.tetrahedra.push_back(t);
-        } while (std::next_permutation(axes.begin(), axes.end()));
-      }
+  Mesh3 m = anisocert::geometry::kuhn_grid(n);
   m.metrics.assign(m.vertices.size(), M);
   return m;
 }
@@ -129,4 +108,124 @@ TEST(MeshCertifier3, UnitEdgesAreDecidedExactlyAtTheEnds) {
   const Certify3Report g = certify_mesh3(m, o);
   EXPECT_EQ(g.lengths->range_violations.count(), 7u);
   EXPECT_FALSE(g.holds(o));
+}
+
+namespace {
+
+using Point = anisocert::predicates::Point3<Rational>;
+
+// Per tetrahedron, from scratch in rationals: whether some vertex lies strictly inside its
+// M_v-circumsphere for one of its vertices v, and whether some lies on one. The centre a + x
+// solves 2(q − a)ᵀ M x = (q − a)ᵀ M (q − a), q = b, c, d, by Gauss–Jordan elimination; r² = xᵀMx.
+struct Truth {
+  bool inside = false, on = false;
+};
+
+Rational form(const Sym3<Rational>& M, const std::array<Rational, 3>& d) {
+  return M.m11 * d[0] * d[0] + M.m22 * d[1] * d[1] + M.m33 * d[2] * d[2] +
+         2 * (M.m12 * d[0] * d[1] + M.m13 * d[0] * d[2] + M.m23 * d[1] * d[2]);
+}
+
+std::array<Rational, 3> minus(const Point& p, const Point& q) { return {p.x - q.x, p.y - q.y, p.z - q.z}; }
+
+std::vector<Truth> brute_force(const Mesh3& m) {
+  std::vector<Truth> truth(m.tetrahedra.size());
+  for (std::size_t ti = 0; ti < m.tetrahedra.size(); ++ti) {
+    const auto& t = m.tetrahedra[ti];
+    const Point& a = m.vertices[static_cast<std::size_t>(t[0])];
+    for (const int v : t) {
+      const Sym3<Rational>& M = m.metrics[static_cast<std::size_t>(v)];
+      std::array<std::array<Rational, 4>, 3> A;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const auto d = minus(m.vertices[static_cast<std::size_t>(t[k + 1])], a);
+        const std::array<Rational, 3> Md{M.m11 * d[0] + M.m12 * d[1] + M.m13 * d[2], M.m12 * d[0] + M.m22 * d[1] + M.m23 * d[2],
+                                         M.m13 * d[0] + M.m23 * d[1] + M.m33 * d[2]};
+        A[k] = {2 * Md[0], 2 * Md[1], 2 * Md[2], form(M, d)};
+      }
+      bool flat = false;
+      for (std::size_t c = 0; c < 3 && !flat; ++c) {
+        std::size_t pivot = c;
+        while (pivot < 3 && A[pivot][c] == 0) ++pivot;
+        if (pivot == 3) {
+          flat = true;
+          break;
+        }
+        std::swap(A[c], A[pivot]);
+        for (std::size_t r = 0; r < 3; ++r)
+          if (r != c && A[r][c] != 0) {
+            const Rational f = A[r][c] / A[c][c];
+            for (std::size_t j = c; j < 4; ++j) A[r][j] -= f * A[c][j];
+          }
+      }
+      if (flat) break;  // a flat tetrahedron is not measured
+      const std::array<Rational, 3> x{A[0][3] / A[0][0], A[1][3] / A[1][1], A[2][3] / A[2][2]};
+      const Rational r2 = form(M, x);
+      for (std::size_t e = 0; e < m.vertices.size(); ++e) {
+        if (std::find(t.begin(), t.end(), static_cast<int>(e)) != t.end()) continue;
+        const auto d = minus(m.vertices[e], a);
+        const Rational q = form(M, {d[0] - x[0], d[1] - x[1], d[2] - x[2]});
+        truth[ti].inside = truth[ti].inside || q < r2, truth[ti].on = truth[ti].on || q == r2;
+      }
+    }
+  }
+  return truth;
+}
+
+}  // namespace
+
+// Filters only speed up, never change, an answer: the locally uniform verdicts (the interval
+// box, the interval sphere test that spares candidates certainly outside, the interval in-sphere
+// determinant, the rational fall-back) against brute_force above, per tetrahedron, on 2 × 2 × 2
+// Kuhn grids whose interior vertex and face centres are moved by 0, a sixteenth, 2⁻⁶⁰ (no double
+// nearby: the filters must defer) or 10⁻¹⁸, under M = I (every cube cospherical: ties), random
+// diagonal metrics, and random rational metrics LLᵀ per vertex. Violations must be exactly the
+// tetrahedra with a vertex inside; one tie is recorded per tetrahedron at most, before any
+// violation, so the tied ones lie between those with only ties and those with any.
+TEST(MeshCertifier3, FiltersNeverChangeTheUniformVerdict) {
+  std::mt19937 rng(2027);
+  std::uniform_int_distribution<int> small(-3, 3), pick(0, 3), kind(0, 2);
+  const std::array<Rational, 4> moves{Rational(0), Rational(1, 16), Rational(1, 1ULL << 60), Rational(1, 1000000000000000000ULL)};
+  std::size_t violated = 0, tied = 0;
+  for (int round = 0; round < 40; ++round) {
+    Mesh3 m = anisocert::geometry::kuhn_grid(2);
+    for (auto& p : m.vertices) {
+      const bool interior = p.x == 1 || p.y == 1 || p.z == 1;
+      if (!interior || pick(rng) == 0) continue;
+      p.x += small(rng) * moves[static_cast<std::size_t>(pick(rng))], p.y += small(rng) * moves[static_cast<std::size_t>(pick(rng))];
+      p.z += small(rng) * moves[static_cast<std::size_t>(pick(rng))];
+    }
+    const int k = kind(rng);
+    for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+      if (k == 0) {
+        m.metrics.push_back({1, 0, 0, 1, 0, 1});
+      } else if (k == 1) {
+        const Rational d1 = 1 + pick(rng), d2(1 + pick(rng), 2), d3 = 2 + pick(rng);
+        m.metrics.push_back({d1, 0, 0, d2, 0, d3});
+      } else {  // L = [[l1, 0, 0], [l21, l2, 0], [l31, l32, l3]], M = LLᵀ
+        const Rational l1 = 1 + pick(rng), l2 = 1 + pick(rng), l3(1 + pick(rng), 2), l21(small(rng), 4), l31(small(rng), 4),
+                       l32(small(rng), 4);
+        m.metrics.push_back({l1 * l1, l1 * l21, l1 * l31, l21 * l21 + l2 * l2, l21 * l31 + l2 * l32, l31 * l31 + l32 * l32 + l3 * l3});
+      }
+    }
+    Certify3Options o;
+    o.described_witnesses = 1000;
+    const Certify3Report r = certify_mesh3(m, o);
+    const std::vector<Truth> truth = brute_force(m);
+    std::vector<char> got_violation(m.tetrahedra.size(), 0), got_tie(m.tetrahedra.size(), 0);
+    for (const auto& w : r.uniform_violations.described()) got_violation[static_cast<std::size_t>(w.triangle)] = 1;
+    for (const auto& w : r.uniform_ties.described()) got_tie[static_cast<std::size_t>(w.triangle)] = 1;
+    for (std::size_t t = 0; t < truth.size(); ++t) {
+      EXPECT_EQ(static_cast<bool>(got_violation[t]), truth[t].inside) << "round " << round << ", tetrahedron " << t;
+      if (truth[t].on && !truth[t].inside) {
+        EXPECT_TRUE(got_tie[t]) << "round " << round << ", tetrahedron " << t;
+      }
+      if (got_tie[t]) {
+        EXPECT_TRUE(truth[t].on) << "round " << round << ", tetrahedron " << t;
+      }
+      violated += truth[t].inside, tied += truth[t].on;
+    }
+  }
+  // The cases are not all one kind: both violations and ties occur.
+  EXPECT_GT(violated, 100u);
+  EXPECT_GT(tied, 30u);
 }

@@ -77,12 +77,18 @@ std::array<I, 3> times(const predicates::Sym3<I>& M, const std::array<I, 3>& v) 
   return {M.m11 * v[0] + M.m12 * v[1] + M.m13 * v[2], M.m12 * v[0] + M.m22 * v[1] + M.m23 * v[2], M.m13 * v[0] + M.m23 * v[1] + M.m33 * v[2]};
 }
 
-// A box (lo, hi) that certainly holds the M-circumellipsoid of tetrahedron p (with its approximate
-// vertices within an ulp of it too), or nothing when the enclosure cannot give one. The centre is
-// a + x with 2(q − a)ᵀ M x = (q − a)ᵀ M (q − a) for q = b, c, d; r² = xᵀMx; the ellipsoid
+// The M-circumellipsoid of a tetrahedron, enclosed: its centre and r², and a box (lo, hi) that
+// certainly holds it (with the approximate vertices within an ulp of it too).
+struct Ellipsoid {
+  std::array<I, 3> centre;
+  I r2;
+  std::array<double, 3> lo, hi;
+};
+
+// The enclosure, or nothing when intervals cannot give one. The centre is a + x with
+// 2(q − a)ᵀ M x = (q − a)ᵀ M (q − a) for q = b, c, d; r² = xᵀMx; the ellipsoid
 // {y : (y − c)ᵀ M (y − c) ≤ r²} spans c_i ± √(r² (M⁻¹)_ii) along axis i.
-std::optional<std::pair<std::array<double, 3>, std::array<double, 3>>> ellipsoid_box(const EnclosedMesh3& m, const std::array<int, 4>& t,
-                                                                                      const predicates::Sym3<I>& M) {
+std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::array<int, 4>& t, const predicates::Sym3<I>& M) {
   const auto& a = m.vertex[static_cast<std::size_t>(t[0])];
   std::array<std::array<I, 3>, 3> A;
   std::array<I, 3> rhs;
@@ -106,16 +112,24 @@ std::optional<std::pair<std::array<double, 3>, std::array<double, 3>>> ellipsoid
   const I detM = det3({{{M.m11, M.m12, M.m13}, {M.m12, M.m22, M.m23}, {M.m13, M.m23, M.m33}}});
   if (!(detM.lo > 0)) return std::nullopt;
   const std::array<I, 3> cofactor{M.m22 * M.m33 - M.m23 * M.m23, M.m11 * M.m33 - M.m13 * M.m13, M.m11 * M.m22 - M.m12 * M.m12};
-  const std::array<I, 3> centre{a.x + x[0], a.y + x[1], a.z + x[2]};
-  std::array<double, 3> lo, hi;
+  Ellipsoid e{{a.x + x[0], a.y + x[1], a.z + x[2]}, r2, {}, {}};
   for (std::size_t i = 0; i < 3; ++i) {
     const I half = sqrt(r2 * cofactor[i] / detM);
-    lo[i] = (centre[i] - half).lo, hi[i] = (centre[i] + half).hi;
-    if (!std::isfinite(lo[i]) || !std::isfinite(hi[i])) return std::nullopt;
+    double lo = (e.centre[i] - half).lo, hi = (e.centre[i] + half).hi;
+    if (!std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
     // The grid holds approximations within an ulp of the exact vertices.
-    lo[i] = std::nextafter(std::nextafter(lo[i], -INFINITY), -INFINITY), hi[i] = std::nextafter(std::nextafter(hi[i], INFINITY), INFINITY);
+    e.lo[i] = std::nextafter(std::nextafter(lo, -INFINITY), -INFINITY), e.hi[i] = std::nextafter(std::nextafter(hi, INFINITY), INFINITY);
   }
-  return std::pair{lo, hi};
+  return e;
+}
+
+// Whether vertex p is certainly outside the enclosed ellipsoid: (p − c)ᵀ M (p − c) > r² on the
+// enclosures. Then the exact in-sphere sign is "outside" too; the filter only spares the lifted
+// 4 × 4 determinant for the many candidates of the box that the ellipsoid does not reach.
+bool certainly_outside(const Ellipsoid& e, const predicates::Point3<I>& p, const predicates::Sym3<I>& M) {
+  const std::array<I, 3> d{p.x - e.centre[0], p.y - e.centre[1], p.z - e.centre[2]};
+  const auto Md = times(M, d);
+  return (d[0] * Md[0] + d[1] * Md[1] + d[2] * Md[2]).lo > e.r2.hi;
 }
 
 // sign of the in-sphere test of e against tetrahedron t in the metric of vertex v (interval first).
@@ -183,15 +197,17 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
         // A metric equal to an earlier vertex's (a constant field) asks the same question again.
         const auto same = [&](std::size_t j) { return mesh.metrics[static_cast<std::size_t>(t[j])] == mesh.metrics[static_cast<std::size_t>(v)]; };
         if ((i > 0 && same(0)) || (i > 1 && same(1)) || (i > 2 && same(2))) continue;
-        const auto box = ellipsoid_box(m, t, m.metric[static_cast<std::size_t>(v)]);
-        if (box) {
-          grid.query(box->first, box->second, candidates);
+        const auto& Mv = m.metric[static_cast<std::size_t>(v)];
+        const auto ellipsoid = enclose_ellipsoid(m, t, Mv);
+        if (ellipsoid) {
+          grid.query(ellipsoid->lo, ellipsoid->hi, candidates);
         } else {
           candidates.resize(mesh.vertices.size());
           for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k] = static_cast<int>(k);
         }
         for (const int e : candidates) {
           if (e == t[0] || e == t[1] || e == t[2] || e == t[3]) continue;
+          if (ellipsoid && certainly_outside(*ellipsoid, m.vertex[static_cast<std::size_t>(e)], Mv)) continue;
           ++r.insphere_tests;
           const Sign s = insphere(m, t, e, v) * orientation;
           if (s == Sign::negative || (s == Sign::zero && tied)) continue;

@@ -1,0 +1,86 @@
+// The tetrahedral certifier's throughput (issue 39 targets: at least 1 M tetrahedra/s for
+// validity, 500 k/s for validity + edge lengths + local uniformity on a well-shaped mesh), side
+// by side with reading the same mesh from a Medit file. Meshes: the Kuhn grid of n³ cubes
+// (geometry/kuhn_grid.hpp), 6n³ tetrahedra.
+//  - "delaunay": M = [[1, −¼, −¼], [−¼, 1, −¼], [−¼, −¼, 1]] at every vertex, for which the Kuhn
+//    grid is strictly Delaunay (no vertex inside or on any tetrahedron's M-sphere: checked here,
+//    the run fails otherwise), every tetrahedron well shaped in M (the main diagonal shortened);
+//  - "ties": M = I, each cube's eight corners cospherical: every tetrahedron's search meets exact
+//    ties, which the interval filter cannot decide (the worst case of the exact path).
+// Run: build/bin/certifier3_bench (figures in docs/bench.md).
+#include "geometry/kuhn_grid.hpp"
+#include "io/formats/medit.hpp"
+#include "oracle/certify/mesh_certifier3.hpp"
+
+#include <benchmark/benchmark.h>
+
+using anisocert::Rational;
+using anisocert::predicates::Sym3;
+using namespace anisocert::oracle;
+
+namespace {
+
+anisocert::geometry::Mesh3<Rational> grid(int n, bool ties) {
+  auto m = anisocert::geometry::kuhn_grid(n);
+  const Rational a = ties ? Rational(0) : Rational(-1, 4);
+  m.metrics.assign(m.vertices.size(), Sym3<Rational>{1, a, a, 1, a, 1});
+  return m;
+}
+
+void counters(benchmark::State& state, std::size_t tetrahedra) {
+  state.counters["tetrahedra_per_s"] = benchmark::Counter(static_cast<double>(tetrahedra), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void valid(benchmark::State& state) {
+  const auto m = grid(static_cast<int>(state.range(0)), false);
+  Certify3Options o;
+  o.uniform = false;
+  Certify3Report r;
+  for (auto _ : state) r = certify_mesh3(m, o);
+  if (!r.valid_holds()) state.SkipWithError("the Kuhn grid is not valid");
+  counters(state, m.tetrahedra.size());
+}
+
+void all_checks(benchmark::State& state, bool ties) {
+  const auto m = grid(static_cast<int>(state.range(0)), ties);
+  Certify3Options o;
+  o.metric = true;
+  Certify3Report r;
+  for (auto _ : state) r = certify_mesh3(m, o);
+  if (!r.valid_holds() || !r.uniform_violations.empty()) state.SkipWithError("the Kuhn grid does not hold");
+  if (!ties && !r.uniform_ties.empty()) state.SkipWithError("the Kuhn grid has ties for the Delaunay metric");
+  counters(state, m.tetrahedra.size());
+}
+
+// The two costly checks apart: local uniformity alone, edge lengths alone (validity off).
+void one_check(benchmark::State& state, bool uniform) {
+  const auto m = grid(static_cast<int>(state.range(0)), false);
+  Certify3Options o;
+  o.valid = false;
+  o.uniform = uniform;
+  o.metric = !uniform;
+  Certify3Report r;
+  for (auto _ : state) r = certify_mesh3(m, o);
+  counters(state, m.tetrahedra.size());
+}
+
+// Reading the Medit text of the same mesh (ASCII), for scale.
+void read_medit(benchmark::State& state) {
+  anisocert::io::MeshFile f;
+  f.dimension = 3;
+  f.mesh3 = grid(static_cast<int>(state.range(0)), false);
+  f.mesh3.metrics.clear();
+  const std::string text = anisocert::io::medit_mesh_text(f);
+  for (auto _ : state) benchmark::DoNotOptimize(anisocert::io::read_medit(text, "grid.mesh"));
+  counters(state, f.mesh3.tetrahedra.size());
+}
+
+}  // namespace
+
+BENCHMARK(valid)->Arg(10)->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(all_checks, delaunay, false)->Arg(10)->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(all_checks, ties, true)->Arg(10)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(one_check, uniform, true)->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(one_check, lengths, false)->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK(read_medit)->Arg(10)->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();
