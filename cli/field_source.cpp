@@ -68,6 +68,55 @@ FieldSource field_source(const std::string& text, const std::vector<std::string>
   }
 }
 
+namespace {
+
+std::string point_text(const predicates::Point2<Rational>& p) { return geometry::point_excerpt(p); }
+std::string point_text(const predicates::Point3<Rational>& p) {
+  return "(" + exact_excerpt(p.x) + ", " + exact_excerpt(p.y) + ", " + exact_excerpt(p.z) + ")";
+}
+
+predicates::Sym2<double> evaluate(const fields::MetricField& f, const predicates::Point2<Rational>& p) {
+  return f.at(p.x.convert_to<double>(), p.y.convert_to<double>());
+}
+predicates::Sym3<double> evaluate(const fields::MetricField3& f, const predicates::Point3<Rational>& p) {
+  return f.at(p.x.convert_to<double>(), p.y.convert_to<double>(), p.z.convert_to<double>());
+}
+
+predicates::Sym2<Rational> exactly(const predicates::Sym2<double>& m) {
+  return {rational_from_double(m.m11), rational_from_double(m.m12), rational_from_double(m.m22)};
+}
+predicates::Sym3<Rational> exactly(const predicates::Sym3<double>& m) {
+  return {rational_from_double(m.m11), rational_from_double(m.m12), rational_from_double(m.m13),
+          rational_from_double(m.m22), rational_from_double(m.m23), rational_from_double(m.m33)};
+}
+
+std::string entries_text(const predicates::Sym2<Rational>& m) {
+  return "m11 m12 m22 = " + exact_excerpt(m.m11) + " " + exact_excerpt(m.m12) + " " + exact_excerpt(m.m22);
+}
+std::string entries_text(const predicates::Sym3<Rational>& m) {
+  return "m11 m12 m13 m22 m23 m33 = " + exact_excerpt(m.m11) + " " + exact_excerpt(m.m12) + " " + exact_excerpt(m.m13) + " " +
+         exact_excerpt(m.m22) + " " + exact_excerpt(m.m23) + " " + exact_excerpt(m.m33);
+}
+
+// A built-in field at point i's nearest doubles, its double values taken as the rationals they
+// are. In doubles a field can round to a metric that is not positive definite (underflow to 0,
+// cancellation at a large anisotropy): decided exactly, as for a metric read from a file.
+template <class Field, class P>
+auto sampled(const Field& field, const std::string& text, const P& p, std::size_t i) {
+  decltype(exactly(evaluate(field, p))) m;
+  try {
+    m = exactly(evaluate(field, p));
+  } catch (const std::invalid_argument& e) {  // fields::FieldError, or NumberSyntaxError (not finite)
+    throw UsageError("--field " + text + ": at vertex " + std::to_string(i) + ": " + e.what());
+  }
+  if (!predicates::positive_definite(m))
+    throw UsageError("--field " + text + ": at vertex " + std::to_string(i) + " " + point_text(p) +
+                     ", the field's metric in doubles is not positive definite (" + entries_text(m) + ")");
+  return m;
+}
+
+}  // namespace
+
 std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, const std::string& text,
                                                    const std::vector<predicates::Point2<Rational>>& points) {
   std::vector<predicates::Sym2<Rational>> metrics;
@@ -80,21 +129,27 @@ std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, co
                                " lies outside the background mesh");
       metrics.push_back(*m);
     } else {
-      try {
-        const auto m = source.field.at(p.x.convert_to<double>(), p.y.convert_to<double>());
-        metrics.push_back({rational_from_double(m.m11), rational_from_double(m.m12), rational_from_double(m.m22)});
-      } catch (const std::invalid_argument& e) {  // fields::FieldError, or NumberSyntaxError (not finite)
-        throw UsageError("--field " + text + ": at vertex " + std::to_string(i) + ": " + e.what());
-      }
-      // In doubles a field can round to a metric that is not positive definite (underflow to 0,
-      // cancellation at a large anisotropy): decided exactly, as for a metric read from a file.
-      if (!predicates::positive_definite(metrics.back()))
-        throw UsageError("--field " + text + ": at vertex " + std::to_string(i) + " " + geometry::point_excerpt(p) +
-                         ", the field's metric in doubles is not positive definite (m11 m12 m22 = " +
-                         exact_excerpt(metrics.back().m11) + " " + exact_excerpt(metrics.back().m12) + " " +
-                         exact_excerpt(metrics.back().m22) + ")");
+      metrics.push_back(sampled(source.field, text, p, i));
     }
   }
+  return metrics;
+}
+
+fields::MetricField3 field_source3(const std::string& text, const std::vector<std::string>& params) {
+  if (text.starts_with(background_prefix))
+    throw UsageError("--field " + quoted_excerpt(text) + ": a background field is 2D so far: give the tetrahedral mesh's metrics in a .sol (--metric)");
+  try {
+    return fields::make_field3(text, parameters_of(params));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--field: ") + e.what());
+  }
+}
+
+std::vector<predicates::Sym3<Rational>> metrics3_at(const fields::MetricField3& field, const std::string& text,
+                                                    const std::vector<predicates::Point3<Rational>>& points) {
+  std::vector<predicates::Sym3<Rational>> metrics;
+  metrics.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) metrics.push_back(sampled(field, text, points[i], i));
   return metrics;
 }
 

@@ -32,4 +32,11 @@ FieldSource field_source(const std::string& text, const std::vector<std::string>
 std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, const std::string& text,
                                                    const std::vector<predicates::Point2<Rational>>& points);
 
+// A built-in 3D field (fields/registry.hpp: constant and the UGAWG fields) for a tetrahedral mesh,
+// and its metric at every vertex's nearest doubles (taken exactly, positive definiteness decided
+// exactly). Throws UsageError as above.
+fields::MetricField3 field_source3(const std::string& text, const std::vector<std::string>& params);
+std::vector<predicates::Sym3<Rational>> metrics3_at(const fields::MetricField3& field, const std::string& text,
+                                                    const std::vector<predicates::Point3<Rational>>& points);
+
 }  // namespace anisocert::cli

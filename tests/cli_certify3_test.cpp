@@ -1,7 +1,8 @@
 // `anisocert certify` on tetrahedral meshes (issue 39), as a user runs it on a Medit file with its
 // .sol: the Kuhn grid of 2 × 2 × 2 unit cubes (48 tetrahedra, valid, Delaunay with 48 cospherical
 // ties: mesh_certifier3_test.cpp derives the figures), the same with one tetrahedron reversed, the
-// JSON report, and what is refused with exit 2 (a bound not yet written for tetrahedra, a 2D field,
+// JSON report, a built-in 3D field, and what is refused with exit 2 (a bound not yet written for
+// tetrahedra, a background field,
 // a tetrahedron naming a vertex that does not exist), nothing written.
 #include "cli_run.hpp"
 #include "predicates/orientation3.hpp"
@@ -97,6 +98,47 @@ TEST(CliCertify3, TheKuhnGridIsCertifiedWithItsTies) {
   EXPECT_EQ(j["lengths"]["unit_edges"], 90);  // the cube diagonals (√3) are longer than √2
 }
 
+// A built-in 3D field: the UGAWG linear field on the Kuhn grid of 2 × 2 × 2 unit cubes. At z = 0
+// and z = 1 the field is 100·I (h_z = 0.1, by hand from the README's formula), so the cube
+// edges there are 10 long: none of unit length, and the report names the field as the source.
+// A field with no metric at a vertex (ugawg-polar2 inside its cylinder) is refused naming it.
+TEST(CliCertify3, ABuiltIn3DFieldGivesTheMetrics) {
+  const fs::path d = fresh("field");
+  write(d / "grid.mesh", kuhn_medit(2));
+  const std::string json = (d / "r.json").string();
+  const Outcome r = run("certify " + (d / "grid.mesh").string() + " --field ugawg-linear --json " + json);
+  EXPECT_NE(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.out.find("metrics from --field ugawg-linear"), std::string::npos) << r.out;
+  std::ifstream in(json);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["metric_source"], "--field ugawg-linear");
+  EXPECT_EQ(j["lengths"]["unit_edges"], 0);
+  const Outcome no = run("certify " + (d / "grid.mesh").string() + " --field ugawg-polar2");
+  EXPECT_EQ(no.exit_code, 2);
+  EXPECT_NE(no.err.find("--field ugawg-polar2: at vertex 0: field ugawg-polar2 has no metric at r = 0"), std::string::npos) << no.err;
+}
+
+// `metric` writes a 3D field at a tetrahedral mesh's vertices into a Medit .sol (its doubles,
+// exactly), and certifying against that file gives the report that --field gives; a BAMG .mtr
+// holds 2D metrics only and is refused, nothing written.
+TEST(CliCertify3, AFieldWrittenToASolCertifiesAsTheFieldItself) {
+  const fs::path d = fresh("metric3");
+  write(d / "grid.mesh", kuhn_medit(2));
+  const std::string mesh = (d / "grid.mesh").string(), sol = (d / "polar.sol").string();
+  const Outcome w = run("metric --field ugawg-polar1 --at " + mesh + " -o " + sol);
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  const Outcome a = run("certify " + mesh + " --metric " + sol + " --json " + (d / "a.json").string());
+  const Outcome b = run("certify " + mesh + " --field ugawg-polar1 --json " + (d / "b.json").string());
+  EXPECT_EQ(a.exit_code, b.exit_code);
+  auto ja = nlohmann::json::parse(std::ifstream(d / "a.json")), jb = nlohmann::json::parse(std::ifstream(d / "b.json"));
+  ja.erase("metric_source"), jb.erase("metric_source");
+  EXPECT_EQ(ja, jb);
+  const Outcome mtr = run("metric --field ugawg-polar1 --at " + mesh + " -o " + (d / "polar.mtr").string());
+  EXPECT_EQ(mtr.exit_code, 2);
+  EXPECT_NE(mtr.err.find("polar.mtr: a bamg metric file holds 2D metrics only"), std::string::npos) << mtr.err;
+  EXPECT_FALSE(fs::exists(d / "polar.mtr"));
+}
+
 TEST(CliCertify3, AReversedTetrahedronIsNamed) {
   const fs::path d = fresh("flip");
   write(d / "grid.mesh", kuhn_medit(2, 17));
@@ -112,7 +154,7 @@ TEST(CliCertify3, WhatIsNotYetWrittenForTetrahedraIsRefused) {
   write(d / "grid.sol", identity_sol(8));
   const std::string mesh = (d / "grid.mesh").string(), json = (d / "r.json").string();
   for (const std::string& extra : {std::string(" --rho0 2"), std::string(" --svg ") + (d / "r.svg").string(),
-                                   std::string(" --field constant")}) {
+                                   std::string(" --field background:") + mesh}) {
     const Outcome r = run("certify " + mesh + extra + " --json " + json);
     EXPECT_EQ(r.exit_code, 2) << extra << r.out << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -48,6 +48,32 @@ bool is_metric_file(const std::string& path) {
   return false;
 }
 
+// A tetrahedral mesh: a built-in 3D field at its vertices, into metric files that hold 3×3
+// metrics (a Medit .sol/.solb) or the mesh's own files with their metrics (Medit, Gmsh).
+int write_metric3(const MetricOptions& o, io::MeshFile& f) {
+  f.mesh3.metrics = metrics3_at(field_source3(o.field, o.params), o.field, f.mesh3.vertices);
+  std::vector<OutputFile> files;
+  try {
+    for (const std::string& path : o.outputs) {
+      if (is_metric_file(path)) {
+        const io::MetricFormat& format = io::metric_format_of(path);
+        if (!format.write3) throw UsageError(path + ": a " + format.name + " metric file holds 2D metrics only (use a Medit .sol)");
+        io::FileText t = format.write3(f.mesh3.metrics, path);
+        files.push_back({std::move(t.path), std::move(t.content)});
+      } else {
+        for (io::FileText& t : io::mesh_format_to_write(path).write(f, path)) files.push_back({std::move(t.path), std::move(t.content)});
+      }
+    }
+  } catch (const io::InputError& e) {
+    throw UsageError(e.what());
+  }
+  write_files_atomically(files);
+  std::string written;
+  for (const OutputFile& file : files) written += (written.empty() ? "" : ", ") + file.path;
+  emit("metric: field " + o.field + " at " + std::to_string(f.mesh3.vertices.size()) + " vertices of " + o.at + ": " + written + "\n");
+  return 0;
+}
+
 int run_metric(const MetricOptions& o) {
   if (o.at.empty() == (o.grid == 0)) throw UsageError("give one of --at MESH and --grid N");
   io::MeshFile f;
@@ -56,7 +82,7 @@ int run_metric(const MetricOptions& o) {
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }
-  if (f.dimension == 3) throw UsageError(o.at + " is a tetrahedral mesh, and the built-in fields are 2D");
+  if (f.dimension == 3) return write_metric3(o, f);
   FieldSource source = field_source(o.field, o.params);
   // A file holds decimals or doubles, and a background mesh's exact P1 values are rationals with
   // no finite decimal expansion in general: every field is written at its doubles.

@@ -556,9 +556,17 @@ std::vector<FileText> write_medit_file(const MeshFile& m, const std::string& pat
   return files;
 }
 
-FileText write_medit_sol(const std::vector<Sym2<Rational>>& metrics, const std::string& path) {
+namespace {
+
+template <class M>
+FileText sol_file(const std::vector<M>& metrics, const std::string& path) {
   const bool binary = path.size() >= 5 && path.compare(path.size() - 5, 5, ".solb") == 0;
   return {path, medit_sol_text(metrics, binary ? MeditEncoding::binary : MeditEncoding::ascii)};
 }
+
+}  // namespace
+
+FileText write_medit_sol(const std::vector<Sym2<Rational>>& metrics, const std::string& path) { return sol_file(metrics, path); }
+FileText write_medit_sol3(const std::vector<Sym3<Rational>>& metrics, const std::string& path) { return sol_file(metrics, path); }
 
 }  // namespace anisocert::io

@@ -38,5 +38,6 @@ std::string medit_sol_text(const std::vector<predicates::Sym3<Rational>>& metric
 // path.mesh or path.meshb (by its extension), with path's .sol/.solb beside it when m has metrics.
 std::vector<FileText> write_medit_file(const MeshFile& m, const std::string& path);
 FileText write_medit_sol(const std::vector<predicates::Sym2<Rational>>& metrics, const std::string& path);
+FileText write_medit_sol3(const std::vector<predicates::Sym3<Rational>>& metrics, const std::string& path);
 
 }  // namespace anisocert::io

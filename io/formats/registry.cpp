@@ -92,7 +92,7 @@ const std::vector<MeshFormat>& mesh_formats() {
 const std::vector<MetricFormat>& metric_formats() {
   static const std::vector<MetricFormat> formats{
       {"medit", "Medit .sol/.solb: SolAtVertices, type 1 (size) or 3 (tensor)", {".sol", ".solb"}, nullptr,
-       read_medit_sol_file, write_medit_sol, read_medit_sol3_file},
+       read_medit_sol_file, write_medit_sol, read_medit_sol3_file, write_medit_sol3},
       {"bamg", "BAMG .mtr: nbv 1 (sizes) or nbv 3 (a11 a21 a22)", {".mtr"}, nullptr, read_bamg_metric_file,
        write_bamg_metric},
   };

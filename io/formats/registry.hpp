@@ -38,6 +38,7 @@ struct MetricFormat {
   FileText (*write)(const std::vector<predicates::Sym2<Rational>>& metrics, const std::string& path) = nullptr;
   // The 3×3 metrics of a tetrahedral mesh (nullptr: the format holds 2D metrics only).
   std::vector<predicates::Sym3<Rational>> (*read3)(const std::string& path) = nullptr;
+  FileText (*write3)(const std::vector<predicates::Sym3<Rational>>& metrics, const std::string& path) = nullptr;
 };
 
 const std::vector<MeshFormat>& mesh_formats();
