@@ -343,6 +343,14 @@ TEST(CliMesh, BwyRefinesTheShockFieldAndDualConfirmsIt) {
     EXPECT_NE(refused.err.find(std::string(bad) + " is out of range"), std::string::npos) << bad << ": " << refused.err;
     EXPECT_FALSE(std::filesystem::exists(base + "_never.json")) << bad;
   }
+  // LS's θ_bound must lie in (0°, 60°): each end is refused on its own (a campaign survivor
+  // accepted every value), nothing written.
+  for (const char* bad : {"--theta-bound 60", "--theta-bound 0", "--theta-bound -5", "--size -1"}) {
+    const Outcome refused = run(std::string("refine --algo ls --quiet -o ") + base + "_never.json " + bad);
+    EXPECT_EQ(refused.exit_code, 2) << bad;
+    EXPECT_NE(refused.err.find(std::string(bad) + " is out of range"), std::string::npos) << bad << ": " << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(base + "_never.json")) << bad;
+  }
   const Outcome ls_parameter = run("refine --algo bwy --theta-bound 20 --quiet -o " + base + "_never.json");
   EXPECT_EQ(ls_parameter.exit_code, 2);
   EXPECT_NE(ls_parameter.err.find("--theta-bound is not a parameter of --algo bwy"), std::string::npos) << ls_parameter.err;

@@ -362,6 +362,20 @@ TEST(LsRefiner, RunningIntoASharpCornerStopsByName) {
             std::string::npos)
       << r.stop_reason;
   EXPECT_LT(r.mesh.sites.size(), 1000u);
+  // It stops before the split, not after: along both edges at the corner, no two sites are
+  // closer than 2⁻³⁰ of the edge's length (a campaign survivor split once more, then stopped).
+  const std::vector<Point2<double>> corners{{0, 0}, {1, 0}, {0.96875, 0.25}};
+  for (const auto& [from, to] : {std::pair{0, 1}, std::pair{0, 2}}) {
+    const auto &a = corners[static_cast<std::size_t>(from)], &b = corners[static_cast<std::size_t>(to)];
+    std::vector<double> along;  // the sites exactly on the edge, by their distance from a
+    for (const auto& q : r.mesh.sites)
+      if (predicates::orientation(a, b, q) == Sign::zero && (q.x - a.x) * (b.x - a.x) + (q.y - a.y) * (b.y - a.y) >= 0)
+        along.push_back(std::hypot(q.x - a.x, q.y - a.y));
+    std::sort(along.begin(), along.end());
+    ASSERT_GT(along.size(), 2u);
+    const double least = std::ldexp(std::hypot(b.x - a.x, b.y - a.y), -30);
+    for (std::size_t i = 1; i < along.size(); ++i) EXPECT_GE(along[i] - along[i - 1], least * (1 - 1e-9)) << "edge " << from << "-" << to;
+  }
 }
 
 // reaches(a, b, w), LS encroachment with three metrics, against exact rational samples of s: a
