@@ -17,15 +17,23 @@ namespace {
 
 std::string indexed(const char* what, std::size_t i) { return std::string(what) + "[" + std::to_string(i) + "]"; }
 
-void check_metrics(const std::vector<Metric>& metrics, std::size_t sites, const char* what) {
+std::string entries(const Metric& m) {
+  return "[" + to_exact_string(m.m11) + ", " + to_exact_string(m.m12) + ", " + to_exact_string(m.m22) +
+         "] is not positive definite (m11 > 0 and m11 m22 - m12^2 > 0)";
+}
+std::string entries(const Metric3& m) {
+  return "[" + to_exact_string(m.m11) + ", " + to_exact_string(m.m12) + ", " + to_exact_string(m.m13) + ", " +
+         to_exact_string(m.m22) + ", " + to_exact_string(m.m23) + ", " + to_exact_string(m.m33) +
+         "] is not positive definite (its three leading minors must be positive)";
+}
+
+template <class M>
+void check_metrics(const std::vector<M>& metrics, std::size_t sites, const char* what) {
   if (metrics.size() != sites)
     throw std::invalid_argument(std::string(what) + ": " + std::to_string(metrics.size()) + " metrics for " +
                                 std::to_string(sites) + " sites (one per site)");
   for (std::size_t i = 0; i < metrics.size(); ++i)
-    if (!predicates::positive_definite(metrics[i]))
-      throw std::invalid_argument(indexed(what, i) + ": the metric [" + to_exact_string(metrics[i].m11) + ", " +
-                                  to_exact_string(metrics[i].m12) + ", " + to_exact_string(metrics[i].m22) +
-                                  "] is not positive definite (m11 > 0 and m11 m22 - m12^2 > 0)");
+    if (!predicates::positive_definite(metrics[i])) throw std::invalid_argument(indexed(what, i) + ": the metric " + entries(metrics[i]));
 }
 
 void check_index(int v, std::size_t sites, const std::string& where) {
@@ -98,26 +106,54 @@ Point exact_point(const predicates::Point2<double>& p, const std::string& where)
   return {exact_number(p.x, where + ".x"), exact_number(p.y, where + ".y")};
 }
 
+Point3 exact_point(const predicates::Point3<double>& p, const std::string& where) {
+  return {exact_number(p.x, where + ".x"), exact_number(p.y, where + ".y"), exact_number(p.z, where + ".z")};
+}
+
 Metric exact_metric(const DoubleMetric& m, const std::string& where) {
   return {exact_number(m.m11, where + ".m11"), exact_number(m.m12, where + ".m12"), exact_number(m.m22, where + ".m22")};
 }
 
-std::vector<Metric> exact_metrics(const std::vector<DoubleMetric>& metrics, const char* what) {
-  std::vector<Metric> e;
+Metric3 exact_metric(const DoubleMetric3& m, const std::string& where) {
+  return {exact_number(m.m11, where + ".m11"), exact_number(m.m12, where + ".m12"), exact_number(m.m13, where + ".m13"),
+          exact_number(m.m22, where + ".m22"), exact_number(m.m23, where + ".m23"), exact_number(m.m33, where + ".m33")};
+}
+
+template <class D>
+auto exact_metrics(const std::vector<D>& metrics, const char* what) {
+  std::vector<decltype(exact_metric(metrics.front(), ""))> e;
   e.reserve(metrics.size());
   for (std::size_t i = 0; i < metrics.size(); ++i) e.push_back(exact_metric(metrics[i], indexed(what, i)));
   return e;
 }
 
+// What certify_mesh3 takes on trust: indices naming vertices; a length range in order.
+void check_mesh(const Mesh3& mesh, const Certify3Options& o) {
+  const std::size_t n = mesh.vertices.size();
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
+    for (int v : mesh.tetrahedra[t]) check_index(v, n, indexed("tetrahedra", t));
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int v : mesh.triangles[t]) check_index(v, n, indexed("triangles", t));
+  if (o.length_range && (o.length_range->first < 0 || o.length_range->first > o.length_range->second))
+    throw std::invalid_argument("Certify3Options: length_range: expected 0 <= low <= high");
+}
+
 }  // namespace
 
-std::string Certificate::text(const std::string& name) const { return io::full_text(verdict, name); }
+template <class Report>
+std::string CertificateOf<Report>::text(const std::string& name) const {
+  return io::full_text(verdict, name);
+}
 
-std::string Certificate::json() const {
+template <class Report>
+std::string CertificateOf<Report>::json() const {
   std::ostringstream out;
   io::write_json(out, verdict, report);
   return out.str();
 }
+
+template struct CertificateOf<oracle::CertifyReport>;
+template struct CertificateOf<oracle::Certify3Report>;
 
 Certificate certify(const Mesh& mesh, const std::vector<Metric>& metrics, const CertifyOptions& options) {
   check_mesh(mesh);
@@ -181,6 +217,39 @@ std::vector<std::string> write_mesh(const Mesh& m, const std::string& path, cons
   MeshFile f;
   f.mesh = m;
   return write_mesh(f, path, format);
+}
+
+Certificate3 certify(const Mesh3& mesh, const std::vector<Metric3>& metrics, const Certify3Options& options) {
+  check_mesh(mesh, options);
+  if (!metrics.empty()) check_metrics(metrics, mesh.vertices.size(), "metrics");
+  else if (!mesh.metrics.empty()) check_metrics(mesh.metrics, mesh.vertices.size(), "mesh.metrics");
+  Mesh3 with_metrics;
+  if (!metrics.empty()) {
+    with_metrics = mesh;
+    with_metrics.metrics = metrics;
+  }
+  const Mesh3& m = metrics.empty() ? mesh : with_metrics;
+  io::BoundTexts bounds;
+  if (options.length_range)
+    bounds.length_lo = to_exact_string(options.length_range->first), bounds.length_hi = to_exact_string(options.length_range->second);
+  Certificate3 c;
+  c.report = oracle::certify_mesh3(m, options);
+  c.verdict = io::certify_verdict(c.report, options, m, bounds);
+  c.holds = c.verdict.holds;
+  return c;
+}
+
+Certificate3 certify(const DoubleMesh3& mesh, const std::vector<DoubleMetric3>& metrics, const Certify3Options& options) {
+  return certify(exact_mesh(mesh), exact_metrics(metrics, "metrics"), options);
+}
+
+Mesh3 exact_mesh(const DoubleMesh3& mesh) {
+  Mesh3 e;
+  e.vertices.reserve(mesh.vertices.size());
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) e.vertices.push_back(exact_point(mesh.vertices[i], indexed("vertices", i)));
+  e.metrics = exact_metrics(mesh.metrics, "mesh.metrics");
+  e.tetrahedra = mesh.tetrahedra, e.triangles = mesh.triangles;
+  return e;
 }
 
 }  // namespace anisocert

@@ -100,6 +100,24 @@ int main(int argc, char** argv) {
   check(throws<anisocert::InputError>([&] { anisocert::write_mesh(exact, dir + "/square.unknown"); }, "square.unknown"),
         "an unknown extension: anisocert::InputError naming it");
 
+  // A tetrahedral mesh (issue 39): two tetrahedra across the face (0,0,0), (1,0,0), (0,1,0), the
+  // second apex at (0.3, 0.3, -0.1) inside the first's circumsphere (centre (1/2, 1/2, 1/2),
+  // radius^2 3/4; the apex at distance^2 0.44): valid, not locally uniform for M = I; with
+  // M = diag(1, 1, 10^4) (z squashed) the apexes are far outside each other's ellipsoids.
+  anisocert::DoubleMesh3 tets;
+  tets.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.3, 0.3, -0.1}};
+  tets.tetrahedra = {{0, 1, 2, 3}, {0, 2, 1, 4}};
+  const anisocert::Certificate3 flip = anisocert::certify(tets, std::vector<anisocert::DoubleMetric3>(5, {1, 0, 0, 1, 0, 1}));
+  check(!flip.holds && flip.report.valid_holds() && flip.report.uniform_violations.count() == 2,
+        "two tetrahedra across a face that should flip: valid, each named once");
+  check(flip.json().find("\"tetrahedra\": 2") != std::string::npos, "its JSON counts the tetrahedra");
+  const anisocert::Certificate3 squashed = anisocert::certify(tets, std::vector<anisocert::DoubleMetric3>(5, {1, 0, 0, 1, 0, 1e4}));
+  if (!squashed.holds) std::cerr << squashed.text("two tetrahedra");
+  check(squashed.holds, "with z squashed by the metric they are certified");
+  check(throws<std::invalid_argument>([&] { anisocert::certify(tets, std::vector<anisocert::DoubleMetric3>(5, {-1, 0, 0, -1, 0, 1})); },
+                                      "metrics[0]"),
+        "diag(-1, -1, 1) (det +1) is no metric: std::invalid_argument naming it");
+
   std::cout << (failures ? std::to_string(failures) + " failed\n" : "all passed\n");
   return failures ? 1 : 0;
 }
