@@ -136,6 +136,9 @@ void check_mesh(const Mesh3& mesh, const Certify3Options& o) {
     for (int v : mesh.triangles[t]) check_index(v, n, indexed("triangles", t));
   if (o.length_range && (o.length_range->first < 0 || o.length_range->first > o.length_range->second))
     throw std::invalid_argument("Certify3Options: length_range: expected 0 <= low <= high");
+  if (o.min_quality && (*o.min_quality < 0 || *o.min_quality > 1)) throw std::invalid_argument("Certify3Options: min_quality must be in [0, 1]");
+  if ((o.length_range || o.min_quality) && !o.metric)
+    throw std::invalid_argument("Certify3Options: length_range and min_quality need the metric check (metric = true)");
 }
 
 }  // namespace
@@ -232,6 +235,7 @@ Certificate3 certify(const Mesh3& mesh, const std::vector<Metric3>& metrics, con
   io::BoundTexts bounds;
   if (options.length_range)
     bounds.length_lo = to_exact_string(options.length_range->first), bounds.length_hi = to_exact_string(options.length_range->second);
+  if (options.min_quality) bounds.min_quality = to_exact_string(*options.min_quality);
   Certificate3 c;
   c.report = oracle::certify_mesh3(m, options);
   c.verdict = io::certify_verdict(c.report, options, m, bounds);

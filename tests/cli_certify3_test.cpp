@@ -139,6 +139,24 @@ TEST(CliCertify3, AFieldWrittenToASolCertifiesAsTheFieldItself) {
   EXPECT_FALSE(fs::exists(d / "polar.mtr"));
 }
 
+// --min-quality on tetrahedra: the Kuhn tetrahedron's mean ratio is 0.432^(1/3) = 0.7560 for M = I
+// (mesh_certifier3_test.cpp derives it), so 3/4 holds and 0.76 fails for all 48.
+TEST(CliCertify3, MinQualityIsAVerdictOnTetrahedra) {
+  const fs::path d = fresh("quality");
+  write(d / "grid.mesh", kuhn_medit(2));
+  write(d / "grid.sol", identity_sol(27));
+  const std::string mesh = (d / "grid.mesh").string(), json = (d / "q.json").string();
+  const Outcome ok = run("certify " + mesh + " --checks valid,metric --min-quality 3/4");
+  EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
+  EXPECT_NE(ok.out.find("mean-ratio quality >= 3/4 in each vertex's metric: holds (least ∈ [0.7559"), std::string::npos) << ok.out;
+  const Outcome no = run("certify " + mesh + " --checks valid,metric --min-quality 0.76 --json " + json);
+  EXPECT_EQ(no.exit_code, 1) << no.out << no.err;
+  std::ifstream in(json);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["quality"]["violation_count"], 48);
+  EXPECT_EQ(j["quality"]["least_tetrahedron"].is_number(), true);
+}
+
 TEST(CliCertify3, AReversedTetrahedronIsNamed) {
   const fs::path d = fresh("flip");
   write(d / "grid.mesh", kuhn_medit(2, 17));

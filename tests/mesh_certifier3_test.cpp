@@ -229,3 +229,33 @@ TEST(MeshCertifier3, FiltersNeverChangeTheUniformVerdict) {
   EXPECT_GT(violated, 100u);
   EXPECT_GT(tied, 30u);
 }
+
+// The mean ratio of tetrahedra, 12 (3 V_M)^(2/3) / Σ ℓ_M², by hand: a Kuhn tetrahedron has
+// |D| = 1 (six volumes) and edges 1, 1, 1, √2, √2, √3 (Σ ℓ² = 10), so q³ = 432 / 1000 and
+// q = 0.7560 for M = I: a bound of 3/4 (27/64 < 432/1000) holds and 19/25 (6859/15625 > 432/1000)
+// fails for all 48 tetrahedra of the 2 × 2 × 2 grid. The regular tetrahedron (1, 1, 1),
+// (1, −1, −1), (−1, 1, −1), (−1, −1, 1) has quality exactly 1: the bound 1 holds (the exact
+// boundary), and fails once M = diag(1, 1, 4) stretches it.
+TEST(MeshCertifier3, MeanRatioQualityIsDecidedExactly) {
+  Certify3Options o = all_checks();
+  const Mesh3 grid = kuhn_grid(2, {1, 0, 0, 1, 0, 1});
+  o.min_quality = Rational(3, 4);
+  const Certify3Report a = certify_mesh3(grid, o);
+  ASSERT_TRUE(a.quality);
+  EXPECT_EQ(a.quality->measured, 48u);
+  EXPECT_TRUE(a.quality->violations.empty());
+  EXPECT_LE(a.quality->worst.lo, 0.7559527);  // 0.432^(1/3) = 0.75595263...
+  EXPECT_GE(a.quality->worst.hi, 0.7559526);
+  o.min_quality = Rational(19, 25);
+  EXPECT_EQ(certify_mesh3(grid, o).quality->violations.count(), 48u);
+  Mesh3 regular;
+  regular.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  regular.tetrahedra = {{0, 1, 2, 3}};
+  regular.metrics.assign(4, Sym3<Rational>{1, 0, 0, 1, 0, 1});
+  o.min_quality = Rational(1);
+  const Certify3Report r = certify_mesh3(regular, o);
+  EXPECT_TRUE(r.quality->violations.empty());
+  EXPECT_TRUE(r.holds(o));
+  regular.metrics.assign(4, Sym3<Rational>{1, 0, 0, 1, 0, 4});
+  EXPECT_EQ(certify_mesh3(regular, o).quality->violations.count(), 1u);
+}

@@ -69,7 +69,7 @@ void add_lengths(const oracle::LengthReport& l, const BoundTexts& b, CertifyVerd
         {"shortest_edge", l.shortest_edge}, {"longest_edge", l.longest_edge}, {"violation_count", l.range_violations.count()}}});
 }
 
-void add_quality(const oracle::QualityReport& q, const BoundTexts& b, CertifyVerdict& v) {
+void add_quality(const oracle::QualityReport& q, const BoundTexts& b, CertifyVerdict& v, const std::string& element = "triangle") {
   const bool bounded = !b.min_quality.empty();
   std::string median;
   ReportJson qj = ReportJson::array();
@@ -77,15 +77,17 @@ void add_quality(const oracle::QualityReport& q, const BoundTexts& b, CertifyVer
     if (p == 0.5) median = ", median ∈ " + enclosure_text(e);
     qj.push_back({{"p", p}, {"enclosure", enclosure_json(e)}});
   }
-  const std::string undecided = q.undecided ? ", " + std::to_string(q.undecided) + " flat or clockwise triangles not measured" : "";
+  const std::string undecided =
+      q.undecided ? ", " + std::to_string(q.undecided) + (element == "triangle" ? " flat or clockwise triangles" : " flat tetrahedra") + " not measured"
+                  : "";
   v.checks.push_back(
       {"quality", bounded ? "mean-ratio quality >= " + excerpt(b.min_quality) + " in each vertex's metric" : "mean-ratio quality in the metrics",
        bounded ? "quality >= " + excerpt(b.min_quality) : "quality", q.violations.empty(), bounded,
-       " (least ∈ " + enclosure_text(q.worst) + " at triangle " + std::to_string(q.worst_triangle) + median + undecided + ")",
+       " (least ∈ " + enclosure_text(q.worst) + " at " + element + " " + std::to_string(q.worst_triangle) + median + undecided + ")",
        "", {texts(q.violations)},
        {{"threshold", bounded ? ReportJson(b.min_quality) : ReportJson(nullptr)}, {"holds", q.violations.empty()},
         {"measured", q.measured}, {"unmeasured", q.undecided}, {"least", enclosure_json(q.worst)},
-        {"least_triangle", q.worst_triangle}, {"quantiles", qj}, {"violation_count", q.violations.count()}}});
+        {"least_" + element, q.worst_triangle}, {"quantiles", qj}, {"violation_count", q.violations.count()}}});
 }
 
 void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdict& v) {
@@ -148,6 +150,7 @@ CertifyVerdict certify_verdict(const oracle::Certify3Report& r, const oracle::Ce
   if (r.valid) add_validity3(r, v);
   if (r.uniform_checked) add_uniform3(r, v);
   if (r.lengths) add_lengths(*r.lengths, b, v);
+  if (r.quality) add_quality(*r.quality, b, v, "tetrahedron");
   return v;
 }
 
@@ -253,6 +256,7 @@ std::vector<StreamedList> lists_of(const std::string& key, const oracle::Certify
   if (key == "locally_uniform")
     return {witness_list("violations", r.uniform_violations, "tetrahedron"), witness_list("ties", r.uniform_ties, "tetrahedron")};
   if (key == "lengths") return {witness_list("violations", r.lengths->range_violations)};
+  if (key == "quality") return {witness_list("violations", r.quality->violations, "tetrahedron")};
   return {};
 }
 

@@ -226,7 +226,10 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
       }
     }
   }
-  if (o.metric && has_metrics) r.lengths = check_lengths(m, unique_edges(mesh.tetrahedra), o.length_range, o.described_witnesses);
+  if (o.metric && has_metrics) {
+    r.lengths = check_lengths(m, unique_edges(mesh.tetrahedra), o.length_range, o.described_witnesses);
+    r.quality = check_quality(m, o.min_quality, o.described_witnesses);
+  }
   return r;
 }
 

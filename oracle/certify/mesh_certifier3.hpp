@@ -8,8 +8,9 @@
 //    witness per tetrahedron as in 2D (its search stops at the first vertex strictly inside, and
 //    records one tie at most), a vertex whose metric equals an earlier one's not asked again;
 //  - conforming to its metric: edge lengths in both endpoints' metrics, the share in
-//    [1/√2, √2] decided exactly, and a range as a verdict (metric_checks.hpp, one loop for both
-//    dimensions).
+//    [1/√2, √2] decided exactly, and a range as a verdict; the mean-ratio quality in each vertex's
+//    metric, enclosed, and a lower bound as a verdict (metric_checks.hpp, one loop for both
+//    dimensions each).
 // Each check's verdict stands on its own; a flat tetrahedron is counted as unmeasured by the
 // locally uniform check. Candidates for an M_v-circumellipsoid come from a grid of the vertices,
 // within its bounding box enclosed in interval arithmetic (the centre solved by Cramer's rule,
@@ -27,6 +28,7 @@ struct Certify3Options {
   bool valid = true, uniform = true;
   bool metric = false;                                        // edge lengths in the metrics
   std::optional<std::pair<Rational, Rational>> length_range;  // verdict: every metric length in it
+  std::optional<Rational> min_quality;                        // verdict: every mean ratio at least it (in [0, 1])
   std::size_t described_witnesses = default_described_witnesses;
 };
 
@@ -36,11 +38,13 @@ struct Certify3Report {
   WitnessList uniform_violations, uniform_ties;  // vertex v, tetrahedron, the vertex inside (or on) the M_v-sphere
   std::size_t insphere_tests = 0, unmeasured = 0;
   std::optional<LengthReport> lengths;
+  std::optional<QualityReport> quality;
   std::size_t tetrahedra = 0;
 
   bool valid_holds() const { return valid && valid->valid; }
   bool holds(const Certify3Options& o) const {
-    return (!o.valid || valid_holds()) && (!o.uniform || uniform_violations.empty()) && (!lengths || lengths->range_violations.empty());
+    return (!o.valid || valid_holds()) && (!o.uniform || uniform_violations.empty()) && (!lengths || lengths->range_violations.empty()) &&
+           (!quality || quality->violations.empty());
   }
 };
 

@@ -57,6 +57,10 @@ LengthReport check_lengths(const EnclosedMesh3& m, const std::vector<std::pair<i
                            const std::optional<std::pair<Rational, Rational>>& range, std::size_t described = all_witnesses);
 QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>& min_quality,
                             std::size_t described = all_witnesses);
+// The same for tetrahedra (issue 39): 12 (3 V_M)^(2/3) / Σ ℓ_M², 1 for the regular tetrahedron,
+// decided against q₀ by 432 det(M) D² ≥ q₀³ S³ exactly; flat tetrahedra not measured.
+QualityReport check_quality(const EnclosedMesh3& m, const std::optional<Rational>& min_quality,
+                            std::size_t described = all_witnesses);
 AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& min_angle_degrees,
                          std::size_t described = all_witnesses);
 

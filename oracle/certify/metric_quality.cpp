@@ -1,4 +1,5 @@
-// The mean-ratio quality of triangles in their vertices' metrics (metric_checks.hpp).
+// The mean-ratio quality of triangles and tetrahedra in their vertices' metrics (metric_checks.hpp):
+// one loop, a level per dimension.
 #include "oracle/certify/metric_checks.hpp"
 
 #include "predicates/filtered_sign.hpp"
@@ -43,53 +44,142 @@ struct QualityKernel {
   }
 };
 
-}  // namespace
+// 432 det(M) D² − q₀³ S³, D = det[b − a; c − a; d − a] (six volumes), S = Σ ℓ_M² over the six
+// edges: positive or zero exactly when the tetrahedron's mean ratio 12 (3 V_M)^(2/3) / S, V_M =
+// √det M · |D|/6, is at least q₀ (the regular tetrahedron: D² = 1/2 for unit edges, S = 6, 1).
+struct Quality3Kernel {
+  static constexpr std::size_t arity = 19;
+  template <class T>
+  static T eval(const std::array<T, arity>& x) {
+    const std::array<T, 3> a{x[0], x[1], x[2]};
+    std::array<std::array<T, 3>, 4> p{a, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}, {x[9], x[10], x[11]}};
+    const T m11 = x[12], m12 = x[13], m13 = x[14], m22 = x[15], m23 = x[16], m33 = x[17];
+    const auto form = [&](const T& dx, const T& dy, const T& dz) {
+      return T(dx * (m11 * dx + m12 * dy + m13 * dz) + dy * (m12 * dx + m22 * dy + m23 * dz) + dz * (m13 * dx + m23 * dy + m33 * dz));
+    };
+    T S(0);
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j) S = S + form(T(p[j][0] - p[i][0]), T(p[j][1] - p[i][1]), T(p[j][2] - p[i][2]));
+    const T ux = p[1][0] - a[0], uy = p[1][1] - a[1], uz = p[1][2] - a[2];
+    const T vx = p[2][0] - a[0], vy = p[2][1] - a[1], vz = p[2][2] - a[2];
+    const T wx = p[3][0] - a[0], wy = p[3][1] - a[1], wz = p[3][2] - a[2];
+    const T D = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
+    const T det = m11 * (m22 * m33 - m23 * m23) - m12 * (m12 * m33 - m23 * m13) + m13 * (m12 * m23 - m22 * m13);
+    return T(432) * det * D * D - x[18] * S * S * S;
+  }
+};
 
-QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>& min_quality, std::size_t described) {
+// The cube root of an enclosure, widened by two ulps each way (glibc's cbrt is within one).
+FilterInterval cbrt(const FilterInterval& x) {
+  const auto down = [](double v) { return std::nextafter(std::nextafter(v, -INFINITY), -INFINITY); };
+  const auto up = [](double v) { return std::nextafter(std::nextafter(v, INFINITY), INFINITY); };
+  return {std::max(0.0, down(std::cbrt(std::max(0.0, x.lo)))), up(std::cbrt(x.hi))};
+}
+
+// Per dimension, what the one loop below asks of an element: whether it can be measured, its
+// vertices, the enclosure of its quality in one vertex's metric, and the exact decision of
+// quality ≥ q₀ (the sign of the kernel; q0k = q₀² in 2D, q₀³ in 3D).
+struct Triangles {
+  const EnclosedMesh& m;
+  static constexpr const char* kind = "triangle";
+  static constexpr int power = 2;
+  std::size_t size() const { return m.mesh.triangles.size(); }
+  const std::array<int, 3>& vertices(std::size_t t) const { return m.mesh.triangles[t]; }
+  bool measurable(std::size_t t) const {  // flat or clockwise: validity reports it
+    const auto& tri = vertices(t);
+    return m.orientation(tri[0], tri[1], tri[2]) == Sign::positive;
+  }
+  FilterInterval quality(std::size_t t, int v) const {
+    const auto& tri = vertices(t);
+    const auto &a = m.site[tri[0]], &b = m.site[tri[1]], &c = m.site[tri[2]];
+    const auto& M = m.metric[v];
+    const auto p = quality_parts(edges_of(a.x, a.y, b.x, b.y, c.x, c.y), M.m11, M.m12, M.m22);
+    return sqrt(FilterInterval(12) * p.det) * p.D / p.S;
+  }
+  Sign decide(std::size_t t, int v, const FilterInterval& q0k, const Rational& q0k_exact) const {
+    const auto& tri = vertices(t);
+    const auto &a = m.site[tri[0]], &b = m.site[tri[1]], &c = m.site[tri[2]];
+    const auto& M = m.metric[v];
+    return predicates::interval_then_exact<QualityKernel>(
+        std::array<FilterInterval, 10>{a.x, a.y, b.x, b.y, c.x, c.y, M.m11, M.m12, M.m22, q0k}, [&] {
+          const auto& s = m.mesh.sites;
+          const auto& n = m.mesh.metrics;
+          return std::array<Rational, 10>{s[tri[0]].x, s[tri[0]].y, s[tri[1]].x, s[tri[1]].y, s[tri[2]].x,
+                                          s[tri[2]].y, n[v].m11, n[v].m12, n[v].m22, q0k_exact};
+        });
+  }
+};
+
+struct Tetrahedra {
+  const EnclosedMesh3& m;
+  static constexpr const char* kind = "tetrahedron";
+  static constexpr int power = 3;
+  std::size_t size() const { return m.mesh.tetrahedra.size(); }
+  const std::array<int, 4>& vertices(std::size_t t) const { return m.mesh.tetrahedra[t]; }
+  bool measurable(std::size_t t) const {  // flat: validity reports it; either orientation is measured (D² alone)
+    const auto& k = vertices(t);
+    return m.orientation(k[0], k[1], k[2], k[3]) != Sign::zero;
+  }
+  template <class T, class P, class Mt>
+  static std::array<T, 19> arguments(const std::array<int, 4>& k, const std::vector<P>& x, const Mt& M, const T& q0k) {
+    std::array<T, 19> a;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& p = x[static_cast<std::size_t>(k[i])];
+      a[3 * i] = p.x, a[3 * i + 1] = p.y, a[3 * i + 2] = p.z;
+    }
+    a[12] = M.m11, a[13] = M.m12, a[14] = M.m13, a[15] = M.m22, a[16] = M.m23, a[17] = M.m33, a[18] = q0k;
+    return a;
+  }
+  // q = (432 det M D² / S³)^(1/3), the kernel's parts at q₀ = 0 and 1.
+  FilterInterval quality(std::size_t t, int v) const {
+    const auto x = arguments(vertices(t), m.vertex, m.metric[static_cast<std::size_t>(v)], FilterInterval(0));
+    const FilterInterval top = Quality3Kernel::eval(x);
+    auto y = x;
+    y[18] = FilterInterval(1);
+    const FilterInterval cube = top - Quality3Kernel::eval(y);  // S³
+    return cbrt(top / cube);
+  }
+  Sign decide(std::size_t t, int v, const FilterInterval& q0k, const Rational& q0k_exact) const {
+    const auto& k = vertices(t);
+    return predicates::interval_then_exact<Quality3Kernel>(arguments(k, m.vertex, m.metric[static_cast<std::size_t>(v)], q0k), [&] {
+      return arguments(k, m.mesh.vertices, m.mesh.metrics[static_cast<std::size_t>(v)], q0k_exact);
+    });
+  }
+};
+
+// The mean ratio of every element in each of its vertices' metrics, the least over its vertices
+// enclosed, the quantiles, and (with q₀) one witness per element below it, decided exactly.
+template <class Level>
+QualityReport check_quality_of(const Level& level, const std::optional<Rational>& min_quality, std::size_t described) {
   QualityReport r;
   r.violations = WitnessList(described);
-  const auto& tris = m.mesh.triangles;
-  std::optional<Rational> q2;
-  FilterInterval q2i;
-  if (min_quality) q2 = *min_quality * *min_quality, q2i = enclose(*q2);
+  std::optional<Rational> q0k;
+  FilterInterval q0ki;
+  if (min_quality) q0k = Level::power == 2 ? *min_quality * *min_quality : *min_quality * *min_quality * *min_quality, q0ki = enclose(*q0k);
   std::vector<double> lows, highs;
-  for (int t = 0; t < static_cast<int>(tris.size()); ++t) {
-    const auto& tri = tris[t];
-    if (m.orientation(tri[0], tri[1], tri[2]) != Sign::positive) {  // flat or clockwise: validity reports it
+  for (std::size_t t = 0; t < level.size(); ++t) {
+    if (!level.measurable(t)) {
       ++r.undecided;
       continue;
     }
-    const auto &a = m.site[tri[0]], &b = m.site[tri[1]], &c = m.site[tri[2]];
-    const Edges<FilterInterval> e = edges_of(a.x, a.y, b.x, b.y, c.x, c.y);
     FilterInterval q{INFINITY, INFINITY};
     bool reported = false;
-    for (const int v : tri) {
-      const auto& M = m.metric[v];
-      const auto p = quality_parts(e, M.m11, M.m12, M.m22);
-      FilterInterval qv = sqrt(FilterInterval(12) * p.det) * p.D / p.S;
-      qv.lo = std::max(qv.lo, 0.0);  // the exact value is positive (D > 0, M positive definite)
+    for (const int v : level.vertices(t)) {
+      FilterInterval qv = level.quality(t, v);
+      qv.lo = std::max(qv.lo, 0.0);  // the exact value is positive (a measurable element, M positive definite)
       q = min(q, qv);
-      if (q2 && !reported) {
-        const Sign s = predicates::interval_then_exact<QualityKernel>(
-            std::array<FilterInterval, 10>{a.x, a.y, b.x, b.y, c.x, c.y, M.m11, M.m12, M.m22, q2i}, [&] {
-              const auto& s = m.mesh.sites;
-              const auto& n = m.mesh.metrics;
-              return std::array<Rational, 10>{s[tri[0]].x, s[tri[0]].y, s[tri[1]].x, s[tri[1]].y, s[tri[2]].x,
-                                              s[tri[2]].y, n[v].m11, n[v].m12, n[v].m22, *q2};
-            });
-        if (s == Sign::negative) {
-          reported = true;
-          r.violations.add(v, t, -1, [&] {
-            return "triangle " + std::to_string(t) + " has mean-ratio quality about " + std::to_string((qv.lo + qv.hi) / 2) +
-                   " in the metric of vertex " + std::to_string(v) + ", below the bound";
-          });
-        }
+      if (q0k && !reported && level.decide(t, v, q0ki, *q0k) == Sign::negative) {
+        reported = true;
+        r.violations.add(v, static_cast<int>(t), -1, [&] {
+          return std::string(Level::kind) + " " + std::to_string(t) + " has mean-ratio quality about " +
+                 std::to_string((qv.lo + qv.hi) / 2) + " in the metric of vertex " + std::to_string(v) + ", below the bound";
+        });
       }
     }
     ++r.measured;
     lows.push_back(q.lo), highs.push_back(q.hi);
     r.qualities.push_back((q.lo + q.hi) / 2);
-    if (r.worst_triangle < 0 || q.lo < r.worst.lo) r.worst = q, r.worst_triangle = t;
+    if (r.worst_triangle < 0 || q.lo < r.worst.lo) r.worst = q, r.worst_triangle = static_cast<int>(t);
   }
   // The p-quantile of the exact values lies between the p-quantiles of the lower and upper ends
   // (order statistics are monotone in every value).
@@ -101,6 +191,16 @@ QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>
       r.quantiles.push_back({p, FilterInterval(lows[k], highs[k])});
     }
   return r;
+}
+
+}  // namespace
+
+QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>& min_quality, std::size_t described) {
+  return check_quality_of(Triangles{m}, min_quality, described);
+}
+
+QualityReport check_quality(const EnclosedMesh3& m, const std::optional<Rational>& min_quality, std::size_t described) {
+  return check_quality_of(Tetrahedra{m}, min_quality, described);
 }
 
 }  // namespace anisocert::oracle
