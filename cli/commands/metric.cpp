@@ -48,17 +48,17 @@ bool is_metric_file(const std::string& path) {
   return false;
 }
 
-// A tetrahedral mesh: a built-in 3D field at its vertices, into metric files that hold 3×3
-// metrics (a Medit .sol/.solb) or the mesh's own files with their metrics (Medit, Gmsh).
-int write_metric3(const MetricOptions& o, io::MeshFile& f) {
-  f.mesh3.metrics = metrics3_at(field_source3(o.field, o.params), o.field, f.mesh3.vertices);
+// Each -o: a metric file (a tetrahedral mesh's only in a format that holds 3×3 metrics, a Medit
+// .sol/.solb) or the mesh's own files with their metrics; all written or none.
+std::vector<OutputFile> output_files(const MetricOptions& o, const io::MeshFile& f) {
   std::vector<OutputFile> files;
   try {
     for (const std::string& path : o.outputs) {
       if (is_metric_file(path)) {
         const io::MetricFormat& format = io::metric_format_of(path);
-        if (!format.write3) throw UsageError(path + ": a " + format.name + " metric file holds 2D metrics only (use a Medit .sol)");
-        io::FileText t = format.write3(f.mesh3.metrics, path);
+        if (f.dimension == 3 && !format.write3)
+          throw UsageError(path + ": a " + format.name + " metric file holds 2D metrics only (use a Medit .sol)");
+        io::FileText t = f.dimension == 3 ? format.write3(f.mesh3.metrics, path) : format.write(f.mesh.metrics, path);
         files.push_back({std::move(t.path), std::move(t.content)});
       } else {
         for (io::FileText& t : io::mesh_format_to_write(path).write(f, path)) files.push_back({std::move(t.path), std::move(t.content)});
@@ -67,11 +67,7 @@ int write_metric3(const MetricOptions& o, io::MeshFile& f) {
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }
-  write_files_atomically(files);
-  std::string written;
-  for (const OutputFile& file : files) written += (written.empty() ? "" : ", ") + file.path;
-  emit("metric: field " + o.field + " at " + std::to_string(f.mesh3.vertices.size()) + " vertices of " + o.at + ": " + written + "\n");
-  return 0;
+  return files;
 }
 
 int run_metric(const MetricOptions& o) {
@@ -82,29 +78,21 @@ int run_metric(const MetricOptions& o) {
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }
-  if (f.dimension == 3) return write_metric3(o, f);
-  FieldSource source = field_source(o.field, o.params);
-  // A file holds decimals or doubles, and a background mesh's exact P1 values are rationals with
-  // no finite decimal expansion in general: every field is written at its doubles.
-  source.background = nullptr;
-  f.mesh.metrics = metrics_at(source, o.field, f.mesh.sites);
-  std::vector<OutputFile> files;
-  try {
-    for (const std::string& path : o.outputs) {
-      if (is_metric_file(path)) {
-        io::FileText t = io::metric_format_of(path).write(f.mesh.metrics, path);
-        files.push_back({std::move(t.path), std::move(t.content)});
-      } else {
-        for (io::FileText& t : io::mesh_format_to_write(path).write(f, path)) files.push_back({std::move(t.path), std::move(t.content)});
-      }
-    }
-  } catch (const io::InputError& e) {
-    throw UsageError(e.what());
+  if (f.dimension == 3) {  // a built-in 3D field at a tetrahedral mesh's vertices
+    f.mesh3.metrics = metrics3_at(field_source3(o.field, o.params), o.field, f.mesh3.vertices);
+  } else {
+    FieldSource source = field_source(o.field, o.params);
+    // A file holds decimals or doubles, and a background mesh's exact P1 values are rationals with
+    // no finite decimal expansion in general: every field is written at its doubles.
+    source.background = nullptr;
+    f.mesh.metrics = metrics_at(source, o.field, f.mesh.sites);
   }
+  const std::vector<OutputFile> files = output_files(o, f);
   write_files_atomically(files);
   std::string written;
   for (const OutputFile& file : files) written += (written.empty() ? "" : ", ") + file.path;
-  emit("metric: field " + o.field + " at " + std::to_string(f.mesh.sites.size()) + " vertices of " +
+  const std::size_t n = f.dimension == 3 ? f.mesh3.vertices.size() : f.mesh.sites.size();
+  emit("metric: field " + o.field + " at " + std::to_string(n) + " vertices of " +
        (o.grid ? "a " + std::to_string(o.grid) + " x " + std::to_string(o.grid) + " grid" : o.at) + ": " + written + "\n");
   return 0;
 }
