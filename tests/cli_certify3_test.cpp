@@ -5,7 +5,8 @@
 // tetrahedra, a background field,
 // a tetrahedron naming a vertex that does not exist), nothing written.
 #include "cli_run.hpp"
-#include "predicates/orientation3.hpp"
+#include "geometry/kuhn_grid.hpp"
+#include "io/formats/medit.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -26,43 +27,14 @@ fs::path fresh(const std::string& name) {
   return d;
 }
 
-// The n³ Kuhn grid as Medit text, positively oriented; `flip`: the index of a tetrahedron written
-// reversed (−1: none).
+// The n³ Kuhn grid (geometry/kuhn_grid.hpp) as Medit text, by the Medit writer; `flip`: the index
+// of a tetrahedron written reversed (−1: none).
 std::string kuhn_medit(int n, int flip = -1) {
-  std::vector<std::array<int, 3>> v;
-  std::vector<std::array<int, 4>> tets;
-  const auto vertex = [&](std::array<int, 3> p) {
-    const auto at = std::find(v.begin(), v.end(), p);
-    if (at != v.end()) return static_cast<int>(at - v.begin());
-    v.push_back(p);
-    return static_cast<int>(v.size() - 1);
-  };
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        std::array<int, 3> axes{0, 1, 2};
-        do {
-          std::array<int, 3> p{i, j, k};
-          std::array<int, 4> t{};
-          t[0] = vertex(p);
-          for (std::size_t s = 0; s < 3; ++s) ++p[static_cast<std::size_t>(axes[s])], t[s + 1] = vertex(p);
-          const auto P = [&](int q) {
-            const auto& c = v[static_cast<std::size_t>(q)];
-            return anisocert::predicates::Point3<double>{double(c[0]), double(c[1]), double(c[2])};
-          };
-          if (anisocert::predicates::orientation3(P(t[0]), P(t[1]), P(t[2]), P(t[3])) == anisocert::Sign::negative) std::swap(t[2], t[3]);
-          tets.push_back(t);
-        } while (std::next_permutation(axes.begin(), axes.end()));
-      }
-  std::string s = "MeshVersionFormatted 2\nDimension 3\nVertices\n" + std::to_string(v.size()) + "\n";
-  for (const auto& p : v) s += std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + " 0\n";
-  s += "Tetrahedra\n" + std::to_string(tets.size()) + "\n";
-  for (std::size_t t = 0; t < tets.size(); ++t) {
-    auto q = tets[t];
-    if (static_cast<int>(t) == flip) std::swap(q[0], q[1]);
-    s += std::to_string(q[0] + 1) + " " + std::to_string(q[1] + 1) + " " + std::to_string(q[2] + 1) + " " + std::to_string(q[3] + 1) + " 1\n";
-  }
-  return s + "End\n";
+  anisocert::io::MeshFile f;
+  f.dimension = 3;
+  f.mesh3 = anisocert::geometry::kuhn_grid(n);
+  if (flip >= 0) std::swap(f.mesh3.tetrahedra[static_cast<std::size_t>(flip)][0], f.mesh3.tetrahedra[static_cast<std::size_t>(flip)][1]);
+  return anisocert::io::medit_mesh_text(f);
 }
 
 std::string identity_sol(std::size_t n) {
