@@ -369,3 +369,35 @@ TEST(CliMesh, BwyRefinesTheShockFieldAndDualConfirmsIt) {
   EXPECT_EQ(stopped.exit_code, 1) << stopped.err;
   EXPECT_NE(stopped.out.find("the mesh is its dual, which is no triangulation of Ω)"), std::string::npos) << stopped.out;
 }
+
+// BWY §3.2.2 applies one rule per step, in its order. Two mutants of the 2026-12-02 campaign (141,
+// 153) broke the order where no test looked; both runs are a second reader's (helper) inputs.
+TEST(CliMesh, BwyAppliesOneRulePerStepInTheOrderOfSection322) {
+  const std::string base = ::testing::TempDir() + "anisocert_bwy_order_" + std::to_string(getpid());
+  // A 1 × 1/4 rectangle: the first step attacks the corners' unresolved place, which becomes a
+  // split; with a budget of 5 vertices (4 corners + 1) the run makes exactly that one insertion,
+  // and the side it split is left encroached for rule 1, not taken by rule 2 in the same step.
+  std::ofstream(base + "_thin.json") << R"({"domain": [["0","0"],["1","0"],["1","0.25"],["0","0.25"]]})";
+  const Outcome thin = run("refine --algo bwy --field radial --domain " + base + "_thin.json --size 0.5 --max-vertices 5 --quiet -o " + base + "_thin_out.json");
+  EXPECT_EQ(thin.exit_code, 1) << thin.err;
+  EXPECT_NE(thin.out.find("last insertion by rule: split instead; encroached subsegments: 1"), std::string::npos) << thin.out;
+  std::ifstream written(base + "_thin_out.json");
+  EXPECT_EQ(Json::parse(written)["sites"].size(), 5u);
+  // Four sites in a square of side 1/2 with one metric (h = 0.5 gives 4·I away from the thin ring
+  // r = R) make an exact tie at (1/2, 1/2), no bad shape: its radius-edge ratio is √2/2 in that
+  // metric, far below B = 100. A fifth site on the ring (metric 100 times stronger across it)
+  // makes Voronoi vertices whose triangles overlap the tie's fan. After the four splits of Ω's
+  // sides (rule 1), the first insertion is rule 4's (several vertices), never rule 3's.
+  std::ofstream(base + "_tie.json") << R"({"domain": [["-1","-1"],["2","-1"],["2","2"],["-1","2"]],
+    "points": [["0.25","0.25"],["0.75","0.25"],["0.75","0.75"],["0.25","0.75"],["0.5","0.265625"]]})";
+  const std::string tie = "refine --algo bwy --domain " + base + "_tie.json --field radial --param h=0.5 --param delta=0.001 --param R=0.234375 "
+                          "--shape-bound 100 --size 0 --quiet -o " + base + "_tie_out.json";
+  const Outcome first = run(tie + " --max-vertices 14");
+  EXPECT_EQ(first.exit_code, 1) << first.err;
+  EXPECT_NE(first.out.find("insertions by rule: encroached segment 4, unresolved 0, not an edge 0, split instead 0, bad shape 0, several vertices 1,"),
+            std::string::npos) << first.out;
+  const Outcome whole = run(tie);
+  EXPECT_EQ(whole.exit_code, 0) << whole.err;
+  EXPECT_NE(whole.out.find("bad shape 0, several vertices"), std::string::npos) << whole.out;
+  EXPECT_EQ(whole.out.find("overlap 0,"), std::string::npos) << whole.out;
+}

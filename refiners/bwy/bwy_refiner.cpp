@@ -2,6 +2,7 @@
 
 #include "predicates/orientation.hpp"
 #include "refiners/bwy/dual_triangles.hpp"
+#include "refiners/bwy/local_embedding.hpp"
 #include "refiners/bwy/rules.hpp"
 #include "refiners/common/vertex_in_domain.hpp"
 #include "refiners/common/voronoi_refinement.hpp"
@@ -23,8 +24,6 @@ common::VoronoiRules bwy_rules() {
 
 // A tie's key in T (a Voronoi vertex's is its id): −1 − its index among the ties in closed Ω.
 int tie_key(std::size_t i) { return -1 - static_cast<int>(i); }
-
-std::string edge_text(int a, int b) { return std::to_string(a) + "–" + std::to_string(b); }
 
 class BwyRefinement : public common::VoronoiRefinement {
  public:
@@ -121,7 +120,7 @@ class BwyRefinement : public common::VoronoiRefinement {
       const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
       if (v.holders == 0) continue;
       if (!common::in_closed_domain(domain_, point(q))) {
-        stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + ", near " + common::point_text(v.box.approx()) +
+        stalled_ = "whether the Voronoi vertex of sites " + common::trio_text(v.sites) + ", near " + common::point_text(v.box.approx()) +
                    ", lies in Ω is undecided (it is on the line of an edge of Ω, or too near)";
         return false;
       }
@@ -220,7 +219,7 @@ class BwyRefinement : public common::VoronoiRefinement {
       case Rule::too_large: {
         if (p_.size <= 0) return false;
         const auto large = beyond(q, site(v.sites[0]), p_.size);
-        if (!large) stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is too large is undecided";
+        if (!large) stalled_ = "whether the Voronoi vertex of sites " + common::trio_text(v.sites) + " is too large is undecided";
         return large == Sign::positive;
       }
       default: return false;
@@ -247,20 +246,7 @@ class BwyRefinement : public common::VoronoiRefinement {
         if (!bad) undecided = true;
         else if (*bad == Sign::positive) return true;
       }
-    if (undecided) stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is badly shaped is undecided";
-    return false;
-  }
-  // Rule 5 at triangle t: flat, or another triangle on one of its edges has its third vertex on
-  // t's side of that edge.
-  bool overlaps(int t) const {
-    const auto& tri = triangles_.triangle(t);
-    if (tri.flat) return true;
-    for (int i = 0; i < 3; ++i) {
-      const int a = tri.sites[static_cast<std::size_t>(i)], b = tri.sites[static_cast<std::size_t>((i + 1) % 3)],
-                c = tri.sites[static_cast<std::size_t>((i + 2) % 3)];
-      for (int u : triangles_.on_edge(a, b))
-        if (u != t && side(a, b, third(u, a, b)) == side(a, b, c)) return true;
-    }
+    if (undecided) stalled_ = "whether the Voronoi vertex of sites " + common::trio_text(v.sites) + " is badly shaped is undecided";
     return false;
   }
   bool tie_overlaps(std::size_t i) const {
@@ -272,16 +258,6 @@ class BwyRefinement : public common::VoronoiRefinement {
     const auto& ts = triangles_.of_key(tie_key(i));
     return std::any_of(ts.begin(), ts.end(), [&](int t) { return triangles_.same_sites(t).size() > 1; });
   }
-  int third(int t, int a, int b) const {
-    for (int u : triangles_.triangle(t).sites)
-      if (u != a && u != b) return u;
-    return a;  // a triangle with a repeated site: never made (sites are distinct)
-  }
-  Sign side(int a, int b, int c) const {
-    return predicates::orientation(sites_.points[static_cast<std::size_t>(a)], sites_.points[static_cast<std::size_t>(b)],
-                                   sites_.points[static_cast<std::size_t>(c)]);
-  }
-
   // The tie's rule: 3 when r² > B²δ² for δ its polygon's shortest side, else 6 when r² > size², in
   // rationals; the mesh gets the fan from its first site.
   JudgedTie judged(const ExactTie& tie) const override {
@@ -300,37 +276,15 @@ class BwyRefinement : public common::VoronoiRefinement {
     return {tie, bad ? number(Rule::bad_shape) : large ? number(Rule::too_large) : 0, common::fan(tie, 0)};
   }
 
-  // Why T is not a local embedding (BWY §3.2.1: non-flat triangles whose vertices are exactly the
-  // sites, each boundary edge in exactly one, every other edge in two that do not overlap), or empty.
   std::string embedding_failure() const {
-    std::vector<char> used(sites_.size(), 0);
-    const std::vector<int> alive = triangles_.alive();
-    for (int t : alive) {
-      const auto& tri = triangles_.triangle(t);
-      if (tri.flat) return "the triangle of sites " + trio_text(tri.sites) + " is flat";
-      for (int u : tri.sites) used[static_cast<std::size_t>(u)] = 1;
-    }
-    for (std::size_t u = 0; u < used.size(); ++u)
-      if (!used[u]) return "site " + std::to_string(u) + " is a vertex of no triangle";
+    std::vector<Constraint> constraints;
     for (std::size_t s = 0; s < subsegments_.size(); ++s) {
       const auto [a, b] = subsegments_.ends(static_cast<int>(s));
-      const std::size_t in = triangles_.on_edge(a, b).size();
-      if (subsegments_.on_boundary(domain_, static_cast<int>(s)) ? in != 1 : in != 2)
-        return "the subsegment " + edge_text(a, b) + " is in " + std::to_string(in) + " triangles";
+      constraints.push_back({a, b, subsegments_.on_boundary(domain_, static_cast<int>(s))});
     }
-    for (int t : alive) {
-      const auto& tri = triangles_.triangle(t);
-      for (int i = 0; i < 3; ++i) {
-        const int a = tri.sites[static_cast<std::size_t>(i)], b = tri.sites[static_cast<std::size_t>((i + 1) % 3)];
-        const auto s = subsegments_.find(a, b);
-        if (s && subsegments_.on_boundary(domain_, *s)) continue;
-        const auto& on = triangles_.on_edge(a, b);
-        if (on.size() != 2) return "the edge " + edge_text(a, b) + " is in " + std::to_string(on.size()) + " triangles";
-      }
-      if (overlaps(t)) return "the triangle of sites " + trio_text(tri.sites) + " overlaps a neighbour";
-    }
-    return {};
+    return bwy::embedding_failure(triangles_, sites_.points, constraints);
   }
+  bool overlaps(int t) const { return bwy::overlaps(triangles_, t, sites_.points); }
 
   BwyParameters p_;
   DualTriangles triangles_;

@@ -11,6 +11,7 @@
 namespace anisocert::refiners::common {
 
 std::string point_text(const Point2<double>& p) { return "(" + shortest_decimal(p.x) + ", " + shortest_decimal(p.y) + ")"; }
+std::string trio_text(const std::array<int, 3>& t) { return std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]); }
 std::string metric_text(const predicates::Sym2<double>& M) {
   return "[" + shortest_decimal(M.m11) + ", " + shortest_decimal(M.m12) + ", " + shortest_decimal(M.m22) + "]";
 }

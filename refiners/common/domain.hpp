@@ -11,6 +11,7 @@
 #include "numbers/shortest_decimal.hpp"
 #include "refiners/common/errors.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -29,6 +30,8 @@ struct Box {
 
 // "(x, y)" with the shortest decimals that read back as the doubles (for messages).
 std::string point_text(const Point2<double>& p);
+// "a, b, c": three sites by their indices (for messages).
+std::string trio_text(const std::array<int, 3>& t);
 // "[m11, m12, m22]" likewise.
 std::string metric_text(const predicates::Sym2<double>& M);
 

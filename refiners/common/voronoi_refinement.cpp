@@ -70,10 +70,6 @@ void VoronoiRefinement::start() {
   }
 }
 
-std::string VoronoiRefinement::trio_text(const std::array<int, 3>& t) {
-  return std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]);
-}
-
 bool VoronoiRefinement::split_encroached() {
   while (const auto s = subsegments_.pop()) {
     const std::vector<int> by = encroachers(*s);

@@ -122,7 +122,6 @@ class VoronoiRefinement {
   static std::pair<Point2<double>, double> rounded(const Point2<Rational>& c);
   // Every site that can be nearest somewhere on subsegment s.
   std::vector<common::MetricSite> near(int s) const;
-  static std::string trio_text(const std::array<int, 3>& t);
   // d_s(p)² in doubles (for choices, never for decisions).
   static double squared_distance(const common::MetricSite& s, const Point2<double>& p) {
     return common::distance2(common::lift<double>(s, [](double x) { return x; }), p.x, p.y);

@@ -105,13 +105,13 @@ class LsVaryingRefinement : public VoronoiRefinement {
     const CertifiedPoint P = point(q);
     const auto in = common::in_closed_domain(domain_, P);
     if (!in) {
-      stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " lies in Ω is undecided (it is on ∂Ω or too near)";
+      stalled_ = "whether the Voronoi vertex of sites " + common::trio_text(v.sites) + " lies in Ω is undecided (it is on ∂Ω or too near)";
       return Rule::none;
     }
     if (!*in) return Rule::none;
     const auto order = cell_order(q);
     if (!order || *order == Sign::zero) {
-      stalled_ = "the cells of sites " + trio_text(v.sites) + " meet tangentially at their Voronoi vertex, or too nearly to tell";
+      stalled_ = "the cells of sites " + common::trio_text(v.sites) + " meet tangentially at their Voronoi vertex, or too nearly to tell";
       return Rule::none;
     }
     std::array<Point2<double>, 3> t{};
@@ -128,7 +128,7 @@ class LsVaryingRefinement : public VoronoiRefinement {
           return g[0] * (of(vj.p.x) - of(vi.p.x)) + g[1] * (of(vj.p.y) - of(vi.p.y));
         });
         if (!inside) {
-          stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is wedged is undecided (it is on a wedge's line or too near)";
+          stalled_ = "whether the Voronoi vertex of sites " + common::trio_text(v.sites) + " is wedged is undecided (it is on a wedge's line or too near)";
           return Rule::none;
         }
         if (*inside != Sign::positive) return Rule::unwedged;
@@ -149,7 +149,7 @@ class LsVaryingRefinement : public VoronoiRefinement {
       const std::size_t u = static_cast<std::size_t>(v.sites[static_cast<std::size_t>(k)]);
       const auto large = beyond(q, MetricSite{sites_.points[u], size_metric(u)}, p_.size);
       if (!large) {
-        stalled_ = "whether the Voronoi vertex of sites " + trio_text(v.sites) + " is too large is undecided";
+        stalled_ = "whether the Voronoi vertex of sites " + common::trio_text(v.sites) + " is too large is undecided";
         return Rule::none;
       }
       if (*large == Sign::positive) return Rule::too_large;
