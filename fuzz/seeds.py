@@ -98,3 +98,65 @@ put("json_input", "pslg-crossing-segments",
 put("json_input", "three-sites-number-forms",
     '{"sites": [{"x": 0.1, "y": "1/3", "metric": [1, 0, 1]}, {"x": "1e-3", "y": 2, "metric": ["2", "-1/2", "3"]},'
     ' {"x": "-0.5", "y": "0.25", "metric": ["1e2", "0", "1e-2"]}]}\n')
+
+# vtu: one tetrahedron in each encoding VTK's XML format allows (header and data as one base64
+# stream and as two, zlib blocks, appended raw and base64, UInt64 headers, big endian) and a
+# planar triangle with Omega_h's 2D metric order.
+import base64
+import zlib
+
+
+def vtu_array(data, fmt, compress, header_q, big):
+    e = ">" if big else "<"
+    h = "Q" if header_q else "I"
+    if not compress:
+        return struct.pack(e + h, len(data)), data
+    blocks = [zlib.compress(data[i:i + 32]) for i in range(0, len(data), 32)]
+    head = struct.pack(e + h * 3, len(blocks), 32, len(data) % 32) + b"".join(struct.pack(e + h, len(b)) for b in blocks)
+    return head, b"".join(blocks)
+
+
+def vtu(fmt="binary", compress=False, header_q=False, big=False, two=True, appended_b64=False):
+    e = ">" if big else "<"
+    arrays = [("Points", 'type="Float64" NumberOfComponents="3"', struct.pack(e + "12d", 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1)),
+              ("Cells", 'type="Int32" Name="connectivity"', struct.pack(e + "4i", 0, 1, 2, 3)),
+              ("Cells", 'type="Int64" Name="offsets"', struct.pack(e + "q", 4)),
+              ("Cells", 'type="UInt8" Name="types"', bytes([10])),
+              ("PointData", 'type="Float64" Name="metric" NumberOfComponents="6"', struct.pack(e + "24d", *([4, 4, 4, 0, 0, 0] * 3 + [2, 3, 4, 0.5, 0.25, 0.125])))]
+    body, appended, section = "", b"", None
+    for parent, attributes, data in arrays:
+        if parent != section:
+            body += (f"</{section}>\n" if section else "") + f"<{parent}>\n"
+            section = parent
+        head, payload = vtu_array(data, fmt, compress, header_q, big)
+        if fmt == "binary":
+            text = (base64.b64encode(head) + base64.b64encode(payload)) if two else base64.b64encode(head + payload)
+            body += f'<DataArray {attributes} format="binary">{text.decode()}</DataArray>\n'
+        else:
+            body += f'<DataArray {attributes} format="appended" offset="{len(appended)}"/>\n'
+            appended += base64.b64encode(head) + base64.b64encode(payload) if appended_b64 else head + payload
+    body += f"</{section}>\n"
+    root = (f'<VTKFile type="UnstructuredGrid" version="1.0" byte_order="{"BigEndian" if big else "LittleEndian"}"'
+            + (' header_type="UInt64"' if header_q else "") + (' compressor="vtkZLibDataCompressor"' if compress else "") + ">\n")
+    text = ('<?xml version="1.0"?>\n' + root + '<UnstructuredGrid>\n<Piece NumberOfPoints="4" NumberOfCells="1">\n' + body
+            + "</Piece>\n</UnstructuredGrid>\n").encode()
+    if fmt == "appended":
+        text += f'<AppendedData encoding="{"base64" if appended_b64 else "raw"}">\n_'.encode() + appended + b"\n</AppendedData>\n"
+    return text + b"</VTKFile>\n"
+
+
+put("vtu", "binary-two-streams", vtu())
+put("vtu", "binary-one-stream", vtu(two=False))
+put("vtu", "binary-zlib", vtu(compress=True))
+put("vtu", "binary-zlib-uint64-big-endian", vtu(compress=True, header_q=True, big=True))
+put("vtu", "appended-raw", vtu("appended"))
+put("vtu", "appended-raw-zlib", vtu("appended", compress=True))
+put("vtu", "appended-base64", vtu("appended", appended_b64=True))
+put("vtu", "triangle-omega-h-metric",
+    '<VTKFile type="UnstructuredGrid"><UnstructuredGrid><Piece NumberOfPoints="3" NumberOfCells="1"><Points>'
+    '<DataArray type="Float64" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0</DataArray></Points><Cells>'
+    '<DataArray type="Int32" Name="connectivity" format="ascii">0 1 2</DataArray>'
+    '<DataArray type="Int32" Name="offsets" format="ascii">3</DataArray>'
+    '<DataArray type="UInt8" Name="types" format="ascii">5</DataArray></Cells><PointData>'
+    '<DataArray type="Float64" Name="metric" NumberOfComponents="3" format="ascii">4 9 1 4 9 1 4 9 1</DataArray>'
+    '</PointData></Piece></UnstructuredGrid></VTKFile>\n')

@@ -4,6 +4,7 @@
 #include "io/formats/gmsh.hpp"
 #include "io/formats/gmsh_view.hpp"
 #include "io/formats/medit.hpp"
+#include "io/formats/vtu.hpp"
 #include "io/formats/text_reader.hpp"
 #include "io/formats/triangle.hpp"
 #include "io/input_file.hpp"
@@ -83,6 +84,8 @@ const std::vector<MeshFormat>& mesh_formats() {
        [](const std::string& p, const ReadOptions&) { return read_freefem_file(p); }, write_freefem_file},
       {"triangle", "Triangle .node/.ele/.poly (boundary markers, holes); TetGen .node/.ele/.face (3D)", {".node", ".ele", ".poly", ".face"}, nullptr,
        [](const std::string& p, const ReadOptions&) { return read_triangle_files(p); }, write_triangle_files, false},
+      {"vtu", "VTK XML unstructured grid .vtu (ASCII, base64, zlib, appended; Omega_h, Pragmatic, ParaView); metrics in the point array \"metric\"",
+       {".vtu"}, nullptr, [](const std::string& p, const ReadOptions&) { return read_vtu_file(p); }, write_vtu_file},
       {"gmsh-view", "Gmsh list-based tensor view .pos, a background metric for Gmsh's BAMG (written only)", {".pos"}, nullptr,
        nullptr, write_gmsh_view},
   };
