@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 using anisocert::Rational;
@@ -258,4 +259,40 @@ TEST(MeshCertifier3, MeanRatioQualityIsDecidedExactly) {
   EXPECT_TRUE(r.holds(o));
   regular.metrics.assign(4, Sym3<Rational>{1, 0, 0, 1, 0, 4});
   EXPECT_EQ(certify_mesh3(regular, o).quality->violations.count(), 1u);
+}
+
+// UGAWG's measures (oracle/certify/ugawg_measures.hpp), against closed forms and Omega_h's own unit
+// test (a regular tetrahedron squashed by 1/2 in z has quality 1 in diag(1, 1, 4)).
+TEST(UgawgMeasures, ClosedFormsAndTheLargestDeterminantMetric) {
+  EXPECT_DOUBLE_EQ(log_interpolated_length(1, 2), 1 / std::log(2.0));  // (1 − 2) / ln(1/2)
+  EXPECT_DOUBLE_EQ(log_interpolated_length(2, 1), 1 / std::log(2.0));
+  EXPECT_EQ(log_interpolated_length(3, 3), 3);
+  using P = anisocert::predicates::Point3<double>;
+  const std::array<P, 4> regular{P{1, 1, 1}, P{1, -1, -1}, P{-1, 1, -1}, P{-1, -1, 1}};  // edges 2√2, D = −16
+  const Sym3<double> I{1, 0, 0, 1, 0, 1}, four{4, 0, 0, 4, 0, 4}, z4{1, 0, 0, 1, 0, 4};  // m11 m12 m13 m22 m23 m33
+  EXPECT_NEAR(omega_h_quality(regular, I), -1, 1e-14);
+  EXPECT_NEAR(omega_h_quality({regular[1], regular[0], regular[2], regular[3]}, four), 1, 1e-14);
+  std::array<P, 4> squashed = {regular[1], regular[0], regular[2], regular[3]};
+  for (auto& p : squashed) p.z /= 2;
+  EXPECT_NEAR(omega_h_quality(squashed, z4), 1, 1e-14);
+  EXPECT_LT(omega_h_quality(squashed, I), 0.9);
+  // The squashed tetrahedron as a mesh, one vertex with diag(1, 1, 4) (the largest determinant):
+  // Omega_h measures it in that metric, so its quality is 1; edge 0–1 has length 2√2 in I at one
+  // end and in diag(1, 1, 4) at the other, as it is horizontal.
+  Mesh3 m;
+  for (const auto& p : squashed) m.vertices.push_back({Rational(p.x), Rational(p.y), Rational(p.z)});
+  m.tetrahedra = {{0, 1, 2, 3}};
+  m.metrics.assign(4, Sym3<Rational>{1, 0, 0, 1, 0, 1});
+  m.metrics[2] = Sym3<Rational>{1, 0, 0, 1, 0, 4};
+  const EnclosedMesh3 e(m);
+  const UgawgMeasures u = ugawg_measures(e, {{0, 1}, {0, 2}}, 1);
+  EXPECT_EQ(u.edges, 2u);
+  EXPECT_NEAR(u.least_quality, 1, 1e-14);
+  EXPECT_EQ(u.quality_bins[9], 1u);
+  // Edge 0–2 from (1, −1, −1/2) to (−1, 1, −1/2): 2√2 in both metrics (no z part); edge 0–1 from
+  // (1, −1, −1/2) to (1, 1, 1/2): √5 in I at both ends.
+  EXPECT_NEAR(u.shortest, std::sqrt(5.0), 1e-14);
+  EXPECT_NEAR(u.longest, 2 * std::sqrt(2.0), 1e-14);
+  EXPECT_EQ(u.unit_edges, 0u);
+  EXPECT_NEAR(ugawg_measures(e, {}, -1).least_quality, -1, 1e-14);
 }

@@ -138,6 +138,20 @@ void add_uniform3(const oracle::Certify3Report& r, CertifyVerdict& v) {
                        {"violation_count", r.uniform_violations.count()}, {"tie_count", r.uniform_ties.count()}}});
 }
 
+// UGAWG's measures (oracle/certify/ugawg_measures.hpp): statistics, never a verdict.
+void add_ugawg3(const oracle::UgawgMeasures& u, CertifyVerdict& v) {
+  ReportJson bins = ReportJson::array();
+  for (std::size_t b : u.quality_bins) bins.push_back(b);
+  v.checks.push_back({"ugawg", "UGAWG's measures, in floating point", "UGAWG", true, false,
+                      " (log-interpolated edge lengths: " + percent(u.unit_edges, u.edges) + " in [1/√2, √2], " + as_printed(u.shortest) + " to " +
+                          as_printed(u.longest) + ", mean " + as_printed(u.mean_length) + "; Omega_h quality: least " + as_printed(u.least_quality) +
+                          " at tetrahedron " + std::to_string(u.least_tetrahedron) + ", mean " + as_printed(u.mean_quality) + ")",
+                      " (" + percent(u.unit_edges, u.edges) + " unit)", {},
+                      {{"edges", u.edges}, {"unit_edges", u.unit_edges}, {"shortest", u.shortest}, {"longest", u.longest},
+                       {"mean_length", u.mean_length}, {"tetrahedra", u.tetrahedra}, {"least_quality", u.least_quality},
+                       {"least_tetrahedron", u.least_tetrahedron}, {"mean_quality", u.mean_quality}, {"quality_bins", bins}}});
+}
+
 }  // namespace
 
 CertifyVerdict certify_verdict(const oracle::Certify3Report& r, const oracle::Certify3Options& o, const geometry::Mesh3<Rational>& mesh,
@@ -151,6 +165,7 @@ CertifyVerdict certify_verdict(const oracle::Certify3Report& r, const oracle::Ce
   if (r.uniform_checked) add_uniform3(r, v);
   if (r.lengths) add_lengths(*r.lengths, b, v);
   if (r.quality) add_quality(*r.quality, b, v, "tetrahedron");
+  if (r.ugawg) add_ugawg3(*r.ugawg, v);
   return v;
 }
 

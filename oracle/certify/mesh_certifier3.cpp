@@ -227,8 +227,10 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
     }
   }
   if (o.metric && has_metrics) {
-    r.lengths = check_lengths(m, unique_edges(mesh.tetrahedra), o.length_range, o.described_witnesses);
+    const std::vector<std::pair<int, int>> edges = unique_edges(mesh.tetrahedra);
+    r.lengths = check_lengths(m, edges, o.length_range, o.described_witnesses);
     r.quality = check_quality(m, o.min_quality, o.described_witnesses);
+    r.ugawg = ugawg_measures(m, edges, r.valid && r.valid->orientation == "negative" ? -1 : 1);
   }
   return r;
 }

@@ -10,7 +10,7 @@
 //  - conforming to its metric: edge lengths in both endpoints' metrics, the share in
 //    [1/√2, √2] decided exactly, and a range as a verdict; the mean-ratio quality in each vertex's
 //    metric, enclosed, and a lower bound as a verdict (metric_checks.hpp, one loop for both
-//    dimensions each).
+//    dimensions each); beside them UGAWG's measures (ugawg_measures.hpp), measured in doubles.
 // Each check's verdict stands on its own; a flat tetrahedron is counted as unmeasured by the
 // locally uniform check. Candidates for an M_v-circumellipsoid come from a grid of the vertices,
 // within its bounding box enclosed in interval arithmetic (the centre solved by Cramer's rule,
@@ -19,6 +19,7 @@
 #include "geometry/mesh3.hpp"
 #include "oracle/certify/metric_checks.hpp"
 #include "oracle/certify/tetrahedralization_check.hpp"
+#include "oracle/certify/ugawg_measures.hpp"
 
 #include <optional>
 
@@ -39,6 +40,7 @@ struct Certify3Report {
   std::size_t insphere_tests = 0, unmeasured = 0;
   std::optional<LengthReport> lengths;
   std::optional<QualityReport> quality;
+  std::optional<UgawgMeasures> ugawg;  // with the metric checks: UGAWG's measures, floating point
   std::size_t tetrahedra = 0;
 
   bool valid_holds() const { return valid && valid->valid; }
