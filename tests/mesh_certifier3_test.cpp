@@ -296,3 +296,23 @@ TEST(UgawgMeasures, ClosedFormsAndTheLargestDeterminantMetric) {
   EXPECT_EQ(u.unit_edges, 0u);
   EXPECT_NEAR(ugawg_measures(e, {}, -1).least_quality, -1, 1e-14);
 }
+
+// Dihedral angles on the Kuhn grid: every Kuhn tetrahedron (a path 0 → e_i → e_i + e_j → 1 through
+// the cube) has three right dihedral angles, two of 60° and one of 45° (Coxeter's orthoscheme), so
+// in the identity the smallest is 45° and the largest 90°; 45° is a bound met exactly (sin² = 1/2),
+// 45° + 10⁻²⁰ is not; in M = 4·I (a scaling) nothing changes.
+TEST(MeshCertifier3, DihedralAnglesOfTheKuhnGridAre45_60_90) {
+  for (const Rational& s : {Rational(1), Rational(4)}) {
+    const Mesh3 m = kuhn_grid(2, {s, 0, 0, s, 0, s});
+    const EnclosedMesh3 e(m);
+    const AngleReport r = check_angles(e, Rational(45));
+    EXPECT_EQ(r.measured, m.tetrahedra.size());
+    EXPECT_NEAR(r.smallest, 45, 1e-9);
+    EXPECT_NEAR(r.largest, 90, 1e-9);
+    EXPECT_TRUE(r.violations.empty());
+    EXPECT_TRUE(r.undecided_triangles.empty());
+    const AngleReport above = check_angles(e, Rational(45) + 1 / Rational("100000000000000000000"));
+    EXPECT_EQ(above.violations.count(), m.tetrahedra.size());  // one witness per tetrahedron
+    EXPECT_TRUE(check_angles(e, Rational(44)).violations.empty());
+  }
+}

@@ -3,6 +3,7 @@
 // solved from its linear system), on exactly degenerate inputs (coplanar, M-cospherical) and a
 // few ulps away, and filtered against exact across magnitudes (zero disagreements allowed).
 
+#include "predicates/dihedral.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orientation3.hpp"
 
@@ -183,4 +184,85 @@ TEST(FilteredVsExact, Orientation3AndInSphere) {
   }
   EXPECT_EQ(zero_orientations, 3000);
   EXPECT_EQ(zero_spheres, 3000);
+}
+
+// The dihedral angle in a metric (predicates/dihedral.hpp) against closed forms: the regular
+// tetrahedron's arccos(1/3) (sin² = 8/9 exactly), the corner tetrahedron's right angles at its axes
+// and arccos(1/√3) at the hypotenuse of a face, and the same angles after an affine map F with the
+// metric FᵀF's inverse image (the regular tetrahedron squashed by 1/2 in z, measured by
+// diag(1, 1, 4): the angles of the regular one).
+TEST(Dihedral, ClosedFormsAndTheirAffineImages) {
+  const auto exact = [](const std::array<Rational, 12>& p, const Sym3<Rational>& M, const Rational& s) {
+    std::array<Rational, 19> x;
+    std::copy(p.begin(), p.end(), x.begin());
+    x[12] = M.m11, x[13] = M.m12, x[14] = M.m13, x[15] = M.m22, x[16] = M.m23, x[17] = M.m33, x[18] = s;
+    return x;
+  };
+  const auto dot = [](const std::array<Rational, 19>& x) {
+    std::array<Rational, 18> h;
+    std::copy_n(x.begin(), 18, h.begin());
+    return exact_sign<DihedralDotKernel>(h);
+  };
+  const Sym3<Rational> I{1, 0, 0, 1, 0, 1}, z4{1, 0, 0, 1, 0, 4};
+  const std::array<Rational, 12> regular{1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1};
+  std::array<Rational, 12> squashed = regular;
+  for (std::size_t i = 2; i < 12; i += 3) squashed[i] /= 2;
+  for (const auto& [p, M] : {std::pair{regular, I}, std::pair{squashed, z4}}) {
+    EXPECT_EQ(dot(exact(p, M, 0)), Sign::positive);                                       // acute
+    EXPECT_EQ(exact_sign<DihedralSinKernel>(exact(p, M, Rational(8, 9))), Sign::zero);      // sin² θ = 8/9
+    EXPECT_EQ(exact_sign<DihedralSinKernel>(exact(p, M, Rational(3, 4))), Sign::negative);  // θ > 60°
+    EXPECT_EQ(exact_sign<DihedralSinKernel>(exact(p, M, Rational(9, 10))), Sign::positive); // θ < arcsin √0.9
+  }
+  EXPECT_NE(exact_sign<DihedralSinKernel>(exact(squashed, I, Rational(8, 9))), Sign::zero);  // not in I
+  // The corner tetrahedron 0, x, y, z: right at edge 0–x (faces in the planes z = 0 and y = 0);
+  // at edge x–y, cos θ = 1/√3: sin² θ = 2/3.
+  const std::array<Rational, 12> corner{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  EXPECT_EQ(dot(exact(corner, I, 0)), Sign::zero);
+  const std::array<Rational, 12> at_xy{1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1};
+  EXPECT_EQ(dot(exact(at_xy, I, 0)), Sign::positive);
+  EXPECT_EQ(exact_sign<DihedralSinKernel>(exact(at_xy, I, Rational(2, 3))), Sign::zero);
+  // A metric stretching z by 2 (diag(1, 1, 4)) keeps the right angle at 0–x (both faces contain x).
+  EXPECT_EQ(dot(exact(corner, z4, 0)), Sign::zero);
+}
+
+// The interval stage then exact (what the certifier calls for kernels beyond the static filter's
+// degree 8, predicates/dihedral.hpp) against exact alone.
+template <class K>
+Sign interval_checked(const std::array<double, K::arity>& x) {
+  std::array<Rational, K::arity> q;
+  std::array<anisocert::FilterInterval, K::arity> xi;
+  for (std::size_t i = 0; i < K::arity; ++i) q[i] = Rational(x[i]), xi[i] = anisocert::FilterInterval(x[i]);
+  const Sign exact = exact_sign<K>(q);
+  EXPECT_EQ(interval_then_exact<K>(xi, [&] { return q; }), exact) << K::name;
+  return exact;
+}
+
+// Filtered against exact for the two dihedral kernels: random doubles across magnitudes, and the
+// corner tetrahedron (an exact right angle) translated and scaled by powers of two, then nudged.
+TEST(FilteredVsExact, Dihedral) {
+  std::mt19937_64 rng(39039);
+  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const auto integer = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  int zeros = 0;
+  for (int t = 0; t < 2000; ++t) {
+    const int e = integer(-60, 60), m = integer(-60, 60);
+    std::array<double, 19> x;
+    for (std::size_t i = 0; i < 12; ++i) x[i] = std::ldexp(uniform(-1, 1), e);
+    const double m11 = std::ldexp(uniform(0.1, 1), m), m22 = std::ldexp(uniform(0.1, 1), m), m33 = std::ldexp(uniform(0.1, 1), m);
+    x[12] = m11, x[13] = uniform(-0.5, 0.5) * std::sqrt(m11 * m22), x[14] = uniform(-0.5, 0.5) * std::sqrt(m11 * m33);
+    x[15] = m22, x[16] = uniform(-0.5, 0.5) * std::sqrt(m22 * m33), x[17] = m33, x[18] = uniform(0, 1);
+    interval_checked<DihedralSinKernel>(x);
+    std::array<double, 18> head;
+    std::copy_n(x.begin(), 18, head.begin());
+    checked<DihedralDotKernel>(head);
+    interval_checked<DihedralDotKernel>(head);
+    const double scale = std::ldexp(1.0, integer(-40, 40)), cx = integer(-1000, 1000) * scale, cy = integer(-1000, 1000) * scale,
+                 cz = integer(-1000, 1000) * scale;
+    std::array<double, 18> right{cx, cy, cz, cx + scale, cy, cz, cx, cy + 3 * scale, cz, cx, cy, cz + 5 * scale, 1, 0, 0, 2, 0, 4};
+    zeros += checked<DihedralDotKernel>(right) == Sign::zero;
+    const auto i = static_cast<std::size_t>(integer(0, 11));
+    right[i] = std::nextafter(right[i], integer(0, 1) ? INFINITY : -INFINITY);
+    checked<DihedralDotKernel>(right);
+  }
+  EXPECT_EQ(zeros, 2000);
 }

@@ -63,21 +63,20 @@ oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
   return o;
 }
 
-// A tetrahedral mesh (issue 39): validity, local uniformity, edge lengths and quality in 3D; the
-// checks not yet written for tetrahedra are refused by name rather than skipped.
+// A tetrahedral mesh (issue 39): validity, local uniformity, edge lengths, quality and dihedral
+// angles in 3D; the checks not yet written for tetrahedra are refused by name rather than skipped.
 int run_certify3(CertifyCommandOptions& c, const oracle::CertifyOptions& o, const io::MeshFile& file) {
   for (const auto& [given, name] : {std::pair{o.rho0.has_value(), "--rho0"}, {o.gamma0.has_value(), "--gamma0"},
-                                    {o.min_angle.has_value(), "--min-angle"},
                                     {!c.svg_path.empty(), "--svg"}})
     if (given)
       throw UsageError(c.in.path + " is a tetrahedral mesh, and " + name +
-                       " is not available for tetrahedra yet (3D: validity, local uniformity, edge lengths, quality)");
+                       " is not available for tetrahedra yet (3D: validity, local uniformity, edge lengths, quality, dihedral angles)");
   const geometry::Mesh3<Rational>& mesh = file.mesh3;
   if (mesh.metrics.empty() && (o.length_range || o.min_quality || (c.checks_given && (o.uniform || o.metric))))
     throw UsageError(c.in.path + ": has no metric, which the requested checks and bounds need (give --metric FILE)");
   oracle::Certify3Options o3;
   o3.valid = o.valid, o3.uniform = o.uniform, o3.metric = o.metric, o3.length_range = o.length_range;
-  o3.min_quality = o.min_quality;
+  o3.min_quality = o.min_quality, o3.min_angle = o.min_angle;
   o3.described_witnesses = o.described_witnesses;
   const oracle::Certify3Report report = oracle::certify_mesh3(mesh, o3);
   io::CertifyVerdict v = io::certify_verdict(report, o3, mesh, c.bounds);
@@ -157,7 +156,7 @@ void add_certify(CLI::App& app, int& exit_code) {
   c->add_option("--length-range", o->length_range, "check every metric edge length in [a, b] (e.g. 0.7071 1.4143)")
       ->expected(2);
   c->add_option("--min-quality", o->bounds.min_quality, "check every mean-ratio quality in the metrics >= q");
-  c->add_option("--min-angle", o->bounds.min_angle, "check every angle in its vertex's metric >= this many degrees");
+  c->add_option("--min-angle", o->bounds.min_angle, "check every angle in its vertex's metric >= this many degrees (tetrahedra: every dihedral angle in each end of its edge's metric)");
   const std::string first = "the first " + std::to_string(oracle::default_described_witnesses);
   c->add_option("--json", o->json_path,
                 "write the full report to this file: per check, the exact count of failures and " + first + "\n"

@@ -90,19 +90,23 @@ void add_quality(const oracle::QualityReport& q, const BoundTexts& b, CertifyVer
         {"least_" + element, q.worst_triangle}, {"quantiles", qj}, {"violation_count", q.violations.count()}}});
 }
 
-void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdict& v) {
+void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdict& v, const std::string& element = "triangle") {
   const bool bounded = !b.min_angle.empty();
   const bool holds = a.violations.empty() && a.undecided_triangles.empty();
+  const bool three = element == "tetrahedron";
   const std::string undecided =
-      a.undecided_triangles.empty() ? "" : ", " + std::to_string(a.undecided_triangles.size()) + " triangles undecided at 8192 bits";
-  v.checks.push_back({"angles", bounded ? "every angle >= " + excerpt(b.min_angle) + "° in its vertex's metric" : "angles in the vertices' metrics",
-                      bounded ? "angles >= " + excerpt(b.min_angle) + "°" : "angles", holds, bounded,
-                      " (smallest ≈ " + as_printed(a.smallest) + "°, triangle " + std::to_string(a.smallest_triangle) + undecided + ")",
+      a.undecided_triangles.empty() ? "" : ", " + std::to_string(a.undecided_triangles.size()) + " " + element + "s undecided at 8192 bits";
+  const std::string largest = three ? "; largest ≈ " + as_printed(a.largest) + "°, tetrahedron " + std::to_string(a.largest_triangle) : "";
+  const std::string what = three ? "dihedral angle" : "angle";
+  v.checks.push_back({"angles", bounded ? "every " + what + " >= " + excerpt(b.min_angle) + "° in " + (three ? "its edge's ends' metrics" : "its vertex's metric")
+                                        : what + "s in the vertices' metrics",
+                      bounded ? what + "s >= " + excerpt(b.min_angle) + "°" : what + "s", holds, bounded,
+                      " (smallest ≈ " + as_printed(a.smallest) + "°, " + element + " " + std::to_string(a.smallest_triangle) + largest + undecided + ")",
                       "", {texts(a.violations)},
                       {{"threshold_degrees", bounded ? ReportJson(b.min_angle) : ReportJson(nullptr)}, {"holds", holds},
                        {"measured", a.measured}, {"unmeasured", a.undecided}, {"smallest_degrees", a.smallest},
-                       {"smallest_triangle", a.smallest_triangle}, {"undecided_count", a.undecided_triangles.size()},
-                       {"violation_count", a.violations.count()}}});
+                       {"smallest_" + element, a.smallest_triangle}, {"largest_degrees", a.largest}, {"largest_" + element, a.largest_triangle},
+                       {"undecided_count", a.undecided_triangles.size()}, {"violation_count", a.violations.count()}}});
 }
 
 void add_validity3(const oracle::Certify3Report& r, CertifyVerdict& v) {
@@ -165,6 +169,7 @@ CertifyVerdict certify_verdict(const oracle::Certify3Report& r, const oracle::Ce
   if (r.uniform_checked) add_uniform3(r, v);
   if (r.lengths) add_lengths(*r.lengths, b, v);
   if (r.quality) add_quality(*r.quality, b, v, "tetrahedron");
+  if (r.angles) add_angles(*r.angles, b, v, "tetrahedron");
   if (r.ugawg) add_ugawg3(*r.ugawg, v);
   return v;
 }
@@ -272,6 +277,7 @@ std::vector<StreamedList> lists_of(const std::string& key, const oracle::Certify
     return {witness_list("violations", r.uniform_violations, "tetrahedron"), witness_list("ties", r.uniform_ties, "tetrahedron")};
   if (key == "lengths") return {witness_list("violations", r.lengths->range_violations)};
   if (key == "quality") return {witness_list("violations", r.quality->violations, "tetrahedron")};
+  if (key == "angles") return {witness_list("violations", r.angles->violations, "tetrahedron")};
   return {};
 }
 

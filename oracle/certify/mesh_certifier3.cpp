@@ -230,6 +230,7 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
     const std::vector<std::pair<int, int>> edges = unique_edges(mesh.tetrahedra);
     r.lengths = check_lengths(m, edges, o.length_range, o.described_witnesses);
     r.quality = check_quality(m, o.min_quality, o.described_witnesses);
+    r.angles = check_angles(m, o.min_angle, o.described_witnesses);
     r.ugawg = ugawg_measures(m, edges, r.valid && r.valid->orientation == "negative" ? -1 : 1);
   }
   return r;

@@ -10,7 +10,8 @@
 //  - conforming to its metric: edge lengths in both endpoints' metrics, the share in
 //    [1/√2, √2] decided exactly, and a range as a verdict; the mean-ratio quality in each vertex's
 //    metric, enclosed, and a lower bound as a verdict (metric_checks.hpp, one loop for both
-//    dimensions each); beside them UGAWG's measures (ugawg_measures.hpp), measured in doubles.
+//    dimensions each); the dihedral angles at each edge in each end's metric, the smallest and
+//    largest measured, a lower bound as a verdict (metric_angles.cpp's loop); beside them UGAWG's measures (ugawg_measures.hpp), measured in doubles.
 // Each check's verdict stands on its own; a flat tetrahedron is counted as unmeasured by the
 // locally uniform check. Candidates for an M_v-circumellipsoid come from a grid of the vertices,
 // within its bounding box enclosed in interval arithmetic (the centre solved by Cramer's rule,
@@ -30,6 +31,7 @@ struct Certify3Options {
   bool metric = false;                                        // edge lengths in the metrics
   std::optional<std::pair<Rational, Rational>> length_range;  // verdict: every metric length in it
   std::optional<Rational> min_quality;                        // verdict: every mean ratio at least it (in [0, 1])
+  std::optional<Rational> min_angle;                          // verdict: every dihedral angle at least it (degrees, (0, 90])
   std::size_t described_witnesses = default_described_witnesses;
 };
 
@@ -40,13 +42,15 @@ struct Certify3Report {
   std::size_t insphere_tests = 0, unmeasured = 0;
   std::optional<LengthReport> lengths;
   std::optional<QualityReport> quality;
+  std::optional<AngleReport> angles;    // dihedral angles in each edge end's metric
   std::optional<UgawgMeasures> ugawg;  // with the metric checks: UGAWG's measures, floating point
   std::size_t tetrahedra = 0;
 
   bool valid_holds() const { return valid && valid->valid; }
   bool holds(const Certify3Options& o) const {
     return (!o.valid || valid_holds()) && (!o.uniform || uniform_violations.empty()) && (!lengths || lengths->range_violations.empty()) &&
-           (!quality || quality->violations.empty());
+           (!quality || quality->violations.empty()) &&
+           (!angles || (angles->violations.empty() && angles->undecided_triangles.empty()));
   }
 };
 

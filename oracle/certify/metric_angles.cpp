@@ -1,12 +1,16 @@
-// The angles of each triangle in its corners' metrics against a lower bound (metric_checks.hpp).
+// The angles of each triangle in its corners' metrics, and the dihedral angles of each tetrahedron in
+// its edges' ends' metrics, against a lower bound (metric_checks.hpp): one loop, a level per dimension.
 #include "oracle/certify/metric_checks.hpp"
 
 #include "numbers/interval.hpp"
 #include "predicates/angle.hpp"
+#include "predicates/dihedral.hpp"
 #include "predicates/metric_dot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace anisocert::oracle {
 
@@ -25,6 +29,12 @@ std::pair<Rational, Rational> sin_squared_bounds(const Rational& degrees, long p
 
 namespace {
 
+// The angle whose cosine is dot / √norms, in degrees (approximate, from enclosures).
+double degrees_of(const FilterInterval& dot, const FilterInterval& norms) {
+  const double d = (dot.lo + dot.hi) / 2, n = std::sqrt(std::max(0.0, (norms.lo + norms.hi) / 2));
+  return n > 0 ? std::acos(std::clamp(d / n, -1.0, 1.0)) * 180 / std::numbers::pi : 0;
+}
+
 // The corner at b of triangle abc measured by M_b: its angle (approximate, degrees) and sign
 // decisions on the enclosures first.
 class Corner {
@@ -34,8 +44,7 @@ class Corner {
   double approx_degrees() const {
     const auto in = enclosure(FilterInterval(0));
     const auto [dot, norms] = predicates::angle_dot_and_norms(in);
-    const double d = (dot.lo + dot.hi) / 2, n = std::sqrt(std::max(0.0, (norms.lo + norms.hi) / 2));
-    return n > 0 ? std::acos(std::clamp(d / n, -1.0, 1.0)) * 180 / std::numbers::pi : 0;
+    return degrees_of(dot, norms);
   }
   bool obtuse_or_right() const {  // uᵀMw <= 0: the angle is at least 90°
     const auto e = enclosure(FilterInterval(0));
@@ -49,6 +58,8 @@ class Corner {
   Sign below(const Rational& s) const {
     return predicates::interval_then_exact<predicates::AngleSinKernel>(enclosure(enclose(s)), [&] { return exact(s); });
   }
+  int vertex() const { return b_; }
+  std::string where() const { return "at vertex " + std::to_string(b_) + " in that vertex's metric"; }
 
  private:
   std::array<FilterInterval, 10> enclosure(const FilterInterval& s) const {
@@ -65,63 +76,160 @@ class Corner {
   int a_, b_, c_;
 };
 
-}  // namespace
+// The dihedral angle of tetrahedron abcd at edge ab (between faces abc and abd) measured by the
+// metric of `by`, a or b (predicates/dihedral.hpp).
+class Dihedral {
+ public:
+  Dihedral(const EnclosedMesh3& m, int a, int b, int c, int d, int by) : m_(m), v_{a, b, c, d}, by_(by) {}
 
-AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& min_angle, std::size_t described) {
+  double approx_degrees() const {
+    const auto [dot, norms] = predicates::dihedral_dot_and_norms(enclosure(FilterInterval(0)));
+    return degrees_of(dot, norms);
+  }
+  bool obtuse_or_right() const {
+    const auto e = enclosure(FilterInterval(0));
+    std::array<FilterInterval, 18> head;
+    std::copy_n(e.begin(), 18, head.begin());
+    return predicates::interval_then_exact<predicates::DihedralDotKernel>(head, [&] {
+             const auto x = exact(0);
+             std::array<Rational, 18> h;
+             std::copy_n(x.begin(), 18, h.begin());
+             return h;
+           }) != Sign::positive;
+  }
+  Sign below(const Rational& s) const {
+    return predicates::interval_then_exact<predicates::DihedralSinKernel>(enclosure(enclose(s)), [&] { return exact(s); });
+  }
+  int vertex() const { return by_; }
+  std::string where() const {
+    return "at edge " + std::to_string(v_[0]) + "–" + std::to_string(v_[1]) + " in the metric of vertex " + std::to_string(by_);
+  }
+
+ private:
+  std::array<FilterInterval, 19> enclosure(const FilterInterval& s) const {
+    std::array<FilterInterval, 19> x;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& p = m_.vertex[static_cast<std::size_t>(v_[i])];
+      x[3 * i] = p.x, x[3 * i + 1] = p.y, x[3 * i + 2] = p.z;
+    }
+    const auto& M = m_.metric[static_cast<std::size_t>(by_)];
+    x[12] = M.m11, x[13] = M.m12, x[14] = M.m13, x[15] = M.m22, x[16] = M.m23, x[17] = M.m33, x[18] = s;
+    return x;
+  }
+  std::array<Rational, 19> exact(const Rational& s) const {
+    std::array<Rational, 19> x;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& p = m_.mesh.vertices[static_cast<std::size_t>(v_[i])];
+      x[3 * i] = p.x, x[3 * i + 1] = p.y, x[3 * i + 2] = p.z;
+    }
+    const auto& M = m_.mesh.metrics[static_cast<std::size_t>(by_)];
+    x[12] = M.m11, x[13] = M.m12, x[14] = M.m13, x[15] = M.m22, x[16] = M.m23, x[17] = M.m33, x[18] = s;
+    return x;
+  }
+  const EnclosedMesh3& m_;
+  std::array<int, 4> v_;
+  int by_;
+};
+
+// Per dimension, what the one loop below asks of an element: whether it is measured (a flat or
+// clockwise triangle, a flat tetrahedron: validity reports it) and its angles.
+struct Triangles {
+  static constexpr const char* element = "triangle";
+  static constexpr const char* kind = "an angle";
+  const EnclosedMesh& m;
+  std::size_t size() const { return m.mesh.triangles.size(); }
+  bool measurable(std::size_t t) const {
+    const auto& tri = m.mesh.triangles[t];
+    return m.orientation(tri[0], tri[1], tri[2]) == Sign::positive;
+  }
+  static constexpr std::size_t angles = 3;
+  Corner angle(std::size_t t, std::size_t i) const {
+    const auto& tri = m.mesh.triangles[t];
+    return Corner(m, tri[(i + 2) % 3], tri[i], tri[(i + 1) % 3]);
+  }
+};
+
+// Each of the six edges' dihedral angles, in each end's metric.
+struct Tetrahedra {
+  static constexpr const char* element = "tetrahedron";
+  static constexpr const char* kind = "a dihedral angle";
+  const EnclosedMesh3& m;
+  std::size_t size() const { return m.mesh.tetrahedra.size(); }
+  bool measurable(std::size_t t) const {
+    const auto& v = m.mesh.tetrahedra[t];
+    return m.orientation(v[0], v[1], v[2], v[3]) != Sign::zero;
+  }
+  static constexpr std::size_t angles = 12;
+  Dihedral angle(std::size_t t, std::size_t k) const {
+    static constexpr std::array<std::array<int, 4>, 6> edges{{{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}}};
+    const auto& v = m.mesh.tetrahedra[t];
+    const auto& e = edges[k / 2];
+    const auto at = [&](int i) { return v[static_cast<std::size_t>(i)]; };
+    return Dihedral(m, at(e[0]), at(e[1]), at(e[2]), at(e[3]), k % 2 ? at(e[1]) : at(e[0]));
+  }
+};
+
+template <class Level>
+AngleReport check_angles_of(const Level& level, const std::optional<Rational>& min_angle, std::size_t described) {
   AngleReport r;
   r.violations = WitnessList(described);
-  const auto& tris = m.mesh.triangles;
   std::pair<Rational, Rational> bounds;
   if (min_angle) bounds = sin_squared_bounds(*min_angle, 128);
-  std::vector<std::pair<int, int>> open;  // (triangle, corner) that the bounds did not decide
-  for (int t = 0; t < static_cast<int>(tris.size()); ++t) {
-    const auto& tri = tris[t];
-    if (m.orientation(tri[0], tri[1], tri[2]) != Sign::positive) {  // flat or clockwise: validity reports it
+  std::vector<std::pair<std::size_t, std::size_t>> open;  // (element, angle) that the bounds did not decide
+  const auto report = [&](std::size_t t, const auto& angle, const std::string& about) {
+    r.violations.add(angle.vertex(), static_cast<int>(t), -1, [&] {
+      return std::string(Level::element) + " " + std::to_string(t) + " has " + Level::kind + about + " " + angle.where() + ", below the bound";
+    });
+  };
+  for (std::size_t t = 0; t < level.size(); ++t) {
+    if (!level.measurable(t)) {
       ++r.undecided;
       continue;
     }
     ++r.measured;
     bool reported = false;
-    for (int i = 0; i < 3; ++i) {
-      const Corner corner(m, tri[(i + 2) % 3], tri[i], tri[(i + 1) % 3]);
-      const double deg = corner.approx_degrees();
-      if (deg < r.smallest) r.smallest = deg, r.smallest_triangle = t;
-      if (!min_angle || reported || corner.obtuse_or_right() || corner.below(bounds.second) != Sign::positive) continue;
-      if (corner.below(bounds.first) == Sign::positive) {
+    for (std::size_t i = 0; i < Level::angles; ++i) {
+      const auto angle = level.angle(t, i);
+      const double deg = angle.approx_degrees();
+      if (deg < r.smallest) r.smallest = deg, r.smallest_triangle = static_cast<int>(t);
+      if (deg > r.largest) r.largest = deg, r.largest_triangle = static_cast<int>(t);
+      if (!min_angle || reported || angle.obtuse_or_right() || angle.below(bounds.second) != Sign::positive) continue;
+      if (angle.below(bounds.first) == Sign::positive) {
         reported = true;
-        r.violations.add(tri[i], t, -1, [&] {
-          return "triangle " + std::to_string(t) + " has an angle of about " + std::to_string(deg) + "° at vertex " +
-                 std::to_string(tri[i]) + " in that vertex's metric, below the bound";
-        });
+        report(t, angle, " of about " + std::to_string(deg) + "°");
       } else {
         open.emplace_back(t, i);
       }
     }
   }
-  // sin² θ irrational and a corner within the enclosure: refine it (the rational sin² of the corner
+  // sin² θ irrational and an angle within the enclosure: refine it (the angle's rational sin²
   // differs from sin² θ, so some precision decides it).
-  std::vector<bool> reported(tris.size(), false);
-  for (const WitnessPlace& w : r.violations.places()) reported[w.triangle] = true;
+  std::vector<bool> reported(level.size(), false);
+  for (const WitnessPlace& w : r.violations.places()) reported[static_cast<std::size_t>(w.triangle)] = true;
   for (long prec = 256; !open.empty() && prec <= 8192; prec *= 2) {
     bounds = sin_squared_bounds(*min_angle, prec);
-    std::vector<std::pair<int, int>> still;
-    for (const auto& corner_at : open) {
-      const int t = corner_at.first, i = corner_at.second;  // named, not bound: clang 14 cannot capture bindings
-      const auto& tri = tris[t];
-      const Corner corner(m, tri[(i + 2) % 3], tri[i], tri[(i + 1) % 3]);
-      if (reported[t] || corner.below(bounds.second) != Sign::positive) continue;
-      if (corner.below(bounds.first) == Sign::positive)
-        reported[t] = true, r.violations.add(tri[i], t, -1, [&] {
-          return "triangle " + std::to_string(t) + " has an angle below the bound at vertex " + std::to_string(tri[i]) +
-                 " in that vertex's metric";
-        });
-      else
-        still.emplace_back(t, i);
+    std::vector<std::pair<std::size_t, std::size_t>> still;
+    for (const auto& at : open) {
+      const std::size_t t = at.first;  // named, not bound: clang 14 cannot capture bindings
+      const auto angle = level.angle(t, at.second);
+      if (reported[t] || angle.below(bounds.second) != Sign::positive) continue;
+      if (angle.below(bounds.first) == Sign::positive) reported[t] = true, report(t, angle, "");
+      else still.push_back(at);
     }
     open = std::move(still);
   }
-  for (const auto& [t, i] : open) r.undecided_triangles.push_back(t);
+  for (const auto& at : open) r.undecided_triangles.push_back(static_cast<int>(at.first));
   return r;
+}
+
+}  // namespace
+
+AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& min_angle, std::size_t described) {
+  return check_angles_of(Triangles{m}, min_angle, described);
+}
+
+AngleReport check_angles(const EnclosedMesh3& m, const std::optional<Rational>& min_angle, std::size_t described) {
+  return check_angles_of(Tetrahedra{m}, min_angle, described);
 }
 
 }  // namespace anisocert::oracle

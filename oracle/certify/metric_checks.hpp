@@ -42,9 +42,9 @@ struct QualityReport {
 
 struct AngleReport {
   std::size_t measured = 0, undecided = 0;
-  double smallest = 180;                    // approximate, degrees
-  int smallest_triangle = -1;
-  WitnessList violations;                   // one per triangle with a corner below θ (when given)
+  double smallest = 180, largest = 0;       // approximate, degrees
+  int smallest_triangle = -1, largest_triangle = -1;   // (or tetrahedron)
+  WitnessList violations;                   // one per element with an angle below θ (when given)
   std::vector<int> undecided_triangles;     // θ's bounds never decided (not seen in practice)
 };
 
@@ -62,6 +62,10 @@ QualityReport check_quality(const EnclosedMesh& m, const std::optional<Rational>
 QualityReport check_quality(const EnclosedMesh3& m, const std::optional<Rational>& min_quality,
                             std::size_t described = all_witnesses);
 AngleReport check_angles(const EnclosedMesh& m, const std::optional<Rational>& min_angle_degrees,
+                         std::size_t described = all_witnesses);
+// The same for tetrahedra (issue 39): the dihedral angle at each edge in each end's metric
+// (predicates/dihedral.hpp), the smallest and largest measured, flat tetrahedra not measured.
+AngleReport check_angles(const EnclosedMesh3& m, const std::optional<Rational>& min_angle_degrees,
                          std::size_t described = all_witnesses);
 
 // Rational bounds lo <= sin²(θ°) <= hi for 0 < θ <= 90: equal and exact where sin² θ is rational
