@@ -135,7 +135,7 @@ TEST(TetrahedralizationCheck, PinchedEdgesAndVerticesAreNamed) {
 
 // The declared triangles: the 12 boundary faces, some reversed, pass; an interior face declared
 // too is an interface between subdomains (counted, as MMG and Gmsh write them); one boundary face
-// missing, one declared twice and three corners that are no face are each named.
+// missing, one declared twice the same way and three corners that are no face are each named.
 TEST(TetrahedralizationCheck, DeclaredTrianglesMustBeTheBoundaryFaces) {
   Mesh3 m;
   add_cube(m, {0, 0, 0});
@@ -159,6 +159,15 @@ TEST(TetrahedralizationCheck, DeclaredTrianglesMustBeTheBoundaryFaces) {
   ASSERT_EQ(m.triangles.size(), 12u);
   const auto ok = check(m);
   EXPECT_TRUE(ok.valid) << all(ok);
+  // Each face declared again in the other orientation (CGAL's Medit writer lists a surface facet
+  // from both sides): valid, 12 counted; a third declaration of one of them is a failure.
+  Mesh3 both = m;
+  for (const auto& t : m.triangles) both.triangles.push_back({t[1], t[0], t[2]});
+  const auto sides = check(both);
+  EXPECT_TRUE(sides.valid) << all(sides);
+  EXPECT_EQ(sides.declared_both_sides, 12u);
+  both.triangles.push_back({m.triangles[0][2], m.triangles[0][0], m.triangles[0][1]});  // a rotation: the first orientation
+  EXPECT_EQ(check(both).failure_count, 1u) << all(check(both));
   const auto missing = m.triangles.back();
   m.triangles.pop_back();
   m.triangles.push_back(m.triangles.front());
@@ -174,7 +183,7 @@ TEST(TetrahedralizationCheck, DeclaredTrianglesMustBeTheBoundaryFaces) {
   const auto c = check(m);
   EXPECT_FALSE(c.valid);
   EXPECT_EQ(c.declared_interfaces, 1u) << all(c);
-  EXPECT_TRUE(names(c, "is declared twice")) << all(c);
+  EXPECT_TRUE(names(c, "is declared again in the same orientation or a third time")) << all(c);
   EXPECT_TRUE(names(c, "(" + std::to_string(none[0]) + ", " + std::to_string(none[1]) + ", " + std::to_string(none[2]) +
                            ") is not a face of the tetrahedra"))
       << all(c);

@@ -121,12 +121,13 @@ void add_validity3(const oracle::Certify3Report& r, CertifyVerdict& v) {
                       r.valid_holds(), true,
                       more + " (" + std::to_string(t.boundary_faces) + " boundary faces" +
                           (t.declared_interfaces ? ", " + std::to_string(t.declared_interfaces) + " declared interface triangles" : "") +
+                          (t.declared_both_sides ? ", " + std::to_string(t.declared_both_sides) + " triangles declared from both sides" : "") +
                           orientation + ")",
                       "",
                       {texts(t.failures, t.failure_count)},
                       {{"holds", r.valid_holds()}, {"checks_run", t.checks_run}, {"orientation", t.orientation},
                        {"boundary_faces", t.boundary_faces}, {"interior_faces", t.interior_faces},
-                       {"declared_interfaces", t.declared_interfaces}, {"failure_count", t.failure_count},
+                       {"declared_interfaces", t.declared_interfaces}, {"declared_both_sides", t.declared_both_sides}, {"failure_count", t.failure_count},
                        {"bad_tetrahedron_count", t.bad_tetrahedra.size()}}});
 }
 

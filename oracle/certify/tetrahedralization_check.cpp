@@ -189,13 +189,18 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
 
   const auto& declared = m.mesh.triangles;
   if (!declared.empty()) {
-    r.checks_run.push_back("every boundary face is declared, every declared triangle a face (interior: an interface), once");
+    r.checks_run.push_back("every boundary face is declared, every declared triangle a face (interior: an interface), once or once from each side");
     std::vector<std::pair<Triple, int>> d, b;
     for (std::size_t k = 0; k < declared.size(); ++k) {
       Triple s = declared[k];
       std::sort(s.begin(), s.end());
       d.emplace_back(s, static_cast<int>(k));
     }
+    // Whether declared triangle k lists its vertices in an odd permutation of the sorted order.
+    const auto odd = [&](int k) {
+      const Triple& t = declared[static_cast<std::size_t>(k)];
+      return ((t[0] > t[1]) != (t[1] > t[2])) != (t[0] > t[2]);
+    };
     for (std::size_t k = 0; k < boundary.size(); ++k) {
       Triple s = boundary[k];
       std::sort(s.begin(), s.end());
@@ -206,12 +211,17 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
     while (i < d.size() || j < b.size()) {
       if (j == b.size() || (i < d.size() && d[i].first < b[j].first)) {
         const bool repeated = i > 0 && d[i - 1].first == d[i].first;
+        // A face declared once from each side (the two orientations), as CGAL's Medit writer lists
+        // the facets of a surface patch: counted, not a failure; a third time or the same way twice is.
+        const bool other_side = repeated && !(i > 1 && d[i - 2].first == d[i].first) && odd(d[i - 1].second) != odd(d[i].second);
         const bool interface = !repeated && std::binary_search(interior.begin(), interior.end(), d[i].first);
         if (interface)
           ++r.declared_interfaces;
+        else if (other_side)
+          ++r.declared_both_sides;
         else
           r.fail("declared triangle " + std::to_string(d[i].second) + " " + triple_text(declared[static_cast<std::size_t>(d[i].second)]) +
-                 (repeated ? " is declared twice" : " is not a face of the tetrahedra"));
+                 (repeated ? " is declared again in the same orientation or a third time" : " is not a face of the tetrahedra"));
         ++i;
       } else if (i == d.size() || b[j].first < d[i].first) {
         r.fail("the boundary face " + triple_text(b[j].first) + " of tetrahedron " + std::to_string(b[j].second) +

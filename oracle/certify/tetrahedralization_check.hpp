@@ -11,9 +11,10 @@
 //    faces (no pinched edge), and the boundary faces at a vertex form one cycle around it (no
 //    pinched vertex);
 //  - when the file declares triangles, every boundary face is one of them, and each of them is a
-//    face of the tetrahedra, declared once (as a set of three vertices; either orientation): a
-//    boundary face, or an interior face between two subdomains (an interface, as MMG and Gmsh
-//    write the surfaces between volumes: counted, not a failure).
+//    face of the tetrahedra, declared once (as a set of three vertices; either orientation), or
+//    once in each orientation (CGAL's Medit writer lists a surface facet from both sides: counted,
+//    not a failure): a boundary face, or an interior face between two subdomains (an interface, as
+//    MMG and Gmsh write the surfaces between volumes: counted, not a failure).
 // These are local conditions. Together they make the tetrahedra a consistently oriented
 // 3-pseudomanifold whose boundary is a closed oriented surface, so each point off that surface is
 // covered by as many tetrahedra as the surface winds around it; that the surface does not
@@ -34,6 +35,7 @@ struct TetrahedralizationCheck {
   std::string orientation;
   std::size_t boundary_faces = 0, interior_faces = 0;
   std::size_t declared_interfaces = 0;  // declared triangles that are interior faces
+  std::size_t declared_both_sides = 0;  // faces declared a second time, in the other orientation
   std::vector<std::string> checks_run;
   std::vector<std::string> failures;  // the first `described`
   std::size_t failure_count = 0;      // all of them
