@@ -29,11 +29,12 @@ std::pair<Rational, Rational> sin_squared_bounds(const Rational& degrees, long p
 
 namespace {
 
-// The angle whose cosine is dot / √norms, in degrees (approximate, from enclosures).
-double degrees_of(const FilterInterval& dot, const FilterInterval& norms) {
-  const double d = (dot.lo + dot.hi) / 2, n = std::sqrt(std::max(0.0, (norms.lo + norms.hi) / 2));
-  return n > 0 ? std::acos(std::clamp(d / n, -1.0, 1.0)) * 180 / std::numbers::pi : 0;
+// The angle whose cosine is dot / √norms, in degrees (approximate).
+double degrees_of(double dot, double norms) {
+  const double n = std::sqrt(std::max(0.0, norms));
+  return n > 0 ? std::acos(std::clamp(dot / n, -1.0, 1.0)) * 180 / std::numbers::pi : 0;
 }
+double degrees_of(const FilterInterval& dot, const FilterInterval& norms) { return degrees_of((dot.lo + dot.hi) / 2, (norms.lo + norms.hi) / 2); }
 
 // The corner at b of triangle abc measured by M_b: its angle (approximate, degrees) and sign
 // decisions on the enclosures first.
@@ -82,8 +83,18 @@ class Dihedral {
  public:
   Dihedral(const EnclosedMesh3& m, int a, int b, int c, int d, int by) : m_(m), v_{a, b, c, d}, by_(by) {}
 
+  // In doubles (the angle reported is approximate; decisions are below): the points' nearest
+  // doubles and the metric enclosures' midpoints.
   double approx_degrees() const {
-    const auto [dot, norms] = predicates::dihedral_dot_and_norms(enclosure(FilterInterval(0)));
+    std::array<double, 18> x;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& p = m_.approx[static_cast<std::size_t>(v_[i])];
+      x[3 * i] = p.x, x[3 * i + 1] = p.y, x[3 * i + 2] = p.z;
+    }
+    const auto& M = m_.metric[static_cast<std::size_t>(by_)];
+    std::size_t k = 12;
+    for (const FilterInterval* e : {&M.m11, &M.m12, &M.m13, &M.m22, &M.m23, &M.m33}) x[k++] = e->lo / 2 + e->hi / 2;
+    const auto [dot, norms] = predicates::dihedral_dot_and_norms(x);
     return degrees_of(dot, norms);
   }
   bool obtuse_or_right() const {
@@ -143,6 +154,7 @@ struct Triangles {
     return m.orientation(tri[0], tri[1], tri[2]) == Sign::positive;
   }
   static constexpr std::size_t angles = 3;
+  bool repeats(std::size_t, std::size_t) const { return false; }
   Corner angle(std::size_t t, std::size_t i) const {
     const auto& tri = m.mesh.triangles[t];
     return Corner(m, tri[(i + 2) % 3], tri[i], tri[(i + 1) % 3]);
@@ -160,8 +172,15 @@ struct Tetrahedra {
     return m.orientation(v[0], v[1], v[2], v[3]) != Sign::zero;
   }
   static constexpr std::size_t angles = 12;
+  static constexpr std::array<std::array<int, 4>, 6> edges{{{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}}};
+  // The angle in the edge's second end's metric when it equals the first's (a constant field).
+  bool repeats(std::size_t t, std::size_t k) const {
+    if (k % 2 == 0) return false;
+    const auto& v = m.mesh.tetrahedra[t];
+    const auto& e = edges[k / 2];
+    return m.mesh.metrics[static_cast<std::size_t>(v[static_cast<std::size_t>(e[0])])] == m.mesh.metrics[static_cast<std::size_t>(v[static_cast<std::size_t>(e[1])])];
+  }
   Dihedral angle(std::size_t t, std::size_t k) const {
-    static constexpr std::array<std::array<int, 4>, 6> edges{{{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}}};
     const auto& v = m.mesh.tetrahedra[t];
     const auto& e = edges[k / 2];
     const auto at = [&](int i) { return v[static_cast<std::size_t>(i)]; };
@@ -189,6 +208,7 @@ AngleReport check_angles_of(const Level& level, const std::optional<Rational>& m
     ++r.measured;
     bool reported = false;
     for (std::size_t i = 0; i < Level::angles; ++i) {
+      if (level.repeats(t, i)) continue;
       const auto angle = level.angle(t, i);
       const double deg = angle.approx_degrees();
       if (deg < r.smallest) r.smallest = deg, r.smallest_triangle = static_cast<int>(t);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace anisocert::oracle {
 namespace {
@@ -49,8 +50,9 @@ struct QualityKernel {
 // √det M · |D|/6, is at least q₀ (the regular tetrahedron: D² = 1/2 for unit edges, S = 6, 1).
 struct Quality3Kernel {
   static constexpr std::size_t arity = 19;
+  // (432 det(M) D², S): the two parts, shared by the decision and the enclosure of q.
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static std::pair<T, T> parts(const std::array<T, arity>& x) {
     const std::array<T, 3> a{x[0], x[1], x[2]};
     std::array<std::array<T, 3>, 4> p{a, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}, {x[9], x[10], x[11]}};
     const T m11 = x[12], m12 = x[13], m13 = x[14], m22 = x[15], m23 = x[16], m33 = x[17];
@@ -65,7 +67,12 @@ struct Quality3Kernel {
     const T wx = p[3][0] - a[0], wy = p[3][1] - a[1], wz = p[3][2] - a[2];
     const T D = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
     const T det = m11 * (m22 * m33 - m23 * m23) - m12 * (m12 * m33 - m23 * m13) + m13 * (m12 * m23 - m22 * m13);
-    return T(432) * det * D * D - x[18] * S * S * S;
+    return {T(432) * det * D * D, S};
+  }
+  template <class T>
+  static T eval(const std::array<T, arity>& x) {
+    const auto [top, S] = parts(x);
+    return top - x[18] * S * S * S;
   }
 };
 
@@ -79,12 +86,21 @@ FilterInterval cbrt(const FilterInterval& x) {
 // Per dimension, what the one loop below asks of an element: whether it can be measured, its
 // vertices, the enclosure of its quality in one vertex's metric, and the exact decision of
 // quality ≥ q₀ (the sign of the kernel; q0k = q₀² in 2D, q₀³ in 3D).
+// Whether vertices u and v of m have the same metric, exactly (the enclosures first).
+template <class Mesh>
+bool same_metric_of(const Mesh& m, int u, int v) {
+  const auto &a = m.metric[static_cast<std::size_t>(u)], &b = m.metric[static_cast<std::size_t>(v)];
+  if (a.m11.lo != b.m11.lo || a.m11.hi != b.m11.hi || a.m22.lo != b.m22.lo || a.m22.hi != b.m22.hi) return false;
+  return m.mesh.metrics[static_cast<std::size_t>(u)] == m.mesh.metrics[static_cast<std::size_t>(v)];
+}
+
 struct Triangles {
   const EnclosedMesh& m;
   static constexpr const char* kind = "triangle";
   static constexpr int power = 2;
   std::size_t size() const { return m.mesh.triangles.size(); }
   const std::array<int, 3>& vertices(std::size_t t) const { return m.mesh.triangles[t]; }
+  bool same_metric(int u, int v) const { return same_metric_of(m, u, v); }
   bool measurable(std::size_t t) const {  // flat or clockwise: validity reports it
     const auto& tri = vertices(t);
     return m.orientation(tri[0], tri[1], tri[2]) == Sign::positive;
@@ -116,6 +132,7 @@ struct Tetrahedra {
   static constexpr int power = 3;
   std::size_t size() const { return m.mesh.tetrahedra.size(); }
   const std::array<int, 4>& vertices(std::size_t t) const { return m.mesh.tetrahedra[t]; }
+  bool same_metric(int u, int v) const { return same_metric_of(m, u, v); }
   bool measurable(std::size_t t) const {  // flat: validity reports it; either orientation is measured (D² alone)
     const auto& k = vertices(t);
     return m.orientation(k[0], k[1], k[2], k[3]) != Sign::zero;
@@ -130,14 +147,10 @@ struct Tetrahedra {
     a[12] = M.m11, a[13] = M.m12, a[14] = M.m13, a[15] = M.m22, a[16] = M.m23, a[17] = M.m33, a[18] = q0k;
     return a;
   }
-  // q = (432 det M D² / S³)^(1/3), the kernel's parts at q₀ = 0 and 1.
+  // q = (432 det M D² / S³)^(1/3), from the kernel's parts.
   FilterInterval quality(std::size_t t, int v) const {
-    const auto x = arguments(vertices(t), m.vertex, m.metric[static_cast<std::size_t>(v)], FilterInterval(0));
-    const FilterInterval top = Quality3Kernel::eval(x);
-    auto y = x;
-    y[18] = FilterInterval(1);
-    const FilterInterval cube = top - Quality3Kernel::eval(y);  // S³
-    return cbrt(top / cube);
+    const auto [top, S] = Quality3Kernel::parts(arguments(vertices(t), m.vertex, m.metric[static_cast<std::size_t>(v)], FilterInterval(0)));
+    return cbrt(top / (S * S * S));
   }
   Sign decide(std::size_t t, int v, const FilterInterval& q0k, const Rational& q0k_exact) const {
     const auto& k = vertices(t);
@@ -164,7 +177,11 @@ QualityReport check_quality_of(const Level& level, const std::optional<Rational>
     }
     FilterInterval q{INFINITY, INFINITY};
     bool reported = false;
-    for (const int v : level.vertices(t)) {
+    const auto& vs = level.vertices(t);
+    for (std::size_t i = 0; i < vs.size(); ++i) {
+      const int v = vs[i];
+      // A metric equal to an earlier vertex's (a constant field) gives the same quality again.
+      if (std::any_of(vs.begin(), vs.begin() + static_cast<std::ptrdiff_t>(i), [&](int u) { return level.same_metric(u, v); })) continue;
       FilterInterval qv = level.quality(t, v);
       qv.lo = std::max(qv.lo, 0.0);  // the exact value is positive (a measurable element, M positive definite)
       q = min(q, qv);
