@@ -143,7 +143,7 @@ TEST(CliCertify3, WhatIsNotYetWrittenForTetrahedraIsRefused) {
   write(d / "grid.mesh", kuhn_medit(1));
   write(d / "grid.sol", identity_sol(8));
   const std::string mesh = (d / "grid.mesh").string(), json = (d / "r.json").string();
-  for (const std::string& extra : {std::string(" --rho0 2"), std::string(" --svg ") + (d / "r.svg").string(),
+  for (const std::string& extra : {std::string(" --svg ") + (d / "r.svg").string(),
                                    std::string(" --field background:") + mesh}) {
     const Outcome r = run("certify " + mesh + extra + " --json " + json);
     EXPECT_EQ(r.exit_code, 2) << extra << r.out << r.err;

@@ -316,3 +316,31 @@ TEST(MeshCertifier3, DihedralAnglesOfTheKuhnGridAre45_60_90) {
     EXPECT_TRUE(check_angles(e, Rational(44)).violations.empty());
   }
 }
+
+// LU's bounds in 3D on one tetrahedron whose ratios are rational by hand: 0, 2e₁, 2e₂, e₃ has its
+// circumcentre at (1, 1, 1/2) (equidistant: 1 + 1 + 1/4 = 9/4 from each corner) and its shortest
+// edge 1 (0 to e₃), so ρ = 3/2 exactly in I (and in 4·I: ρ is scale-free); the distortion between I
+// and diag(1, 4, 9) is 3 (the generalized eigenvalues 1, 4, 9).
+TEST(MeshCertifier3, RadiusEdgeAndDistortionBoundsAreDecidedExactly) {
+  Mesh3 m;
+  m.vertices = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 1}};
+  m.tetrahedra = {{0, 1, 2, 3}};
+  m.metrics.assign(4, Sym3<Rational>{4, 0, 0, 4, 0, 4});
+  Certify3Options o;
+  o.valid = false, o.uniform = false;
+  o.rho0 = Rational(3, 2);
+  Certify3Report r = certify_mesh3(m, o);
+  EXPECT_TRUE(r.rho_violations.empty());
+  EXPECT_NEAR(r.worst_rho, 1.5, 1e-12);
+  o.rho0 = Rational(3, 2) - Rational(1, 1000000000000);
+  EXPECT_EQ(certify_mesh3(m, o).rho_violations.count(), 1u);
+  o.rho0.reset();
+  m.metrics[3] = Sym3<Rational>{1, 0, 0, 4, 0, 9};
+  m.metrics[0] = m.metrics[1] = m.metrics[2] = Sym3<Rational>{1, 0, 0, 1, 0, 1};
+  o.gamma0 = 3;
+  r = certify_mesh3(m, o);
+  EXPECT_TRUE(r.gamma_violations.empty());
+  EXPECT_NEAR(r.worst_gamma, 3, 1e-9);
+  o.gamma0 = Rational(3) - Rational(1, 1000000000000);
+  EXPECT_EQ(certify_mesh3(m, o).gamma_violations.count(), 1u);  // one witness per tetrahedron
+}

@@ -3,7 +3,9 @@
 // solved from its linear system), on exactly degenerate inputs (coplanar, M-cospherical) and a
 // few ulps away, and filtered against exact across magnitudes (zero disagreements allowed).
 
+#include "geometry/distortion_estimate.hpp"
 #include "predicates/dihedral.hpp"
+#include "predicates/distortion.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orientation3.hpp"
 
@@ -265,4 +267,55 @@ TEST(FilteredVsExact, Dihedral) {
     checked<DihedralDotKernel>(right);
   }
   EXPECT_EQ(zeros, 2000);
+}
+
+// The distortion between 3×3 metrics (predicates/distortion.hpp): I against diag(1, 4, 9) and
+// against that metric rotated by the rational rotation with the 3-4-5 triangle in the xy-plane
+// (R = [3/5 −4/5 0; 4/5 3/5 0; 0 0 1], RᵀMR has the same generalized eigenvalues 1, 4, 9 against I):
+// γ = 3, so γ₀² = 9 holds and 9 − 10⁻¹⁵ does not; the estimate agrees. A metric and a multiple:
+// γ² is the factor.
+TEST(Distortion3, ExactAgainstClosedForms) {
+  const Sym3<Rational> I{1, 0, 0, 1, 0, 1}, D{1, 0, 0, 4, 0, 9};
+  // RᵀDR: entries from [3/5 4/5; −4/5 3/5] diag(1, 4) [3/5 −4/5; 4/5 3/5] in the xy-block.
+  const Sym3<Rational> R{Rational(9, 25) + 4 * Rational(16, 25), Rational(-12, 25) + 4 * Rational(12, 25), 0,
+                         Rational(16, 25) + 4 * Rational(9, 25), 0, 9};
+  const Rational below = 9 - Rational(1, 1000000000000000);
+  for (const auto& M : {D, R}) {
+    EXPECT_TRUE(tau_at_most(I, M, Rational(9)));
+    EXPECT_TRUE(tau_at_most(M, I, Rational(9)));
+    EXPECT_FALSE(tau_at_most(I, M, below));
+    const auto d = [](const Rational& q) { return q.convert_to<double>(); };
+    const Sym3<double> Md{d(M.m11), d(M.m12), d(M.m13), d(M.m22), d(M.m23), d(M.m33)};
+    EXPECT_NEAR(anisocert::geometry::tau_squared_estimate(Sym3<double>{1, 0, 0, 1, 0, 1}, Md), 9, 1e-9);
+  }
+  const Sym3<Rational> twice{2, Rational(1, 2), 0, 4, 1, 6}, scaled{10, Rational(5, 2), 0, 20, 5, 30};
+  EXPECT_TRUE(tau_at_most(twice, scaled, Rational(5)));
+  EXPECT_FALSE(tau_at_most(twice, scaled, below / 9 * 5));
+  // A leading-minor test alone would pass diag(0, −1, …)-like differences: γ₀² = 1 between I and
+  // diag(1, 1/4, 1) has the difference diag(0, 3/4, 0) one way and diag(0, −3/4, 0) the other.
+  EXPECT_FALSE(tau_at_most(I, Sym3<Rational>{1, 0, 0, Rational(1, 4), 0, 1}, Rational(1)));
+}
+
+// Filtered against exact for the 3×3 determinant of γ²P − Q: random doubles across magnitudes and
+// proportional metrics (an exact zero: the determinant of γ²P − γ²P), then nudged.
+TEST(FilteredVsExact, Distortion3Determinant) {
+  std::mt19937_64 rng(3939);
+  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const auto integer = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  int zeros = 0;
+  for (int t = 0; t < 3000; ++t) {
+    std::array<double, 13> x;
+    const int e = integer(-60, 60);
+    x[0] = std::ldexp(uniform(0.1, 4), integer(-4, 4));
+    for (std::size_t i = 1; i < 13; ++i) x[i] = std::ldexp(uniform(-1, 1), e);
+    checked<ScaledDifference3DeterminantKernel>(x);
+    const double g = std::ldexp(1.0, integer(-3, 3));
+    for (std::size_t i = 1; i < 7; ++i) x[i + 6] = g * x[i];
+    x[0] = g;
+    zeros += checked<ScaledDifference3DeterminantKernel>(x) == Sign::zero;
+    const auto i = static_cast<std::size_t>(integer(0, 12));
+    x[i] = std::nextafter(x[i], integer(0, 1) ? INFINITY : -INFINITY);
+    checked<ScaledDifference3DeterminantKernel>(x);
+  }
+  EXPECT_EQ(zeros, 3000);
 }

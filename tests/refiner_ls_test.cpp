@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <set>
 
@@ -181,6 +182,19 @@ TEST(SegmentCells, AgreeWithTheNearestSitesAtExactSamples) {
       }
     }
   }
+}
+
+// LS §9's "midpoint" d_a(z) = d_b(z) on ab, by bisection in doubles: for two sites of one metric it
+// is the segment's midpoint, t = 1/2 exactly (a double, returned as it is: campaign mutant 167
+// returned the double below it, and the island rule inserts z at t unsnapped); for I against 4·I,
+// |z − a| = 2|z − b| at t = 2/3, and t is within a few ulps of it (g is evaluated in doubles).
+TEST(SegmentQuadratics, TheMidpointParameterIsTheRootWhereItIsADouble) {
+  using refiners::common::MetricSite;
+  const Sym2<double> I{1, 0, 1}, four{4, 0, 4}, skew{3, 1, 2};
+  for (const auto& M : {I, four, skew})
+    EXPECT_EQ(refiners::common::midpoint_parameter(MetricSite{{0.25, -3}, M}, MetricSite{{7, 1.5}, M}), 0.5);
+  const double t = refiners::common::midpoint_parameter(MetricSite{{0, 0}, I}, MetricSite{{3, 0}, four});
+  EXPECT_NEAR(t, 2.0 / 3, 4 * std::numeric_limits<double>::epsilon()) << t;
 }
 
 TEST(SplitPoint, IsADoubleExactlyOnTheSegmentInsideTheRange) {

@@ -66,17 +66,15 @@ oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
 // A tetrahedral mesh (issue 39): validity, local uniformity, edge lengths, quality and dihedral
 // angles in 3D; the checks not yet written for tetrahedra are refused by name rather than skipped.
 int run_certify3(CertifyCommandOptions& c, const oracle::CertifyOptions& o, const io::MeshFile& file) {
-  for (const auto& [given, name] : {std::pair{o.rho0.has_value(), "--rho0"}, {o.gamma0.has_value(), "--gamma0"},
-                                    {!c.svg_path.empty(), "--svg"}})
-    if (given)
-      throw UsageError(c.in.path + " is a tetrahedral mesh, and " + name +
-                       " is not available for tetrahedra yet (3D: validity, local uniformity, edge lengths, quality, dihedral angles)");
+  if (!c.svg_path.empty())
+    throw UsageError(c.in.path + " is a tetrahedral mesh, and --svg is not available for tetrahedra yet (3D: validity, local uniformity, "
+                     "--rho0, --gamma0, edge lengths, quality, dihedral angles)");
   const geometry::Mesh3<Rational>& mesh = file.mesh3;
-  if (mesh.metrics.empty() && (o.length_range || o.min_quality || (c.checks_given && (o.uniform || o.metric))))
+  if (mesh.metrics.empty() && (o.length_range || o.min_quality || o.rho0 || o.gamma0 || (c.checks_given && (o.uniform || o.metric))))
     throw UsageError(c.in.path + ": has no metric, which the requested checks and bounds need (give --metric FILE)");
   oracle::Certify3Options o3;
   o3.valid = o.valid, o3.uniform = o.uniform, o3.metric = o.metric, o3.length_range = o.length_range;
-  o3.min_quality = o.min_quality, o3.min_angle = o.min_angle;
+  o3.min_quality = o.min_quality, o3.min_angle = o.min_angle, o3.rho0 = o.rho0, o3.gamma0 = o.gamma0;
   o3.described_witnesses = o.described_witnesses;
   const oracle::Certify3Report report = oracle::certify_mesh3(mesh, o3);
   io::CertifyVerdict v = io::certify_verdict(report, o3, mesh, c.bounds);

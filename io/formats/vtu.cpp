@@ -1,6 +1,7 @@
 #include "io/formats/vtu.hpp"
 
 #include "io/formats/text_reader.hpp"
+#include "numbers/excerpt.hpp"
 #include "numbers/rational.hpp"
 
 #include <zlib.h>
@@ -75,7 +76,7 @@ class VtuReader {
   std::string payload(const Element& e, std::size_t bytes);
   std::string context_of(const Element& e) const {
     const std::string n = attribute(e, "Name");
-    return "<DataArray" + (n.empty() ? std::string() : " Name=\"" + n + "\"") + "> of <" + e.parent + ">";
+    return "<DataArray" + (n.empty() ? std::string() : " Name=" + quoted_excerpt(n)) + "> of <" + excerpt(e.parent) + ">";
   }
 
   std::string_view b_;
@@ -110,7 +111,7 @@ std::size_t VtuReader::tag(std::size_t at, std::vector<std::string>& open) {
   if (name.empty()) fail(at, "", "a '<' that starts no tag");
   if (closing) {
     if (open.empty() || open.back() != name)
-      fail(at, "", "</" + name + "> closes " + (open.empty() ? std::string("nothing") : "<" + open.back() + ">"));
+      fail(at, "", "</" + excerpt(name) + "> closes " + (open.empty() ? std::string("nothing") : "<" + excerpt(open.back()) + ">"));
     open.pop_back();
     for (auto e = elements_.rbegin(); e != elements_.rend(); ++e)
       if (e->name == name && e->end == 0) {
@@ -123,18 +124,18 @@ std::size_t VtuReader::tag(std::size_t at, std::vector<std::string>& open) {
   e.name = name, e.at = at, e.parent = open.empty() ? "" : open.back();
   for (;;) {
     while (i < b_.size() && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-    if (i >= b_.size()) fail(at, "", "the tag <" + name + "> is never closed");
+    if (i >= b_.size()) fail(at, "", "the tag <" + excerpt(name) + "> is never closed");
     if (b_[i] == '>' || b_.substr(i, 2) == "/>") break;
     const std::size_t key_begin = i;
     while (i < b_.size() && b_[i] != '=' && b_[i] != '>' && !std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
     const std::string key(b_.substr(key_begin, i - key_begin));
     while (i < b_.size() && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-    if (i >= b_.size() || b_[i] != '=') fail(key_begin, "<" + name + ">", "the attribute " + key + " has no value");
+    if (i >= b_.size() || b_[i] != '=') fail(key_begin, "<" + excerpt(name) + ">", "the attribute " + quoted_excerpt(key) + " has no value");
     ++i;
     while (i < b_.size() && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-    if (i >= b_.size() || (b_[i] != '"' && b_[i] != '\'')) fail(key_begin, "<" + name + ">", "the value of " + key + " is not quoted");
+    if (i >= b_.size() || (b_[i] != '"' && b_[i] != '\'')) fail(key_begin, "<" + excerpt(name) + ">", "the value of " + quoted_excerpt(key) + " is not quoted");
     const std::size_t close = b_.find(b_[i], i + 1);
-    if (close == std::string_view::npos) fail(key_begin, "<" + name + ">", "the value of " + key + " is never closed");
+    if (close == std::string_view::npos) fail(key_begin, "<" + excerpt(name) + ">", "the value of " + quoted_excerpt(key) + " is never closed");
     e.attributes[key] = std::string(b_.substr(i + 1, close - i - 1));
     i = close + 1;
   }
@@ -143,7 +144,7 @@ std::size_t VtuReader::tag(std::size_t at, std::vector<std::string>& open) {
   if (empty) e.end = e.begin;
   if (name == "AppendedData") {
     const std::string encoding = attribute(e, "encoding", "raw");
-    if (encoding != "raw" && encoding != "base64") fail(at, "<AppendedData>", "the encoding \"" + encoding + "\" is neither raw nor base64");
+    if (encoding != "raw" && encoding != "base64") fail(at, "<AppendedData>", "the encoding " + quoted_excerpt(encoding) + " is neither raw nor base64");
     std::size_t u = e.begin;
     while (u < b_.size() && std::isspace(static_cast<unsigned char>(b_[u]))) ++u;
     if (u >= b_.size() || b_[u] != '_') fail(u, "<AppendedData>", "the data does not start with '_'");
@@ -159,7 +160,7 @@ const Element& VtuReader::only(const std::string& name) const {
   const Element* found = nullptr;
   for (const Element& e : elements_)
     if (e.name == name) {
-      if (found) fail(e.at, "", "a second <" + name + "> (anisocert reads one Piece)");
+      if (found) fail(e.at, "", "a second <" + name + "> (anisocert reads one of each)");
       found = &e;
     }
   if (!found) fail(b_.size(), "", "there is no <" + name + ">");
@@ -174,9 +175,9 @@ std::string VtuReader::attribute(const Element& e, const std::string& name, cons
 std::int64_t VtuReader::count_attribute(const Element& e, const std::string& name, std::int64_t hi) const {
   const std::string v = attribute(e, name);
   if (v.empty() || v.size() > 12 || !std::all_of(v.begin(), v.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
-    fail(e.at, "<" + e.name + ">", name + "=\"" + v + "\" is not a count");
+    fail(e.at, "<" + excerpt(e.name) + ">", name + "=" + quoted_excerpt(v) + " is not a count");
   const std::int64_t n = std::stoll(v);
-  if (n > hi) fail(e.at, "<" + e.name + ">", name + "=" + v + " is more than " + std::to_string(hi));
+  if (n > hi) fail(e.at, "<" + excerpt(e.name) + ">", name + "=" + excerpt(v) + " is more than " + std::to_string(hi));
   return n;
 }
 
@@ -261,9 +262,9 @@ std::string VtuReader::payload(const Element& e, std::size_t bytes) {
     if (!appended_) fail(e.at, context, "format=\"appended\" but the file has no <AppendedData>");
     const std::string offset = attribute(e, "offset");
     if (offset.empty() || offset.size() > 18 || !std::all_of(offset.begin(), offset.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
-      fail(e.at, context, "offset=\"" + offset + "\" is not an offset");
+      fail(e.at, context, "offset=" + quoted_excerpt(offset) + " is not an offset");
     const std::size_t o = std::stoull(offset);
-    if (o > b_.size() - appended_begin_) fail(e.at, context, "offset " + offset + " is beyond the end of the file");
+    if (o > b_.size() - appended_begin_) fail(e.at, context, "offset " + excerpt(offset) + " is beyond the end of the file");
     start = appended_begin_ + o;
     source.emplace(b_.substr(start), !raw_);
   }
@@ -320,7 +321,7 @@ int type_width(const std::string& type) {
 std::vector<Rational> VtuReader::reals(const Element& e, std::size_t count, int components) {
   const std::string context = context_of(e);
   const std::string given = attribute(e, "NumberOfComponents", "1");
-  if (given != std::to_string(components)) fail(e.at, context, "NumberOfComponents is " + given + ", not " + std::to_string(components));
+  if (given != std::to_string(components)) fail(e.at, context, "NumberOfComponents is " + quoted_excerpt(given) + ", not " + std::to_string(components));
   const std::string type = attribute(e, "type");
   const std::size_t n = count * static_cast<std::size_t>(components);
   std::vector<Rational> v;
@@ -342,7 +343,7 @@ std::vector<Rational> VtuReader::reals(const Element& e, std::size_t count, int 
     if (i < e.end) fail(i, context, "more than the " + std::to_string(n) + " values the array holds");
     return v;
   }
-  if (type != "Float32" && type != "Float64") fail(e.at, context, "type \"" + type + "\" is not Float32 or Float64");
+  if (type != "Float32" && type != "Float64") fail(e.at, context, "type " + quoted_excerpt(type) + " is not Float32 or Float64");
   const int w = type_width(type);
   const std::string bytes = payload(e, n * static_cast<std::size_t>(w));
   for (std::size_t k = 0; k < n; ++k) {
@@ -358,7 +359,7 @@ std::vector<std::int64_t> VtuReader::integers(const Element& e, std::size_t coun
   const std::string context = context_of(e);
   const std::string type = attribute(e, "type");
   const int w = type_width(type);
-  if (w == 0 || type.rfind("Float", 0) == 0) fail(e.at, context, "type \"" + type + "\" is not an integer type");
+  if (w == 0 || type.rfind("Float", 0) == 0) fail(e.at, context, "type " + quoted_excerpt(type) + " is not an integer type");
   std::vector<std::int64_t> v;
   v.reserve(count);
   if (attribute(e, "format") == "ascii") {
@@ -370,7 +371,7 @@ std::vector<std::int64_t> VtuReader::integers(const Element& e, std::size_t coun
       while (i < e.end && !std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
       const std::string_view t = b_.substr(s, i - s);
       const bool digits = !t.empty() && t.size() <= 18 && std::all_of(t.begin() + (t[0] == '-' ? 1 : 0), t.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-      if (!digits || t == "-") fail(s, context, "\"" + std::string(t.substr(0, 24)) + "\" is not an integer");
+      if (!digits || t == "-") fail(s, context, quoted_excerpt(t) + " is not an integer");
       v.push_back(std::stoll(std::string(t)));
     }
     while (i < e.end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
@@ -397,22 +398,22 @@ std::vector<std::int64_t> VtuReader::integers(const Element& e, std::size_t coun
   return v;
 }
 
-std::string text(const Rational& q) { return to_exact_string(q); }
+std::string text(const Rational& q) { return exact_excerpt(q); }
 
 MeshFile VtuReader::read() {
   scan();
   const Element& file = only("VTKFile");
   if (attribute(file, "type") != "UnstructuredGrid")
-    fail(file.at, "<VTKFile>", "type=\"" + attribute(file, "type") + "\": anisocert reads UnstructuredGrid (.vtu)");
+    fail(file.at, "<VTKFile>", "type=" + quoted_excerpt(attribute(file, "type")) + ": anisocert reads UnstructuredGrid (.vtu)");
   const std::string order = attribute(file, "byte_order", "LittleEndian");
-  if (order != "LittleEndian" && order != "BigEndian") fail(file.at, "<VTKFile>", "byte_order=\"" + order + "\" is neither LittleEndian nor BigEndian");
+  if (order != "LittleEndian" && order != "BigEndian") fail(file.at, "<VTKFile>", "byte_order=" + quoted_excerpt(order) + " is neither LittleEndian nor BigEndian");
   big_endian_ = order == "BigEndian";
   const std::string header = attribute(file, "header_type", "UInt32");
-  if (header != "UInt32" && header != "UInt64") fail(file.at, "<VTKFile>", "header_type=\"" + header + "\" is neither UInt32 nor UInt64");
+  if (header != "UInt32" && header != "UInt64") fail(file.at, "<VTKFile>", "header_type=" + quoted_excerpt(header) + " is neither UInt32 nor UInt64");
   header_bytes_ = header == "UInt64" ? 8 : 4;
   const std::string compressor = attribute(file, "compressor");
   if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
-    fail(file.at, "<VTKFile>", "compressor=\"" + compressor + "\": anisocert reads vtkZLibDataCompressor (zlib) or none");
+    fail(file.at, "<VTKFile>", "compressor=" + quoted_excerpt(compressor) + ": anisocert reads vtkZLibDataCompressor (zlib) or none");
   compressed_ = !compressor.empty();
 
   const Element& piece = only("Piece");
@@ -424,7 +425,7 @@ MeshFile VtuReader::read() {
     if (e.end == 0) fail(e.at, context_of(e), "the array is never closed");
     const std::string format = attribute(e, "format", "ascii");
     if (format != "ascii" && format != "binary" && format != "appended")
-      fail(e.at, context_of(e), "format=\"" + format + "\" is not ascii, binary or appended");
+      fail(e.at, context_of(e), "format=" + quoted_excerpt(format) + " is not ascii, binary or appended");
     std::string name = attribute(e, "Name");
     std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     const Element** slot = e.parent == "Points"                                ? &points
@@ -487,7 +488,7 @@ MeshFile VtuReader::read() {
   const std::string given = attribute(*metric, "NumberOfComponents", "1");
   const std::vector<std::string> allowed = tetrahedral ? std::vector<std::string>{"1", "6", "9"} : std::vector<std::string>{"1", "3", "4"};
   if (std::find(allowed.begin(), allowed.end(), given) == allowed.end())
-    fail(metric->at, context_of(*metric), "NumberOfComponents is " + given + ": a metric has " + (tetrahedral ? "1, 6 or 9" : "1, 3 or 4") +
+    fail(metric->at, context_of(*metric), "NumberOfComponents is " + quoted_excerpt(given) + ": a metric has " + (tetrahedral ? "1, 6 or 9" : "1, 3 or 4") +
                                               " in a " + (tetrahedral ? "tetrahedral" : "triangle") + " mesh");
   const int comps = std::stoi(given);
   const std::vector<Rational> m = reals(*metric, np, comps);

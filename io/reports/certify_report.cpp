@@ -109,6 +109,29 @@ void add_angles(const oracle::AngleReport& a, const BoundTexts& b, CertifyVerdic
                        {"undecided_count", a.undecided_triangles.size()}, {"violation_count", a.violations.count()}}});
 }
 
+// LU's bounds (Definition 3.10's radius-edge ratio ≤ ρ₀ in each vertex's metric, the distortion
+// ≤ γ₀ between the vertices of each element), with the worst measured.
+void add_radius_edge(double worst, int element, int vertex, const oracle::WitnessList& violations, const BoundTexts& b, CertifyVerdict& v,
+                     const std::string& kind = "triangle") {
+  const bool holds = violations.empty();
+  v.checks.push_back({"radius_edge", "radius-edge ratio ≤ " + excerpt(b.rho0) + " in each vertex's metric", "radius-edge ≤ " + excerpt(b.rho0),
+                      holds, true,
+                      " (worst ≈ " + as_printed(worst) + ", " + kind + " " + std::to_string(element) + ", vertex " + std::to_string(vertex) + ")",
+                      "", {texts(violations)},
+                      {{"threshold", b.rho0}, {"holds", holds}, {"worst", worst}, {"worst_" + kind, element}, {"worst_vertex", vertex},
+                       {"violation_count", violations.count()}}});
+}
+
+void add_distortion(double worst, int element, const oracle::WitnessList& violations, const BoundTexts& b, CertifyVerdict& v,
+                    const std::string& kind = "triangle") {
+  const bool holds = violations.empty();
+  v.checks.push_back({"distortion", "distortion ≤ " + excerpt(b.gamma0) + " between the vertices of each " + kind,
+                      "distortion ≤ " + excerpt(b.gamma0), holds, true,
+                      " (worst ≈ " + as_printed(worst) + ", " + kind + " " + std::to_string(element) + ")", "", {texts(violations)},
+                      {{"threshold", b.gamma0}, {"holds", holds}, {"worst", worst}, {"worst_" + kind, element},
+                       {"violation_count", violations.count()}}});
+}
+
 void add_validity3(const oracle::Certify3Report& r, CertifyVerdict& v) {
   const oracle::TetrahedralizationCheck& t = *r.valid;
   const std::string more = t.failure_count > t.failures.size()
@@ -168,6 +191,8 @@ CertifyVerdict certify_verdict(const oracle::Certify3Report& r, const oracle::Ce
   v.has_metrics = mesh.metrics.size() == mesh.vertices.size() && !mesh.metrics.empty();
   if (r.valid) add_validity3(r, v);
   if (r.uniform_checked) add_uniform3(r, v);
+  if (o.rho0 && v.has_metrics) add_radius_edge(r.worst_rho, r.worst_rho_tetrahedron, r.worst_rho_vertex, r.rho_violations, b, v, "tetrahedron");
+  if (o.gamma0 && v.has_metrics) add_distortion(r.worst_gamma, r.worst_gamma_tetrahedron, r.gamma_violations, b, v, "tetrahedron");
   if (r.lengths) add_lengths(*r.lengths, b, v);
   if (r.quality) add_quality(*r.quality, b, v, "tetrahedron");
   if (r.angles) add_angles(*r.angles, b, v, "tetrahedron");
@@ -183,26 +208,8 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
   v.has_metrics = mesh.metrics.size() == mesh.sites.size();
   if (r.valid) add_validity(r, v);
   if (r.uniform_checked) add_uniform(r, v);
-  if (o.rho0 && v.has_metrics) {
-    const bool holds = r.rho_violations.empty();
-    v.checks.push_back({"radius_edge", "radius-edge ratio ≤ " + excerpt(b.rho0) + " in each vertex's metric", "radius-edge ≤ " + excerpt(b.rho0),
-                        holds, true,
-                        " (worst ≈ " + as_printed(r.worst_rho) + ", triangle " + std::to_string(r.worst_rho_triangle) + ", vertex " +
-                            std::to_string(r.worst_rho_vertex) + ")",
-                        "", {texts(r.rho_violations)},
-                        {{"threshold", b.rho0}, {"holds", holds}, {"worst", r.worst_rho},
-                         {"worst_triangle", r.worst_rho_triangle}, {"worst_vertex", r.worst_rho_vertex},
-                         {"violation_count", r.rho_violations.count()}}});
-  }
-  if (o.gamma0 && v.has_metrics) {
-    const bool holds = r.gamma_violations.empty();
-    v.checks.push_back({"distortion", "distortion ≤ " + excerpt(b.gamma0) + " between the vertices of each triangle",
-                        "distortion ≤ " + excerpt(b.gamma0), holds, true,
-                        " (worst ≈ " + as_printed(r.worst_gamma) + ", triangle " + std::to_string(r.worst_gamma_triangle) + ")", "",
-                        {texts(r.gamma_violations)},
-                        {{"threshold", b.gamma0}, {"holds", holds}, {"worst", r.worst_gamma},
-                         {"worst_triangle", r.worst_gamma_triangle}, {"violation_count", r.gamma_violations.count()}}});
-  }
+  if (o.rho0 && v.has_metrics) add_radius_edge(r.worst_rho, r.worst_rho_triangle, r.worst_rho_vertex, r.rho_violations, b, v);
+  if (o.gamma0 && v.has_metrics) add_distortion(r.worst_gamma, r.worst_gamma_triangle, r.gamma_violations, b, v);
   if (r.lengths) add_lengths(*r.lengths, b, v);
   if (r.quality) add_quality(*r.quality, b, v);
   if (r.angles) add_angles(*r.angles, b, v);
@@ -279,6 +286,8 @@ std::vector<StreamedList> lists_of(const std::string& key, const oracle::Certify
   if (key == "lengths") return {witness_list("violations", r.lengths->range_violations)};
   if (key == "quality") return {witness_list("violations", r.quality->violations, "tetrahedron")};
   if (key == "angles") return {witness_list("violations", r.angles->violations, "tetrahedron")};
+  if (key == "radius_edge") return {witness_list("violations", r.rho_violations, "tetrahedron")};
+  if (key == "distortion") return {witness_list("violations", r.gamma_violations, "tetrahedron")};
   return {};
 }
 

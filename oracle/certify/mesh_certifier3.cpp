@@ -1,5 +1,8 @@
 #include "oracle/certify/mesh_certifier3.hpp"
 
+#include "geometry/circumellipsoid.hpp"
+#include "geometry/distortion_estimate.hpp"
+#include "predicates/distortion.hpp"
 #include "predicates/insphere.hpp"
 
 #include <algorithm>
@@ -89,29 +92,15 @@ struct Ellipsoid {
 // 2(q − a)ᵀ M x = (q − a)ᵀ M (q − a) for q = b, c, d; r² = xᵀMx; the ellipsoid
 // {y : (y − c)ᵀ M (y − c) ≤ r²} spans c_i ± √(r² (M⁻¹)_ii) along axis i.
 std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::array<int, 4>& t, const predicates::Sym3<I>& M) {
-  const auto& a = m.vertex[static_cast<std::size_t>(t[0])];
-  std::array<std::array<I, 3>, 3> A;
-  std::array<I, 3> rhs;
-  for (int i = 0; i < 3; ++i) {
-    const auto& q = m.vertex[static_cast<std::size_t>(t[static_cast<std::size_t>(i + 1)])];
-    const std::array<I, 3> d{q.x - a.x, q.y - a.y, q.z - a.z};
-    const auto Md = times(M, d);
-    A[static_cast<std::size_t>(i)] = {Md[0] * 2.0, Md[1] * 2.0, Md[2] * 2.0};
-    rhs[static_cast<std::size_t>(i)] = d[0] * Md[0] + d[1] * Md[1] + d[2] * Md[2];
-  }
-  const I D = det3(A);
-  if (!(D.lo > 0 || D.hi < 0)) return std::nullopt;
-  std::array<I, 3> x;
-  for (int k = 0; k < 3; ++k) {
-    auto Ak = A;
-    for (int i = 0; i < 3; ++i) Ak[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = rhs[static_cast<std::size_t>(i)];
-    x[static_cast<std::size_t>(k)] = det3(Ak) / D;
-  }
-  const auto Mx = times(M, x);
-  const I r2 = x[0] * Mx[0] + x[1] * Mx[1] + x[2] * Mx[2];
+  const auto at = [&](std::size_t i) -> const predicates::Point3<I>& { return m.vertex[static_cast<std::size_t>(t[i])]; };
+  const auto c = geometry::circumellipsoid(at(0), at(1), at(2), at(3), M);  // an unsure determinant: the whole line
+  const auto& x = c.x;
+  const I& r2 = c.r2;
+  if (!std::isfinite(r2.lo) || !std::isfinite(r2.hi) || r2.lo < 0) return std::nullopt;
   const I detM = det3({{{M.m11, M.m12, M.m13}, {M.m12, M.m22, M.m23}, {M.m13, M.m23, M.m33}}});
   if (!(detM.lo > 0)) return std::nullopt;
   const std::array<I, 3> cofactor{M.m22 * M.m33 - M.m23 * M.m23, M.m11 * M.m33 - M.m13 * M.m13, M.m11 * M.m22 - M.m12 * M.m12};
+  const auto& a = at(0);
   Ellipsoid e{{a.x + x[0], a.y + x[1], a.z + x[2]}, r2, {}, {}};
   for (std::size_t i = 0; i < 3; ++i) {
     const I half = sqrt(r2 * cofactor[i] / detM);
@@ -121,6 +110,81 @@ std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::ar
     e.lo[i] = std::nextafter(std::nextafter(lo, -INFINITY), -INFINITY), e.hi[i] = std::nextafter(std::nextafter(hi, INFINITY), INFINITY);
   }
   return e;
+}
+
+// LU Definition 3.10's radius-edge ratio squared of tetrahedron t in metric M: r² over the
+// shortest squared edge, T = FilterInterval (an enclosure) or Rational (exact).
+template <class T>
+T radius_edge_squared(const std::array<predicates::Point3<T>, 4>& p, const predicates::Sym3<T>& M) {
+  using std::min;
+  T shortest = predicates::quadratic_form(M, T(p[1].x - p[0].x), T(p[1].y - p[0].y), T(p[1].z - p[0].z));
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = i + 1; j < 4; ++j)
+      shortest = min(shortest, predicates::quadratic_form(M, T(p[j].x - p[i].x), T(p[j].y - p[i].y), T(p[j].z - p[i].z)));
+  return geometry::circumellipsoid(p[0], p[1], p[2], p[3], M).r2 / shortest;
+}
+
+predicates::Sym3<double> midpoint(const predicates::Sym3<I>& M) {
+  const auto mid = [](const I& x) { return x.lo / 2 + x.hi / 2; };
+  return {mid(M.m11), mid(M.m12), mid(M.m13), mid(M.m22), mid(M.m23), mid(M.m33)};
+}
+
+// ρ ≤ ρ₀ in every vertex's metric and γ ≤ γ₀ between the vertices of every tetrahedron (the 2D
+// check's twin in mesh_certifier.cpp, one witness per tetrahedron for each).
+void check_lu_bounds(const EnclosedMesh3& m, const Certify3Options& o, Certify3Report& r) {
+  const auto& mesh = m.mesh;
+  const Rational rho2 = o.rho0 ? *o.rho0 * *o.rho0 : Rational(0), gamma2 = o.gamma0 ? *o.gamma0 * *o.gamma0 : Rational(0);
+  const double rho2_lo = enclose(rho2).lo;
+  const auto name = [](const char* what, int k) { return std::string(what) + " " + std::to_string(k); };
+  for (std::size_t ti = 0; ti < mesh.tetrahedra.size(); ++ti) {
+    const auto& t = mesh.tetrahedra[ti];
+    const int tetrahedron = static_cast<int>(ti);
+    if (m.orientation(t[0], t[1], t[2], t[3]) == Sign::zero) continue;  // flat: `valid` reports it
+    if (o.rho0)
+      for (std::size_t i = 0; i < 4; ++i) {
+        const int v = t[i];
+        const auto vi = static_cast<std::size_t>(v);
+        if (std::any_of(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(i), [&](int u) { return mesh.metrics[static_cast<std::size_t>(u)] == mesh.metrics[vi]; }))
+          continue;  // the same metric, the same ratio
+        const auto at = [&](auto& points, std::size_t k) { return points[static_cast<std::size_t>(t[k])]; };
+        const I e = radius_edge_squared(std::array{at(m.vertex, 0), at(m.vertex, 1), at(m.vertex, 2), at(m.vertex, 3)}, m.metric[vi]);
+        if (e.hi < rho2_lo) {  // decided by the enclosure: ≤ ρ₀²
+          const double approx = std::sqrt((e.lo + e.hi) / 2);
+          if (approx > r.worst_rho) r.worst_rho = approx, r.worst_rho_tetrahedron = tetrahedron, r.worst_rho_vertex = v;
+          continue;
+        }
+        const Rational q = radius_edge_squared(std::array{at(mesh.vertices, 0), at(mesh.vertices, 1), at(mesh.vertices, 2), at(mesh.vertices, 3)},
+                                               mesh.metrics[vi]);
+        const double approx = std::sqrt(q.convert_to<double>());
+        if (approx > r.worst_rho) r.worst_rho = approx, r.worst_rho_tetrahedron = tetrahedron, r.worst_rho_vertex = v;
+        if (q > rho2) {
+          r.rho_violations.add(v, tetrahedron, -1, [&, v, approx] {
+            return name("tetrahedron", tetrahedron) + " has radius-edge ratio " + std::to_string(approx) + " > ρ₀ in the metric of " +
+                   name("vertex", v);
+          });
+          break;
+        }
+      }
+    if (o.gamma0)
+      for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = i + 1; j < 4; ++j) {
+          const int a = t[i], b = t[j];
+          const auto &Ma = mesh.metrics[static_cast<std::size_t>(a)], &Mb = mesh.metrics[static_cast<std::size_t>(b)];
+          if (Ma == Mb) {  // γ = 1 ≤ γ₀
+            if (r.worst_gamma_tetrahedron < 0) r.worst_gamma = 1, r.worst_gamma_tetrahedron = tetrahedron;
+            continue;
+          }
+          const double g = std::sqrt(geometry::tau_squared_estimate(midpoint(m.metric[static_cast<std::size_t>(a)]), midpoint(m.metric[static_cast<std::size_t>(b)])));
+          if (g > r.worst_gamma) r.worst_gamma = g, r.worst_gamma_tetrahedron = tetrahedron;
+          if (!predicates::tau_at_most(Ma, Mb, gamma2)) {
+            r.gamma_violations.add(a, tetrahedron, b, [&, a, b, g] {
+              return name("tetrahedron", tetrahedron) + ": distortion between vertices " + std::to_string(a) + " and " + std::to_string(b) +
+                     " is about " + std::to_string(g) + " > γ₀";
+            });
+            i = j = 4;  // one witness per tetrahedron
+          }
+        }
+  }
 }
 
 // Whether vertex p is certainly outside the enclosed ellipsoid: (p − c)ᵀ M (p − c) > r² on the
@@ -226,6 +290,9 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
       }
     }
   }
+  r.rho_violations = WitnessList(o.described_witnesses);
+  r.gamma_violations = WitnessList(o.described_witnesses);
+  if ((o.rho0 || o.gamma0) && has_metrics) check_lu_bounds(m, o, r);
   if (o.metric && has_metrics) {
     const std::vector<std::pair<int, int>> edges = unique_edges(mesh.tetrahedra);
     r.lengths = check_lengths(m, edges, o.length_range, o.described_witnesses);

@@ -7,6 +7,9 @@
 //    the tetrahedron's own orientation); vertices exactly on it are ties, reported apart; one
 //    witness per tetrahedron as in 2D (its search stops at the first vertex strictly inside, and
 //    records one tie at most), a vertex whose metric equals an earlier one's not asked again;
+//  - LU's bounds, when given: the radius-edge ratio (LU Definition 3.10: the M_v-circumradius over the
+//    shortest edge in M_v) at most ρ₀ in each vertex's metric, and the distortion γ (LU §2, the
+//    3×3 predicates/distortion.hpp) at most γ₀ between the vertices of each tetrahedron, exactly;
 //  - conforming to its metric: edge lengths in both endpoints' metrics, the share in
 //    [1/√2, √2] decided exactly, and a range as a verdict; the mean-ratio quality in each vertex's
 //    metric, enclosed, and a lower bound as a verdict (metric_checks.hpp, one loop for both
@@ -32,6 +35,7 @@ struct Certify3Options {
   std::optional<std::pair<Rational, Rational>> length_range;  // verdict: every metric length in it
   std::optional<Rational> min_quality;                        // verdict: every mean ratio at least it (in [0, 1])
   std::optional<Rational> min_angle;                          // verdict: every dihedral angle at least it (degrees, (0, 90])
+  std::optional<Rational> rho0, gamma0;                       // LU's bounds: radius-edge ratio, distortion (with metrics)
   std::size_t described_witnesses = default_described_witnesses;
 };
 
@@ -42,13 +46,16 @@ struct Certify3Report {
   std::size_t insphere_tests = 0, unmeasured = 0;
   std::optional<LengthReport> lengths;
   std::optional<QualityReport> quality;
+  double worst_rho = 0, worst_gamma = 0;  // approximations
+  int worst_rho_tetrahedron = -1, worst_rho_vertex = -1, worst_gamma_tetrahedron = -1;
+  WitnessList rho_violations, gamma_violations;  // one per tetrahedron each
   std::optional<AngleReport> angles;    // dihedral angles in each edge end's metric
   std::optional<UgawgMeasures> ugawg;  // with the metric checks: UGAWG's measures, floating point
   std::size_t tetrahedra = 0;
 
   bool valid_holds() const { return valid && valid->valid; }
   bool holds(const Certify3Options& o) const {
-    return (!o.valid || valid_holds()) && (!o.uniform || uniform_violations.empty()) && (!lengths || lengths->range_violations.empty()) &&
+    return (!o.valid || valid_holds()) && (!o.uniform || uniform_violations.empty()) && rho_violations.empty() && gamma_violations.empty() && (!lengths || lengths->range_violations.empty()) &&
            (!quality || quality->violations.empty()) &&
            (!angles || (angles->violations.empty() && angles->undecided_triangles.empty()));
   }

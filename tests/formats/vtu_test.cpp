@@ -240,7 +240,7 @@ TEST(Vtu, BadFilesAreNamedByLineOrByte) {
   const std::size_t underscore = raw.find('_', raw.find("<AppendedData"));
   claimed.replace(underscore + 1, 4, std::string("\xff\xff\xff\x00", 4));
   EXPECT_NE(message(claimed).find("the header counts 16777215 bytes"), std::string::npos);
-  EXPECT_NE(message(broken("Float64\" NumberOfComponents=\"3\"", "Float64\" NumberOfComponents=\"2\"", good)).find("NumberOfComponents is 2, not 3"),
+  EXPECT_NE(message(broken("Float64\" NumberOfComponents=\"3\"", "Float64\" NumberOfComponents=\"2\"", good)).find("NumberOfComponents is \"2\", not 3"),
             std::string::npos);
 }
 
