@@ -58,6 +58,13 @@ TEST(ExactSplit, ClosedForms) {
   EXPECT_EQ(exact_halvings({0, 0}, {1, 0}), 52);
   // 0.375 = 3/8 and 1: the grid 2⁻³ at depth 0, multiples of 5/8 · 2⁻ʲ: 53 − 1 − 3 = 49.
   EXPECT_EQ(exact_halvings({1, 0.375}, {0.375, 1}), 49);
+  // An end with all 53 bits (u = 1 + 2⁻⁵², E − t_u = 53 exactly) and w = u + 2⁻²⁰: the points
+  // u + k 2⁻²⁰⁻ʲ are multiples of 2⁻⁵² in [1, 2), doubles, for j ≤ 32 (53 − 1 − 20; campaign mutant
+  // 170 refused every halving when E − t_u = 53).
+  EXPECT_EQ(exact_halvings({1 + 0x1p-52, 0}, {1 + 0x1p-52 + 0x1p-20, 0}), 32);
+  const Rational full = rational_from_double(1 + 0x1p-52);
+  EXPECT_TRUE(is_double(full + rational_from_double(0x1p-52)));    // the first point of level 32
+  EXPECT_FALSE(is_double(full + rational_from_double(0x1p-53)));   // and of level 33
   // 0.4 (an odd multiple of 2⁻⁵⁴) and 1: no double point with y ∈ [1/2, 1), so not even once.
   EXPECT_EQ(exact_halvings({1, 0.4}, {0.4, 1}), 0);
   EXPECT_FALSE(exact_midpoint({1, 0.4}, {0.4, 1}));
