@@ -2,6 +2,7 @@
 
 #include "cli/output.hpp"
 #include "cli/usage_error.hpp"
+#include "fields/background3.hpp"
 #include "fields/registry.hpp"
 #include "io/formats/registry.hpp"
 #include "numbers/excerpt.hpp"
@@ -24,8 +25,8 @@ fields::Parameters parameters_of(const std::vector<std::string>& params) {
   return p;
 }
 
-// MESH[:METRIC] after "background:".
-FieldSource background_source(const std::string& text) {
+// The mesh file of background:MESH[:METRIC], with its metrics.
+io::MeshFile background_file(const std::string& text) {
   const std::string spec = text.substr(background_prefix.size());
   const auto colon = spec.find(':');
   const std::string mesh_path = spec.substr(0, colon), metric_path = colon == std::string::npos ? "" : spec.substr(colon + 1);
@@ -35,21 +36,26 @@ FieldSource background_source(const std::string& text) {
     throw UsageError("--field " + quoted_excerpt(text) + ": " + metric_path +
                      " is not a metric file (.sol, .solb, .mtr); a mesh whose own files hold its metrics (a Gmsh .msh with a metric view, a "
                      "Medit .mesh with its .sol beside it) is given alone: background:MESH");
-  io::MeshFile file;
   try {
     // A planar mesh saved in 3D (every z 0, as Gmsh writes Medit files) is read as 2D: a field's
     // points are 2D, and a z that is not 0 is still refused.
-    file = io::read_mesh_file(mesh_path, "", {true}, metric_path);
+    io::MeshFile file = io::read_mesh_file(mesh_path, "", {true}, metric_path);
+    if (file.dimension == 3 ? file.mesh3.metrics.empty() : file.mesh.metrics.empty())
+      throw UsageError(mesh_path + ": background mesh has no metric (give MESH:METRIC)");
+    return file;
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }
-  if (file.dimension == 3) throw UsageError(mesh_path + ": a tetrahedral mesh is no background for a 2D field");
-  if (file.mesh.metrics.empty()) throw UsageError(mesh_path + ": background mesh has no metric (give MESH:METRIC)");
+}
+
+FieldSource background_source(const std::string& text) {
+  const io::MeshFile file = background_file(text);
+  if (file.dimension == 3) throw UsageError(text.substr(background_prefix.size()) + ": a tetrahedral mesh is no background for a 2D field");
   try {
     auto mesh = std::make_shared<const fields::BackgroundMesh>(file.mesh);
     return {fields::background_field(mesh, text), mesh};
   } catch (const fields::BackgroundMeshError& e) {
-    throw UsageError(mesh_path + ": " + e.what());
+    throw UsageError(text.substr(background_prefix.size()) + ": " + e.what());
   }
 }
 
@@ -135,20 +141,34 @@ std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, co
   return metrics;
 }
 
-fields::MetricField3 field_source3(const std::string& text, const std::vector<std::string>& params) {
-  if (text.starts_with(background_prefix))
-    throw UsageError("--field " + quoted_excerpt(text) + ": a background field is 2D so far: give the tetrahedral mesh's metrics in a .sol (--metric)");
+std::vector<predicates::Sym3<Rational>> metrics3_at(const std::string& text, const std::vector<std::string>& params,
+                                                    const std::vector<predicates::Point3<Rational>>& points) {
+  const fields::Parameters given = parameters_of(params);
+  std::vector<predicates::Sym3<Rational>> metrics;
+  metrics.reserve(points.size());
+  if (text.starts_with(background_prefix)) {
+    if (!given.empty()) throw UsageError("--param: a background field has no parameters");
+    const io::MeshFile file = background_file(text);
+    if (file.dimension != 3) throw UsageError(text.substr(background_prefix.size()) + ": a triangle mesh is no background for a tetrahedral mesh");
+    std::optional<fields::BackgroundMesh3> mesh;
+    try {
+      mesh.emplace(file.mesh3);
+    } catch (const fields::BackgroundMeshError& e) {
+      throw UsageError(text.substr(background_prefix.size()) + ": " + e.what());
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto m = mesh->metric_at(points[i]);
+      if (!m) throw UsageError("--field " + text + ": vertex " + std::to_string(i) + " " + point_text(points[i]) + " lies outside the background mesh");
+      metrics.push_back(*m);
+    }
+    return metrics;
+  }
+  fields::MetricField3 field;
   try {
-    return fields::make_field3(text, parameters_of(params));
+    field = fields::make_field3(text, given);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--field: ") + e.what());
   }
-}
-
-std::vector<predicates::Sym3<Rational>> metrics3_at(const fields::MetricField3& field, const std::string& text,
-                                                    const std::vector<predicates::Point3<Rational>>& points) {
-  std::vector<predicates::Sym3<Rational>> metrics;
-  metrics.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) metrics.push_back(sampled(field, text, points[i], i));
   return metrics;
 }

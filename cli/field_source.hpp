@@ -21,7 +21,7 @@ struct FieldSource {
 // For --help: the background form and what it means.
 inline constexpr const char* background_field_help =
     "background:MESH[:METRIC]: the metrics of a background mesh's vertices, interpolated P1 (linearly per component) over\n"
-    "    its triangles; MESH in any mesh format, METRIC a metric file (else the mesh's own metrics)";
+    "    its triangles (or tetrahedra, for a tetrahedral mesh); MESH in any mesh format, METRIC a metric file (else the mesh's own metrics)";
 
 // Throws UsageError naming the option, the file or the point, and what is wrong.
 FieldSource field_source(const std::string& text, const std::vector<std::string>& params);
@@ -32,11 +32,10 @@ FieldSource field_source(const std::string& text, const std::vector<std::string>
 std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, const std::string& text,
                                                    const std::vector<predicates::Point2<Rational>>& points);
 
-// A built-in 3D field (fields/registry.hpp: constant and the UGAWG fields) for a tetrahedral mesh,
-// and its metric at every vertex's nearest doubles (taken exactly, positive definiteness decided
-// exactly). Throws UsageError as above.
-fields::MetricField3 field_source3(const std::string& text, const std::vector<std::string>& params);
-std::vector<predicates::Sym3<Rational>> metrics3_at(const fields::MetricField3& field, const std::string& text,
+// The metric at every vertex of a tetrahedral mesh: a built-in 3D field's (fields/registry.hpp:
+// constant and the UGAWG fields) at the vertices' nearest doubles, taken exactly, positive
+// definiteness decided exactly; or a tetrahedral background mesh's, background:MESH[:METRIC], P1
+// and exact (fields/background3.hpp). Throws UsageError as above.
+std::vector<predicates::Sym3<Rational>> metrics3_at(const std::string& text, const std::vector<std::string>& params,
                                                     const std::vector<predicates::Point3<Rational>>& points);
-
 }  // namespace anisocert::cli

@@ -26,7 +26,7 @@ io::MeshFile read_mesh_input(const MeshInput& in) {
   try {
     file = io::read_mesh_file(in.path, in.format, {in.planar_3d}, in.metric, in.metric_format);
     if (!in.field.empty() && file.dimension == 3) {
-      io::attach_metrics(file, metrics3_at(field_source3(in.field, in.params), in.field, file.mesh3.vertices), "--field " + in.field);
+      io::attach_metrics(file, metrics3_at(in.field, in.params, file.mesh3.vertices), "--field " + in.field);
       file.metric_source = "--field " + in.field;
     } else if (!in.field.empty()) {
       io::attach_metrics(file, metrics_at(field_source(in.field, in.params), in.field, file.mesh.sites), "--field " + in.field);

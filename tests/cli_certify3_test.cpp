@@ -143,14 +143,26 @@ TEST(CliCertify3, WhatIsNotYetWrittenForTetrahedraIsRefused) {
   write(d / "grid.mesh", kuhn_medit(1));
   write(d / "grid.sol", identity_sol(8));
   const std::string mesh = (d / "grid.mesh").string(), json = (d / "r.json").string();
-  for (const std::string& extra : {std::string(" --svg ") + (d / "r.svg").string(),
-                                   std::string(" --field background:") + mesh}) {
+  for (const std::string& extra : {std::string(" --svg ") + (d / "r.svg").string()}) {
     const Outcome r = run("certify " + mesh + extra + " --json " + json);
     EXPECT_EQ(r.exit_code, 2) << extra << r.out << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find("tetrahedral mesh"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(json));
   }
+  // A tetrahedral background (fields/background3.hpp): the mesh as its own background gives each
+  // vertex its own metric (P1 is exact at a vertex), so the verdict is the --metric one.
+  const Outcome own = run("certify " + mesh + " --metric " + (d / "grid.sol").string() + " --json " + json);
+  const Outcome background = run("certify " + mesh + " --field background:" + mesh);
+  EXPECT_EQ(background.exit_code, own.exit_code) << background.err;
+  EXPECT_NE(background.out.find("metrics from --field background:"), std::string::npos) << background.out;
+  fs::remove(json);
+  // A triangle mesh is no background for a tetrahedral one.
+  write(d / "flat.mesh", "MeshVersionFormatted 2\nDimension 2\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nTriangles\n1\n1 2 3 0\nEnd\n");
+  write(d / "flat.sol", "MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n3\n1 1\n1\n1\n1\nEnd\n");
+  const Outcome flat = run("certify " + mesh + " --field background:" + (d / "flat.mesh").string());
+  EXPECT_EQ(flat.exit_code, 2);
+  EXPECT_NE(flat.err.find("a triangle mesh is no background for a tetrahedral mesh"), std::string::npos) << flat.err;
   write(d / "bad.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 5 0\nEnd\n");
   const Outcome bad = run("certify " + (d / "bad.mesh").string());
   EXPECT_EQ(bad.exit_code, 2);

@@ -79,7 +79,7 @@ int run_metric(const MetricOptions& o) {
     throw UsageError(e.what());
   }
   if (f.dimension == 3) {  // a built-in 3D field at a tetrahedral mesh's vertices
-    f.mesh3.metrics = metrics3_at(field_source3(o.field, o.params), o.field, f.mesh3.vertices);
+    f.mesh3.metrics = metrics3_at(o.field, o.params, f.mesh3.vertices);
   } else {
     FieldSource source = field_source(o.field, o.params);
     // A file holds decimals or doubles, and a background mesh's exact P1 values are rationals with
