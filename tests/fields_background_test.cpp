@@ -247,6 +247,13 @@ TEST(BackgroundMesh, RejectsMeshesThatDefineNoField) {
   Mesh bare = good;
   bare.triangles.clear();
   EXPECT_EQ(construction_error(bare), "the background mesh has no triangles");
+  // A triangle naming no site (the readers refuse it first; the class on its own too: campaign
+  // mutant 177 let it through to an out-of-range read).
+  for (const int k : {4, -1}) {
+    Mesh beyond = good;
+    beyond.triangles[0][1] = k;
+    EXPECT_NE(construction_error(beyond).find("names a site beyond the 4 there are"), std::string::npos) << k;
+  }
   EXPECT_EQ(construction_error(good), "(accepted)");
 }
 
