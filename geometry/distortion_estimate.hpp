@@ -32,27 +32,34 @@ T tau_squared_estimate(const predicates::Sym2<T>& P, const predicates::Sym2<T>& 
   return max(largest_generalized_eigenvalue(P, Q), largest_generalized_eigenvalue(Q, P));
 }
 
-// The 3×3 twin (issue 39): the generalized eigenvalues of Q x = λ P x are the roots of
-// det(Q − λP) = −(a λ³ − b λ² + c λ − d), a = det P, d = det Q, b and c the mixed terms; all real and
-// positive for positive definite P, Q, found by the trigonometric formula for a cubic with three
-// real roots (doubles; a reported value, never a decision).
+// The 3×3 twin (issue 39): the generalized eigenvalues of Q x = λ P x are the eigenvalues of the
+// symmetric C = L⁻¹ Q L⁻ᵀ, P = L Lᵀ (Cholesky); the largest by the trigonometric formula for a
+// symmetric 3×3 matrix (doubles, well-conditioned in P's scale; a reported value, never a decision).
 inline double largest_generalized_eigenvalue(const predicates::Sym3<double>& P, const predicates::Sym3<double>& Q) {
-  const auto det = [](const predicates::Sym3<double>& M) {
-    return M.m11 * (M.m22 * M.m33 - M.m23 * M.m23) - M.m12 * (M.m12 * M.m33 - M.m23 * M.m13) + M.m13 * (M.m12 * M.m23 - M.m22 * M.m13);
-  };
-  // det(Q − λP) at λ = 0, ±1, 2 gives the cubic's coefficients exactly as a polynomial identity.
-  const auto at = [&](double l) {
-    return det({Q.m11 - l * P.m11, Q.m12 - l * P.m12, Q.m13 - l * P.m13, Q.m22 - l * P.m22, Q.m23 - l * P.m23, Q.m33 - l * P.m33});
-  };
-  const double f0 = at(0), f1 = at(1), fm = at(-1), f2 = at(2);
-  // f(λ) = k3 λ³ + k2 λ² + k1 λ + k0.
-  const double k0 = f0, k2 = (f1 + fm) / 2 - f0, k3 = (f2 - 2 * f1 + f0 - 2 * k2) / 6, k1 = f1 - f0 - k2 - k3;
-  // λ³ + B λ² + C λ + D = 0, depressed by λ = y − B/3: y³ + p y + q = 0.
-  const double B = k2 / k3, C = k1 / k3, D = k0 / k3;
-  const double p = C - B * B / 3, q = 2 * B * B * B / 27 - B * C / 3 + D;
-  if (p >= 0) return -B / 3;  // a triple root (P and Q proportional), up to rounding
-  const double m = 2 * std::sqrt(-p / 3), theta = std::acos(std::clamp(3 * q / (p * m), -1.0, 1.0)) / 3;
-  return m * std::cos(theta) - B / 3;  // the largest of m cos(θ − 2πk/3) − B/3
+  const double l11 = std::sqrt(P.m11), l21 = P.m12 / l11, l31 = P.m13 / l11;
+  const double l22 = std::sqrt(P.m22 - l21 * l21), l32 = (P.m23 - l31 * l21) / l22;
+  const double l33 = std::sqrt(P.m33 - l31 * l31 - l32 * l32);
+  // K = L⁻¹, lower triangular.
+  const double k11 = 1 / l11, k22 = 1 / l22, k33 = 1 / l33, k21 = -l21 * k11 / l22, k32 = -l32 * k22 / l33;
+  const double k31 = -(l31 * k11 + l32 * k21) / l33;
+  const double K[3][3] = {{k11, 0, 0}, {k21, k22, 0}, {k31, k32, k33}};
+  const double A[3][3] = {{Q.m11, Q.m12, Q.m13}, {Q.m12, Q.m22, Q.m23}, {Q.m13, Q.m23, Q.m33}};
+  double KA[3][3] = {}, C[3][3] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) KA[i][j] += K[i][k] * A[k][j];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) C[i][j] += KA[i][k] * K[j][k];
+  const double q = (C[0][0] + C[1][1] + C[2][2]) / 3;
+  const double off = C[0][1] * C[0][1] + C[0][2] * C[0][2] + C[1][2] * C[1][2];
+  const double p2 = (C[0][0] - q) * (C[0][0] - q) + (C[1][1] - q) * (C[1][1] - q) + (C[2][2] - q) * (C[2][2] - q) + 2 * off;
+  if (!(p2 > 0)) return q;  // C = q I
+  const double p = std::sqrt(p2 / 6);
+  const double b00 = (C[0][0] - q) / p, b11 = (C[1][1] - q) / p, b22 = (C[2][2] - q) / p, b01 = C[0][1] / p, b02 = C[0][2] / p,
+               b12 = C[1][2] / p;
+  const double r = (b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) + b02 * (b01 * b12 - b11 * b02)) / 2;
+  return q + 2 * p * std::cos(std::acos(std::clamp(r, -1.0, 1.0)) / 3);
 }
 
 inline double tau_squared_estimate(const predicates::Sym3<double>& P, const predicates::Sym3<double>& Q) {

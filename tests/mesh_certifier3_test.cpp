@@ -343,4 +343,14 @@ TEST(MeshCertifier3, RadiusEdgeAndDistortionBoundsAreDecidedExactly) {
   EXPECT_NEAR(r.worst_gamma, 3, 1e-9);
   o.gamma0 = Rational(3) - Rational(1, 1000000000000);
   EXPECT_EQ(certify_mesh3(m, o).gamma_violations.count(), 1u);  // one witness per tetrahedron
+  // A flat tetrahedron holds no bound vacuously (a reviewer's finding, with `valid` not asked):
+  // its radius-edge ratio is unbounded and its dihedral angles are 0° and 180°; γ is the metrics'.
+  m.vertices[3] = {1, 1, 0};
+  o.rho0 = 100, o.gamma0 = 3, o.min_angle = 1, o.metric = true;
+  r = certify_mesh3(m, o);
+  EXPECT_EQ(r.rho_violations.count(), 1u);
+  ASSERT_TRUE(r.angles.has_value());
+  EXPECT_EQ(r.angles->violations.count(), 1u);
+  EXPECT_TRUE(r.gamma_violations.empty());
+  EXPECT_FALSE(r.holds(o));
 }

@@ -216,6 +216,19 @@ TEST(Dihedral, ClosedFormsAndTheirAffineImages) {
     EXPECT_EQ(exact_sign<DihedralSinKernel>(exact(p, M, Rational(9, 10))), Sign::positive); // θ < arcsin √0.9
   }
   EXPECT_NE(exact_sign<DihedralSinKernel>(exact(squashed, I, Rational(8, 9))), Sign::zero);  // not in I
+  // A shear (a reviewer's case, every cofactor of M in play): F = [1 1 0; 0 1 0; 0 0 1], M = FᵀF =
+  // [1 1 0; 1 2 0; 0 0 1], and the regular tetrahedron mapped by F⁻¹, (x, y, z) ↦ (x − y, y, z): regular
+  // in M, every edge's sin² 8/9 (the six edges as ab, each with the other two as c, d).
+  const Sym3<Rational> shear{1, 1, 0, 2, 0, 1};
+  const std::array<std::array<Rational, 3>, 4> q{{{0, 1, 1}, {2, -1, -1}, {-2, 1, -1}, {0, -1, 1}}};
+  for (const auto& [i, j, k, l] : {std::array<int, 4>{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}}) {
+    std::array<Rational, 12> p;
+    for (std::size_t c = 0; c < 3; ++c)
+      p[c] = q[static_cast<std::size_t>(i)][c], p[3 + c] = q[static_cast<std::size_t>(j)][c], p[6 + c] = q[static_cast<std::size_t>(k)][c],
+      p[9 + c] = q[static_cast<std::size_t>(l)][c];
+    EXPECT_EQ(exact_sign<DihedralSinKernel>(exact(p, shear, Rational(8, 9))), Sign::zero) << i << j;
+    EXPECT_NE(exact_sign<DihedralSinKernel>(exact(p, I, Rational(8, 9))), Sign::zero) << i << j;
+  }
   // The corner tetrahedron 0, x, y, z: right at edge 0–x (faces in the planes z = 0 and y = 0);
   // at edge x–y, cos θ = 1/√3: sin² θ = 2/3.
   const std::array<Rational, 12> corner{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
@@ -291,6 +304,15 @@ TEST(Distortion3, ExactAgainstClosedForms) {
   const Sym3<Rational> twice{2, Rational(1, 2), 0, 4, 1, 6}, scaled{10, Rational(5, 2), 0, 20, 5, 30};
   EXPECT_TRUE(tau_at_most(twice, scaled, Rational(5)));
   EXPECT_FALSE(tau_at_most(twice, scaled, below / 9 * 5));
+  // Off-diagonal m13 (a reviewer's case): [3 0 −2; 0 4 0; −2 0 3] has eigenvalues 1, 4, 5 against I,
+  // so γ² = 5; the (1,3) minor of 4I − M is 1·1 − 4 < 0, which only the full set of minors sees.
+  const Sym3<Rational> slanted{3, 0, -2, 4, 0, 3};
+  EXPECT_TRUE(tau_at_most(I, slanted, Rational(5)));
+  EXPECT_NEAR(anisocert::geometry::tau_squared_estimate(Sym3<double>{1, 0, 0, 1, 0, 1}, Sym3<double>{3, 0, -2, 4, 0, 3}), 5, 1e-12);
+  // Far apart in scale (det P ≪ det Q): γ² = 10⁶ for P = 10⁻⁶ I and Q = I, estimated to 10⁻⁹.
+  EXPECT_NEAR(anisocert::geometry::tau_squared_estimate(Sym3<double>{1e-6, 0, 0, 1e-6, 0, 1e-6}, Sym3<double>{1, 0, 0, 1, 0, 1}), 1e6, 1e-3);
+  EXPECT_FALSE(tau_at_most(I, slanted, Rational(4)));
+  EXPECT_FALSE(tau_at_most(I, slanted, 5 - Rational(1, 1000000000000)));
   // A leading-minor test alone would pass diag(0, −1, …)-like differences: γ₀² = 1 between I and
   // diag(1, 1/4, 1) has the difference diag(0, 3/4, 0) one way and diag(0, −3/4, 0) the other.
   EXPECT_FALSE(tau_at_most(I, Sym3<Rational>{1, 0, 0, Rational(1, 4), 0, 1}, Rational(1)));

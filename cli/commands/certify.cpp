@@ -66,9 +66,6 @@ oracle::CertifyOptions certify_options(CertifyCommandOptions& c) {
 // A tetrahedral mesh (issue 39): validity, local uniformity, edge lengths, quality and dihedral
 // angles in 3D; the checks not yet written for tetrahedra are refused by name rather than skipped.
 int run_certify3(CertifyCommandOptions& c, const oracle::CertifyOptions& o, const io::MeshFile& file) {
-  if (!c.svg_path.empty())
-    throw UsageError(c.in.path + " is a tetrahedral mesh, and --svg is not available for tetrahedra yet (3D: validity, local uniformity, "
-                     "--rho0, --gamma0, edge lengths, quality, dihedral angles)");
   const geometry::Mesh3<Rational>& mesh = file.mesh3;
   if (mesh.metrics.empty() && (o.length_range || o.min_quality || o.rho0 || o.gamma0 || (c.checks_given && (o.uniform || o.metric))))
     throw UsageError(c.in.path + ": has no metric, which the requested checks and bounds need (give --metric FILE)");
@@ -81,6 +78,7 @@ int run_certify3(CertifyCommandOptions& c, const oracle::CertifyOptions& o, cons
   v.metric_source = file.metric_source;
   std::vector<OutputFile> files;
   if (!c.json_path.empty()) files.push_back({c.json_path, "", [&](std::ostream& out) { io::write_json(out, v, report); }});
+  if (!c.svg_path.empty()) files.push_back({c.svg_path, io::certify_svg(mesh, report, c.in.path + (v.holds ? ": certified" : ": not certified"))});
   write_files_atomically(files);
   emit(io::full_text(v, c.in.path));
   return v.holds ? 0 : 1;
@@ -140,10 +138,10 @@ void add_certify(CLI::App& app, int& exit_code) {
       "bounds as verdicts; radius-edge ratio and distortion when thresholds are given. The metric: the file's own\n"
       "(Gmsh $NodeData, JSON; a Medit BASE.mesh's BASE.sol), --metric FILE, or --field. Without a metric only `valid`\n"
       "runs, and bounds that need one are refused. Each check's verdict stands on its own.\n"
-      "A tetrahedral mesh (Medit Dimension 3 with Tetrahedra, metrics in a .sol of Dimension 3): valid (one orientation,\n"
-      "each inner face in two tetrahedra on opposite sides, a closed 2-manifold boundary, declared triangles the boundary\n"
-      "faces), locally uniform (empty M_v-circumspheres) and edge lengths; the other bounds and --svg are not yet written\n"
-      "for tetrahedra and are refused.\n"
+      "A tetrahedral mesh (Medit Dimension 3 with Tetrahedra, Gmsh, TetGen, VTK .vtu; 3D metrics or a 3D field): valid (one\n"
+      "orientation, each inner face in two tetrahedra on opposite sides, a closed 2-manifold boundary, declared triangles\n"
+      "the boundary faces), locally uniform (empty M_v-circumspheres), --rho0, --gamma0, edge lengths, quality, dihedral\n"
+      "angles (--min-angle) and UGAWG's measures; --svg draws a slice at mid-height and the histograms.\n"
       "Exit 0 all hold, 1 a check fails (witnesses), 2 bad input (one line, nothing written).\nMesh formats (by extension, or --format):\n" +
           format_list());
   add_mesh_input_options(c, o->in);

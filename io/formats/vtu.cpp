@@ -74,6 +74,9 @@ class VtuReader {
   std::vector<Rational> reals(const Element& e, std::size_t count, int components);
   std::vector<std::int64_t> integers(const Element& e, std::size_t count);
   std::string payload(const Element& e, std::size_t bytes);
+  // Where an array's own text ends: at its first child element (VTK writes <InformationKey>
+  // elements after the values) or its end tag.
+  std::size_t text_end(const Element& e) const { return std::min(e.end, b_.find('<', e.begin)); }
   std::string context_of(const Element& e) const {
     const std::string n = attribute(e, "Name");
     return "<DataArray" + (n.empty() ? std::string() : " Name=" + quoted_excerpt(n)) + "> of <" + excerpt(e.parent) + ">";
@@ -252,12 +255,12 @@ U load(const char* p, bool big_endian) {
 }
 
 std::string VtuReader::payload(const Element& e, std::size_t bytes) {
-  const std::string format = attribute(e, "format");
+  const std::string format = attribute(e, "format", "ascii");
   const std::string context = context_of(e);
   std::optional<Bytes> source;
   std::size_t start = e.begin;
   if (format == "binary") {
-    source.emplace(b_.substr(e.begin, e.end - e.begin), true);
+    source.emplace(b_.substr(e.begin, text_end(e) - e.begin), true);
   } else {
     if (!appended_) fail(e.at, context, "format=\"appended\" but the file has no <AppendedData>");
     const std::string offset = attribute(e, "offset");
@@ -289,8 +292,7 @@ std::string VtuReader::payload(const Element& e, std::size_t bytes) {
   if (blocks > b_.size() / static_cast<std::size_t>(header_bytes_)) fail(start, context, "the file is too short for " + std::to_string(blocks) + " blocks");
   std::vector<std::uint64_t> compressed(static_cast<std::size_t>(blocks));
   for (auto& c : compressed) c = header("a compressed block size");
-  std::string out;
-  out.reserve(bytes);
+  std::string out;  // grown block by block: each block's claim is bounded above
   for (std::size_t k = 0; k < compressed.size(); ++k) {
     const std::uint64_t size = k + 1 == compressed.size() ? last_size : block_size;
     // zlib compresses at most 1032:1 (zlib's technical details): a larger claim is refused before
@@ -324,23 +326,23 @@ std::vector<Rational> VtuReader::reals(const Element& e, std::size_t count, int 
   if (given != std::to_string(components)) fail(e.at, context, "NumberOfComponents is " + quoted_excerpt(given) + ", not " + std::to_string(components));
   const std::string type = attribute(e, "type");
   const std::size_t n = count * static_cast<std::size_t>(components);
-  std::vector<Rational> v;
-  v.reserve(n);
-  if (attribute(e, "format") == "ascii") {
+  std::vector<Rational> v;  // not reserved from the counts, which the file claims
+  if (attribute(e, "format", "ascii") == "ascii") {
     std::size_t i = e.begin;
+    const std::size_t end = text_end(e);
     while (v.size() < n) {
-      while (i < e.end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-      if (i >= e.end) fail(i, context, "value " + std::to_string(v.size() + 1) + " of " + std::to_string(n) + " is missing");
+      while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+      if (i >= end) fail(i, context, "value " + std::to_string(v.size() + 1) + " of " + std::to_string(n) + " is missing");
       const std::size_t s = i;
-      while (i < e.end && !std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+      while (i < end && !std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
       try {
         v.push_back(parse_input_number(b_.substr(s, i - s)));
       } catch (const std::exception& x) {
         fail(s, context, "value " + std::to_string(v.size() + 1) + ": " + x.what());
       }
     }
-    while (i < e.end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-    if (i < e.end) fail(i, context, "more than the " + std::to_string(n) + " values the array holds");
+    while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+    if (i < end) fail(i, context, "more than the " + std::to_string(n) + " values the array holds");
     return v;
   }
   if (type != "Float32" && type != "Float64") fail(e.at, context, "type " + quoted_excerpt(type) + " is not Float32 or Float64");
@@ -360,22 +362,22 @@ std::vector<std::int64_t> VtuReader::integers(const Element& e, std::size_t coun
   const std::string type = attribute(e, "type");
   const int w = type_width(type);
   if (w == 0 || type.rfind("Float", 0) == 0) fail(e.at, context, "type " + quoted_excerpt(type) + " is not an integer type");
-  std::vector<std::int64_t> v;
-  v.reserve(count);
-  if (attribute(e, "format") == "ascii") {
+  std::vector<std::int64_t> v;  // not reserved from the counts, which the file claims
+  if (attribute(e, "format", "ascii") == "ascii") {
     std::size_t i = e.begin;
+    const std::size_t end = text_end(e);
     while (v.size() < count) {
-      while (i < e.end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-      if (i >= e.end) fail(i, context, "value " + std::to_string(v.size() + 1) + " of " + std::to_string(count) + " is missing");
+      while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+      if (i >= end) fail(i, context, "value " + std::to_string(v.size() + 1) + " of " + std::to_string(count) + " is missing");
       const std::size_t s = i;
-      while (i < e.end && !std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+      while (i < end && !std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
       const std::string_view t = b_.substr(s, i - s);
       const bool digits = !t.empty() && t.size() <= 18 && std::all_of(t.begin() + (t[0] == '-' ? 1 : 0), t.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
       if (!digits || t == "-") fail(s, context, quoted_excerpt(t) + " is not an integer");
       v.push_back(std::stoll(std::string(t)));
     }
-    while (i < e.end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-    if (i < e.end) fail(i, context, "more than the " + std::to_string(count) + " values the array holds");
+    while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+    if (i < end) fail(i, context, "more than the " + std::to_string(count) + " values the array holds");
     return v;
   }
   const std::string bytes = payload(e, count * static_cast<std::size_t>(w));

@@ -173,11 +173,12 @@ void add_ugawg3(const oracle::UgawgMeasures& u, CertifyVerdict& v) {
   v.checks.push_back({"ugawg", "UGAWG's measures, in floating point", "UGAWG", true, false,
                       " (log-interpolated edge lengths: " + percent(u.unit_edges, u.edges) + " in [1/√2, √2], " + as_printed(u.shortest) + " to " +
                           as_printed(u.longest) + ", mean " + as_printed(u.mean_length) + "; Omega_h quality: least " + as_printed(u.least_quality) +
-                          " at tetrahedron " + std::to_string(u.least_tetrahedron) + ", mean " + as_printed(u.mean_quality) + ")",
+                          " at tetrahedron " + std::to_string(u.least_tetrahedron) + ", mean " + as_printed(u.mean_quality) +
+                          (u.unmeasured ? "; " + std::to_string(u.unmeasured) + " beyond the doubles, not measured" : "") + ")",
                       " (" + percent(u.unit_edges, u.edges) + " unit)", {},
                       {{"edges", u.edges}, {"unit_edges", u.unit_edges}, {"shortest", u.shortest}, {"longest", u.longest},
                        {"mean_length", u.mean_length}, {"tetrahedra", u.tetrahedra}, {"least_quality", u.least_quality},
-                       {"least_tetrahedron", u.least_tetrahedron}, {"mean_quality", u.mean_quality}, {"quality_bins", bins}}});
+                       {"least_tetrahedron", u.least_tetrahedron}, {"mean_quality", u.mean_quality}, {"quality_bins", bins}, {"unmeasured", u.unmeasured}}});
 }
 
 }  // namespace

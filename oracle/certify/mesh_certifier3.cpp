@@ -130,7 +130,8 @@ predicates::Sym3<double> midpoint(const predicates::Sym3<I>& M) {
 }
 
 // ρ ≤ ρ₀ in every vertex's metric and γ ≤ γ₀ between the vertices of every tetrahedron (the 2D
-// check's twin in mesh_certifier.cpp, one witness per tetrahedron for each).
+// check's twin in mesh_certifier.cpp, one witness per tetrahedron for each). A flat tetrahedron
+// fails ρ₀ (no verdict holds vacuously); γ does not depend on the shape.
 void check_lu_bounds(const EnclosedMesh3& m, const Certify3Options& o, Certify3Report& r) {
   const auto& mesh = m.mesh;
   const Rational rho2 = o.rho0 ? *o.rho0 * *o.rho0 : Rational(0), gamma2 = o.gamma0 ? *o.gamma0 * *o.gamma0 : Rational(0);
@@ -139,8 +140,10 @@ void check_lu_bounds(const EnclosedMesh3& m, const Certify3Options& o, Certify3R
   for (std::size_t ti = 0; ti < mesh.tetrahedra.size(); ++ti) {
     const auto& t = mesh.tetrahedra[ti];
     const int tetrahedron = static_cast<int>(ti);
-    if (m.orientation(t[0], t[1], t[2], t[3]) == Sign::zero) continue;  // flat: `valid` reports it
-    if (o.rho0)
+    const bool flat = m.orientation(t[0], t[1], t[2], t[3]) == Sign::zero;
+    if (o.rho0 && flat)  // no circumsphere: the ratio is unbounded, never at most ρ₀
+      r.rho_violations.add(t[0], tetrahedron, -1, [&] { return name("tetrahedron", tetrahedron) + " is flat: its radius-edge ratio is unbounded"; });
+    if (o.rho0 && !flat)
       for (std::size_t i = 0; i < 4; ++i) {
         const int v = t[i];
         const auto vi = static_cast<std::size_t>(v);

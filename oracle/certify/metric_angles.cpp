@@ -147,6 +147,7 @@ class Dihedral {
 struct Triangles {
   static constexpr const char* element = "triangle";
   static constexpr const char* kind = "an angle";
+  static constexpr bool unmeasured_fails = false;  // flat or clockwise: `valid` fails it
   const EnclosedMesh& m;
   std::size_t size() const { return m.mesh.triangles.size(); }
   bool measurable(std::size_t t) const {
@@ -165,6 +166,7 @@ struct Triangles {
 struct Tetrahedra {
   static constexpr const char* element = "tetrahedron";
   static constexpr const char* kind = "a dihedral angle";
+  static constexpr bool unmeasured_fails = true;   // flat: angles 0° and 180°, below any bound
   const EnclosedMesh3& m;
   std::size_t size() const { return m.mesh.tetrahedra.size(); }
   bool measurable(std::size_t t) const {
@@ -203,14 +205,20 @@ AngleReport check_angles_of(const Level& level, const std::optional<Rational>& m
   for (std::size_t t = 0; t < level.size(); ++t) {
     if (!level.measurable(t)) {
       ++r.undecided;
+      if constexpr (Level::unmeasured_fails)  // a flat tetrahedron's dihedral angles are 0° and 180°
+        if (min_angle)
+          r.violations.add(level.m.mesh.tetrahedra[t][0], static_cast<int>(t), -1,
+                           [&] { return std::string(Level::element) + " " + std::to_string(t) + " is flat: its dihedral angles are 0° and 180°"; });
       continue;
     }
     ++r.measured;
     bool reported = false;
+    double least = 180;
     for (std::size_t i = 0; i < Level::angles; ++i) {
       if (level.repeats(t, i)) continue;
       const auto angle = level.angle(t, i);
       const double deg = angle.approx_degrees();
+      least = std::min(least, deg);
       if (deg < r.smallest) r.smallest = deg, r.smallest_triangle = static_cast<int>(t);
       if (deg > r.largest) r.largest = deg, r.largest_triangle = static_cast<int>(t);
       if (!min_angle || reported || angle.obtuse_or_right() || angle.below(bounds.second) != Sign::positive) continue;
@@ -221,6 +229,7 @@ AngleReport check_angles_of(const Level& level, const std::optional<Rational>& m
         open.emplace_back(t, i);
       }
     }
+    r.element_smallest.push_back(least);
   }
   // sin² θ irrational and an angle within the enclosure: refine it (the angle's rational sin²
   // differs from sin² θ, so some precision decides it).

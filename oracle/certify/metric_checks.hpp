@@ -44,6 +44,7 @@ struct AngleReport {
   std::size_t measured = 0, undecided = 0;
   double smallest = 180, largest = 0;       // approximate, degrees
   int smallest_triangle = -1, largest_triangle = -1;   // (or tetrahedron)
+  std::vector<double> element_smallest;    // each measured element's smallest angle, approximate (for the histogram)
   WitnessList violations;                   // one per element with an angle below θ (when given)
   std::vector<int> undecided_triangles;     // θ's bounds never decided (not seen in practice)
 };

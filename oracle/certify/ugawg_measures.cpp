@@ -58,12 +58,17 @@ UgawgMeasures ugawg_measures(const EnclosedMesh3& m, const std::vector<std::pair
     const auto& pb = m.approx[static_cast<std::size_t>(b)];
     const double l = log_interpolated_length(std::sqrt(length2(metric[static_cast<std::size_t>(a)], pa, pb)),
                                              std::sqrt(length2(metric[static_cast<std::size_t>(b)], pa, pb)));
+    if (!std::isfinite(l)) {  // beyond the doubles (coordinates near 1e155 overflow)
+      ++r.unmeasured;
+      continue;
+    }
     r.shortest = std::min(r.shortest, l), r.longest = std::max(r.longest, l), sum += l;
     r.unit_edges += l >= lo && l <= hi;
   }
   r.edges = edges.size();
-  r.mean_length = edges.empty() ? 0 : sum / static_cast<double>(edges.size());
-  if (edges.empty()) r.shortest = 0;
+  const std::size_t unmeasured_edges = r.unmeasured, lengths = edges.size() - unmeasured_edges;
+  r.mean_length = lengths == 0 ? 0 : sum / static_cast<double>(lengths);
+  if (lengths == 0) r.shortest = 0;
   const auto& tets = m.mesh.tetrahedra;
   r.tetrahedra = tets.size();
   r.least_quality = std::numeric_limits<double>::infinity();
@@ -77,12 +82,17 @@ UgawgMeasures ugawg_measures(const EnclosedMesh3& m, const std::vector<std::pair
       if (det(metric[v]) > det(metric[maxdet])) maxdet = v;
     }
     const double q = (orientation < 0 ? -1 : 1) * omega_h_quality(p, metric[maxdet]);
+    if (!std::isfinite(q)) {
+      ++r.unmeasured;
+      continue;
+    }
     if (q < r.least_quality) r.least_quality = q, r.least_tetrahedron = t;
     qsum += q;
     ++r.quality_bins[static_cast<std::size_t>(std::clamp(q * 10, 0.0, 9.0))];
   }
-  r.mean_quality = tets.empty() ? 0 : qsum / static_cast<double>(tets.size());
-  if (tets.empty()) r.least_quality = 0;
+  const std::size_t qualities = tets.size() - (r.unmeasured - unmeasured_edges);
+  r.mean_quality = qualities == 0 ? 0 : qsum / static_cast<double>(qualities);
+  if (qualities == 0) r.least_quality = 0;
   return r;
 }
 

@@ -24,6 +24,7 @@ struct UgawgMeasures {
   double least_quality = 0, mean_quality = 0;
   std::size_t least_tetrahedron = 0;
   std::array<std::size_t, 10> quality_bins{};  // [0, 0.1), …, [0.9, 1]; below 0 in the first
+  std::size_t unmeasured = 0;                  // edges and tetrahedra whose measure overflowed the doubles
 };
 
 // The log-interpolated length of edge ab from its lengths in a's and b's metrics.

@@ -244,6 +244,26 @@ TEST(Vtu, BadFilesAreNamedByLineOrByte) {
             std::string::npos);
 }
 
+// A reviewer's findings: VTK writes <InformationKey> elements inside a DataArray after its values;
+// a DataArray without a format is ASCII; counts far beyond the data are refused by name, not by
+// an allocation of their size.
+TEST(Vtu, InformationKeysDefaultFormatAndImpossibleCounts) {
+  std::string text = vtu({.name = "ascii", .format = "ascii"});
+  const std::size_t first = text.find("\n</DataArray>");
+  text.insert(first, "\n<InformationKey name=\"L2_NORM_RANGE\" location=\"vtkDataArray\" length=\"2\"><Value index=\"0\">0</Value></InformationKey>");
+  const std::size_t format = text.find(" format=\"ascii\"", text.find("Name=\"offsets\""));
+  text.erase(format, std::string(" format=\"ascii\"").size());
+  const MeshFile f = read_vtu(text, "keys.vtu");
+  EXPECT_EQ(f.mesh3.vertices.size(), 5u);
+  EXPECT_EQ(f.mesh3.tetrahedra.size(), 2u);
+  std::string huge = vtu({.name = "ascii", .format = "ascii"});
+  huge.replace(huge.find("NumberOfPoints=\"5\""), 18, "NumberOfPoints=\"2147483647\"");
+  EXPECT_NE(error_of([&] { read_vtu(huge, "huge.vtu"); }).find("is missing"), std::string::npos);
+  std::string huge_binary = vtu({.name = "binary", .two_streams = true});
+  huge_binary.replace(huge_binary.find("NumberOfPoints=\"5\""), 18, "NumberOfPoints=\"2147483647\"");
+  EXPECT_NE(error_of([&] { read_vtu(huge_binary, "huge.vtu"); }).find("the file is too short"), std::string::npos);
+}
+
 TEST(Vtu, TheRegistryReadsAndWritesVtuByExtension) {
   const auto dir = anisocert::test_support::fresh_dir("vtu_registry");
   std::ofstream(dir / "m.vtu") << vtu({.name = "zlib", .zlib = true, .two_streams = true});
