@@ -78,3 +78,13 @@ TEST(UgawgFields, ConstantIn3DMustBePositiveDefinite) {
 }
 
 }  // namespace
+
+// The constant fields refuse a metric that is not positive definite, at the boundary too: a
+// singular [1 1; 1 1] (det 0, campaign mutant 179 accepted it) and its 3D twin, diag(1, 1, 0).
+TEST(ConstantFields, SingularMetricsAreRefused) {
+  EXPECT_THROW(anisocert::fields::make_field("constant", {{"m11", 1}, {"m12", 1}, {"m22", 1}}), std::invalid_argument);
+  EXPECT_NO_THROW(anisocert::fields::make_field("constant", {{"m11", 1}, {"m12", 0.5}, {"m22", 1}}));
+  EXPECT_THROW(make_field3("constant", {{"m33", 0}}), std::invalid_argument);
+  EXPECT_THROW(make_field3("constant", {{"m12", 1}}), std::invalid_argument);  // [1 1 0; 1 1 0; 0 0 1]: minor 0
+  EXPECT_NO_THROW(make_field3("constant", {{"m12", 0.5}}));
+}
