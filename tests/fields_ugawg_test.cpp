@@ -88,3 +88,18 @@ TEST(ConstantFields, SingularMetricsAreRefused) {
   EXPECT_THROW(make_field3("constant", {{"m12", 1}}), std::invalid_argument);  // [1 1 0; 1 1 0; 0 0 1]: minor 0
   EXPECT_NO_THROW(make_field3("constant", {{"m12", 0.5}}));
 }
+
+// The 2D fields' parameters in their ranges: alpha of shock and radial may be 0 (no stretch), not
+// negative (campaign mutant 183 let a negative alpha through, a metric not positive definite
+// across the layer once 1 + α sech² < 0).
+TEST(FieldParameters, ANegativeStretchIsRefusedByName) {
+  for (const char* field : {"shock", "radial"}) {
+    EXPECT_NO_THROW(anisocert::fields::make_field(field, {{"alpha", 0}})) << field;
+    try {
+      anisocert::fields::make_field(field, {{"alpha", -0.5}});
+      ADD_FAILURE() << field << ": a negative alpha was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), std::string("parameter alpha of field ") + field + " must be >= 0");
+    }
+  }
+}
