@@ -90,8 +90,8 @@ TEST(ConstantFields, SingularMetricsAreRefused) {
 }
 
 // The 2D fields' parameters in their ranges: alpha of shock and radial may be 0 (no stretch), not
-// negative (campaign mutant 183 let a negative alpha through, a metric not positive definite
-// across the layer once 1 + α sech² < 0).
+// negative (campaign mutant 183 let a negative alpha through: a shrink the fields do not define,
+// and below −1 a metric that is not positive definite across the layer).
 TEST(FieldParameters, ANegativeStretchIsRefusedByName) {
   for (const char* field : {"shock", "radial"}) {
     EXPECT_NO_THROW(anisocert::fields::make_field(field, {{"alpha", 0}})) << field;
