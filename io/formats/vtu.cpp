@@ -74,6 +74,22 @@ class VtuReader {
   std::vector<Rational> reals(const Element& e, std::size_t count, int components);
   std::vector<std::int64_t> integers(const Element& e, std::size_t count);
   std::string payload(const Element& e, std::size_t bytes);
+  // The n blank-separated values of an ASCII array, each given to take(text, offset); fewer or
+  // more than n are refused.
+  template <class Take>
+  void ascii_values(const Element& e, std::size_t n, const std::string& context, Take&& take) {
+    std::size_t i = e.begin;
+    const std::size_t end = text_end(e);
+    for (std::size_t k = 0; k < n; ++k) {
+      while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+      if (i >= end) fail(i, context, "value " + std::to_string(k + 1) + " of " + std::to_string(n) + " is missing");
+      const std::size_t s = i;
+      while (i < end && !std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+      take(b_.substr(s, i - s), s);
+    }
+    while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+    if (i < end) fail(i, context, "more than the " + std::to_string(n) + " values the array holds");
+  }
   // Where an array's own text ends: at its first child element (VTK writes <InformationKey>
   // elements after the values) or its end tag.
   std::size_t text_end(const Element& e) const { return std::min(e.end, b_.find('<', e.begin)); }
@@ -328,21 +344,13 @@ std::vector<Rational> VtuReader::reals(const Element& e, std::size_t count, int 
   const std::size_t n = count * static_cast<std::size_t>(components);
   std::vector<Rational> v;  // not reserved from the counts, which the file claims
   if (attribute(e, "format", "ascii") == "ascii") {
-    std::size_t i = e.begin;
-    const std::size_t end = text_end(e);
-    while (v.size() < n) {
-      while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-      if (i >= end) fail(i, context, "value " + std::to_string(v.size() + 1) + " of " + std::to_string(n) + " is missing");
-      const std::size_t s = i;
-      while (i < end && !std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
+    ascii_values(e, n, context, [&](std::string_view t, std::size_t at) {
       try {
-        v.push_back(parse_input_number(b_.substr(s, i - s)));
+        v.push_back(parse_input_number(t));
       } catch (const std::exception& x) {
-        fail(s, context, "value " + std::to_string(v.size() + 1) + ": " + x.what());
+        fail(at, context, "value " + std::to_string(v.size() + 1) + ": " + x.what());
       }
-    }
-    while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-    if (i < end) fail(i, context, "more than the " + std::to_string(n) + " values the array holds");
+    });
     return v;
   }
   if (type != "Float32" && type != "Float64") fail(e.at, context, "type " + quoted_excerpt(type) + " is not Float32 or Float64");
@@ -364,20 +372,11 @@ std::vector<std::int64_t> VtuReader::integers(const Element& e, std::size_t coun
   if (w == 0 || type.rfind("Float", 0) == 0) fail(e.at, context, "type " + quoted_excerpt(type) + " is not an integer type");
   std::vector<std::int64_t> v;  // not reserved from the counts, which the file claims
   if (attribute(e, "format", "ascii") == "ascii") {
-    std::size_t i = e.begin;
-    const std::size_t end = text_end(e);
-    while (v.size() < count) {
-      while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-      if (i >= end) fail(i, context, "value " + std::to_string(v.size() + 1) + " of " + std::to_string(count) + " is missing");
-      const std::size_t s = i;
-      while (i < end && !std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-      const std::string_view t = b_.substr(s, i - s);
+    ascii_values(e, count, context, [&](std::string_view t, std::size_t at) {
       const bool digits = !t.empty() && t.size() <= 18 && std::all_of(t.begin() + (t[0] == '-' ? 1 : 0), t.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-      if (!digits || t == "-") fail(s, context, quoted_excerpt(t) + " is not an integer");
+      if (!digits || t == "-") fail(at, context, quoted_excerpt(t) + " is not an integer");
       v.push_back(std::stoll(std::string(t)));
-    }
-    while (i < end && std::isspace(static_cast<unsigned char>(b_[i]))) ++i;
-    if (i < end) fail(i, context, "more than the " + std::to_string(count) + " values the array holds");
+    });
     return v;
   }
   const std::string bytes = payload(e, count * static_cast<std::size_t>(w));
