@@ -13,6 +13,7 @@
 #include "oracle/certify/mesh_certifier3.hpp"
 
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
 
 using anisocert::Rational;
 using anisocert::predicates::Sym3;
@@ -64,6 +65,26 @@ void one_check(benchmark::State& state, bool uniform) {
   counters(state, m.tetrahedra.size());
 }
 
+// A bad mesh of about a million tetrahedra (n = 55: 998,250), issue 39's bounded cost: the Kuhn grid
+// under M with off-diagonals +¼ (the main diagonal lengthened), for which many tetrahedra have a vertex inside their M-sphere (each
+// one witness), with every check and bound (ρ₀ = 2, γ₀ = 2, quality 0.5, angles 30°); witnesses
+// counted in full, the first 100 of each list described; the peak resident memory is reported.
+void bad_million(benchmark::State& state) {
+  auto m = anisocert::geometry::kuhn_grid(static_cast<int>(state.range(0)));
+  m.metrics.assign(m.vertices.size(), Sym3<Rational>{1, Rational(1, 4), Rational(1, 4), 1, Rational(1, 4), 1});
+  Certify3Options o;
+  o.metric = true, o.rho0 = 2, o.gamma0 = 2, o.min_quality = Rational(1, 2), o.min_angle = 30;
+  Certify3Report r;
+  for (auto _ : state) r = certify_mesh3(m, o);
+  if (r.uniform_violations.count() == 0) state.SkipWithError("the stretched Kuhn grid should fail local uniformity");
+  counters(state, m.tetrahedra.size());
+  state.counters["uniform_violations"] = static_cast<double>(r.uniform_violations.count());
+
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  state.counters["peak_rss_MB"] = static_cast<double>(u.ru_maxrss) / 1024;
+}
+
 // Reading the Medit text of the same mesh (ASCII), for scale.
 void read_medit(benchmark::State& state) {
   anisocert::io::MeshFile f;
@@ -83,4 +104,5 @@ BENCHMARK_CAPTURE(all_checks, ties, true)->Arg(10)->Unit(benchmark::kMillisecond
 BENCHMARK_CAPTURE(one_check, uniform, true)->Arg(30)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(one_check, lengths, false)->Arg(30)->Unit(benchmark::kMillisecond);
 BENCHMARK(read_medit)->Arg(10)->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK(bad_million)->Arg(55)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();
