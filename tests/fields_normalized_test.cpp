@@ -48,7 +48,9 @@ TEST(FieldsNormalized, EveryEntryIsTheExactNormalizationWithinRounding) {
 }
 
 TEST(FieldsNormalized, NotPositiveDefiniteIsReturnedUnchanged) {
-  for (const Sym2<double>& M : {Sym2<double>{1, 2, 1}, Sym2<double>{-1, 0, -1}, Sym2<double>{0, 0, 0}, Sym2<double>{1, 1, 1}}) {
+  // Negative definite with det ≠ 1 (−I has det 1, so scaling it changes nothing: campaign mutant 186,
+  // which dropped the m11 > 0 test, survived on it).
+  for (const Sym2<double>& M : {Sym2<double>{1, 2, 1}, Sym2<double>{-1, 0, -1}, Sym2<double>{-1, 0, -4}, Sym2<double>{0, 0, 0}, Sym2<double>{1, 1, 1}}) {
     const Sym2<double> N = fields::normalized(M);
     EXPECT_TRUE(N.m11 == M.m11 && N.m12 == M.m12 && N.m22 == M.m22);
   }
