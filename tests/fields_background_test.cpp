@@ -247,6 +247,15 @@ TEST(BackgroundMesh, RejectsMeshesThatDefineNoField) {
   Mesh bare = good;
   bare.triangles.clear();
   EXPECT_EQ(construction_error(bare), "the background mesh has no triangles");
+  // A site beyond the doubles in one coordinate, just past the largest double (its interval's
+  // upper end infinite, the lower one finite: campaign mutant 187 let such an x through to the grid).
+  for (const bool in_x : {true, false}) {
+    Mesh far = good;
+    const Rational beyond = anisocert::rational_from_double(std::numeric_limits<double>::max()) + 1;  // below 2¹⁰²⁴
+    (in_x ? far.sites[3].x : far.sites[3].y) = beyond;
+    EXPECT_NE(construction_error(far).find("background site 4 (counted from 1)"), std::string::npos) << construction_error(far);
+    EXPECT_NE(construction_error(far).find("lies beyond the range of doubles"), std::string::npos) << construction_error(far);
+  }
   // A triangle naming no site (the readers refuse it first; the class on its own too: campaign
   // mutant 177 let it through to an out-of-range read).
   for (const int k : {4, -1}) {
