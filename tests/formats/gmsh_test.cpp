@@ -334,6 +334,27 @@ TEST(Gmsh, ReadsBinaryInEitherByteOrder) {
   expect_metric(big.mesh.metrics[1], 2, Rational(1, 2), 3);   // node 3
 }
 
+// § $PartitionedEntities, 4.1 binary: a curve whose parent is a surface (parentDim 2 > 1) is a
+// partition interface, and its elements are skipped by their node count whatever their type: here
+// a 9-node quadrangle (type 10), then the surface's triangle. Campaign mutant 199 skipped 18 node
+// tags for type 10 and read the triangle's block as node tags.
+TEST(Gmsh, ElementsOnAPartitionInterfaceAreSkippedByTheirNodeCount) {
+  Bytes b(false);
+  b.text("$MeshFormat\n4.1 1 8\n").i32(1).text("\n$EndMeshFormat\n");
+  b.text("$PartitionedEntities\n").u64(1).u64(0).u64(0).u64(1).u64(1).u64(0);
+  b.i32(4).i32(2).i32(1).u64(1).i32(1).f64(0).f64(0).f64(0).f64(1).f64(1).f64(0).u64(1).i32(9).u64(0);
+  b.i32(1).i32(2).i32(1).u64(1).i32(1).f64(0).f64(0).f64(0).f64(1).f64(1).f64(0).u64(0).u64(0).text("\n$EndPartitionedEntities\n");
+  b.text("$Nodes\n").u64(1).u64(3).u64(3).u64(7).i32(2).i32(1).i32(0).u64(3).u64(7).u64(3).u64(5);
+  b.f64(0).f64(0).f64(0).f64(1).f64(0).f64(0).f64(0).f64(1).f64(0).text("\n$EndNodes\n");
+  b.text("$Elements\n").u64(2).u64(2).u64(1).u64(2);
+  b.i32(1).i32(4).i32(10).u64(1).u64(1);
+  for (int k = 0; k < 9; ++k) b.u64(7);
+  b.i32(2).i32(1).i32(2).u64(1).u64(2).u64(7).u64(3).u64(5).text("\n$EndElements\n");
+  const MeshFile f = read_gmsh(b.str(), "partitioned.msh");
+  EXPECT_EQ(f.mesh.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}}));
+  EXPECT_TRUE(f.mesh.edges.empty());
+}
+
 TEST(Gmsh, BinaryFailuresNameTheByteAndTheSection) {
   const std::string file = hand_binary(true);
   const std::size_t nodes = file.find("$Nodes\n") + 7;
