@@ -23,6 +23,14 @@ namespace {
 
 using P3 = Point3<Rational>;
 
+// Random numbers for the filtered-against-exact tests: uniform reals and integers from one engine.
+struct Draw {
+  explicit Draw(std::uint64_t seed) : rng(seed) {}
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
+  std::mt19937_64 rng;
+};
+
 template <class K>
 Sign checked(const std::array<double, K::arity>& x) {
   std::array<Rational, K::arity> q;
@@ -153,29 +161,27 @@ TEST(InSphere, AgreesWithTheSolvedCircumcentre) {
 // M = diag(1, 4, 9), translated and scaled by powers of two, so exact in doubles), and each moved
 // by one to four ulps.
 TEST(FilteredVsExact, Orientation3AndInSphere) {
-  std::mt19937_64 rng(20261202);
-  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-  const auto integer = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  Draw draw(20261202);
   const auto nudged = [&](auto x) {
-    const std::size_t i = static_cast<std::size_t>(integer(0, static_cast<int>(x.size()) - 1));
-    for (int k = integer(1, 4); k > 0; --k) x[i] = std::nextafter(x[i], integer(0, 1) ? INFINITY : -INFINITY);
+    const std::size_t i = static_cast<std::size_t>(draw.integer(0, static_cast<int>(x.size()) - 1));
+    for (int k = draw.integer(1, 4); k > 0; --k) x[i] = std::nextafter(x[i], draw.integer(0, 1) ? INFINITY : -INFINITY);
     return x;
   };
   int zero_orientations = 0, zero_spheres = 0;
   for (int t = 0; t < 3000; ++t) {
-    const int e = integer(-70, 70), m = integer(-70, 70);
+    const int e = draw.integer(-70, 70), m = draw.integer(-70, 70);
     std::array<double, 12> o;
-    for (double& v : o) v = std::ldexp(uniform(-1, 1), e);
+    for (double& v : o) v = std::ldexp(draw.uniform(-1, 1), e);
     checked<Orientation3Kernel>(o);
     std::array<double, 21> s;
-    for (std::size_t i = 0; i < 15; ++i) s[i] = std::ldexp(uniform(-1, 1), e);
-    const double m11 = std::ldexp(uniform(0.1, 1), m), m22 = std::ldexp(uniform(0.1, 1), m), m33 = std::ldexp(uniform(0.1, 1), m);
-    s[15] = m11, s[16] = uniform(-0.5, 0.5) * std::sqrt(m11 * m22), s[17] = uniform(-0.5, 0.5) * std::sqrt(m11 * m33);
-    s[18] = m22, s[19] = uniform(-0.5, 0.5) * std::sqrt(m22 * m33), s[20] = m33;
+    for (std::size_t i = 0; i < 15; ++i) s[i] = std::ldexp(draw.uniform(-1, 1), e);
+    const double m11 = std::ldexp(draw.uniform(0.1, 1), m), m22 = std::ldexp(draw.uniform(0.1, 1), m), m33 = std::ldexp(draw.uniform(0.1, 1), m);
+    s[15] = m11, s[16] = draw.uniform(-0.5, 0.5) * std::sqrt(m11 * m22), s[17] = draw.uniform(-0.5, 0.5) * std::sqrt(m11 * m33);
+    s[18] = m22, s[19] = draw.uniform(-0.5, 0.5) * std::sqrt(m22 * m33), s[20] = m33;
     checked<InSphereKernel>(s);
     // Exactly degenerate, then a few ulps away.
-    const double scale = std::ldexp(1.0, integer(-40, 40)), cx = integer(-1000, 1000) * scale, cy = integer(-1000, 1000) * scale,
-                 cz = integer(-1000, 1000) * scale;
+    const double scale = std::ldexp(1.0, draw.integer(-40, 40)), cx = draw.integer(-1000, 1000) * scale, cy = draw.integer(-1000, 1000) * scale,
+                 cz = draw.integer(-1000, 1000) * scale;
     const std::array<double, 12> flat{cx, cy, cz, cx + scale, cy, cz, cx, cy + 3 * scale, cz, cx + 5 * scale, cy + 7 * scale, cz};
     zero_orientations += checked<Orientation3Kernel>(flat) == Sign::zero;
     checked<Orientation3Kernel>(nudged(flat));
@@ -255,28 +261,26 @@ Sign interval_checked(const std::array<double, K::arity>& x) {
 // Filtered against exact for the two dihedral kernels: random doubles across magnitudes, and the
 // corner tetrahedron (an exact right angle) translated and scaled by powers of two, then nudged.
 TEST(FilteredVsExact, Dihedral) {
-  std::mt19937_64 rng(39039);
-  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-  const auto integer = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  Draw draw(39039);
   int zeros = 0;
   for (int t = 0; t < 2000; ++t) {
-    const int e = integer(-60, 60), m = integer(-60, 60);
+    const int e = draw.integer(-60, 60), m = draw.integer(-60, 60);
     std::array<double, 19> x;
-    for (std::size_t i = 0; i < 12; ++i) x[i] = std::ldexp(uniform(-1, 1), e);
-    const double m11 = std::ldexp(uniform(0.1, 1), m), m22 = std::ldexp(uniform(0.1, 1), m), m33 = std::ldexp(uniform(0.1, 1), m);
-    x[12] = m11, x[13] = uniform(-0.5, 0.5) * std::sqrt(m11 * m22), x[14] = uniform(-0.5, 0.5) * std::sqrt(m11 * m33);
-    x[15] = m22, x[16] = uniform(-0.5, 0.5) * std::sqrt(m22 * m33), x[17] = m33, x[18] = uniform(0, 1);
+    for (std::size_t i = 0; i < 12; ++i) x[i] = std::ldexp(draw.uniform(-1, 1), e);
+    const double m11 = std::ldexp(draw.uniform(0.1, 1), m), m22 = std::ldexp(draw.uniform(0.1, 1), m), m33 = std::ldexp(draw.uniform(0.1, 1), m);
+    x[12] = m11, x[13] = draw.uniform(-0.5, 0.5) * std::sqrt(m11 * m22), x[14] = draw.uniform(-0.5, 0.5) * std::sqrt(m11 * m33);
+    x[15] = m22, x[16] = draw.uniform(-0.5, 0.5) * std::sqrt(m22 * m33), x[17] = m33, x[18] = draw.uniform(0, 1);
     interval_checked<DihedralSinKernel>(x);
     std::array<double, 18> head;
     std::copy_n(x.begin(), 18, head.begin());
     checked<DihedralDotKernel>(head);
     interval_checked<DihedralDotKernel>(head);
-    const double scale = std::ldexp(1.0, integer(-40, 40)), cx = integer(-1000, 1000) * scale, cy = integer(-1000, 1000) * scale,
-                 cz = integer(-1000, 1000) * scale;
+    const double scale = std::ldexp(1.0, draw.integer(-40, 40)), cx = draw.integer(-1000, 1000) * scale, cy = draw.integer(-1000, 1000) * scale,
+                 cz = draw.integer(-1000, 1000) * scale;
     std::array<double, 18> right{cx, cy, cz, cx + scale, cy, cz, cx, cy + 3 * scale, cz, cx, cy, cz + 5 * scale, 1, 0, 0, 2, 0, 4};
     zeros += checked<DihedralDotKernel>(right) == Sign::zero;
-    const auto i = static_cast<std::size_t>(integer(0, 11));
-    right[i] = std::nextafter(right[i], integer(0, 1) ? INFINITY : -INFINITY);
+    const auto i = static_cast<std::size_t>(draw.integer(0, 11));
+    right[i] = std::nextafter(right[i], draw.integer(0, 1) ? INFINITY : -INFINITY);
     checked<DihedralDotKernel>(right);
   }
   EXPECT_EQ(zeros, 2000);
@@ -321,22 +325,20 @@ TEST(Distortion3, ExactAgainstClosedForms) {
 // Filtered against exact for the 3×3 determinant of γ²P − Q: random doubles across magnitudes and
 // proportional metrics (an exact zero: the determinant of γ²P − γ²P), then nudged.
 TEST(FilteredVsExact, Distortion3Determinant) {
-  std::mt19937_64 rng(3939);
-  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-  const auto integer = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  Draw draw(3939);
   int zeros = 0;
   for (int t = 0; t < 3000; ++t) {
     std::array<double, 13> x;
-    const int e = integer(-60, 60);
-    x[0] = std::ldexp(uniform(0.1, 4), integer(-4, 4));
-    for (std::size_t i = 1; i < 13; ++i) x[i] = std::ldexp(uniform(-1, 1), e);
+    const int e = draw.integer(-60, 60);
+    x[0] = std::ldexp(draw.uniform(0.1, 4), draw.integer(-4, 4));
+    for (std::size_t i = 1; i < 13; ++i) x[i] = std::ldexp(draw.uniform(-1, 1), e);
     checked<ScaledDifference3DeterminantKernel>(x);
-    const double g = std::ldexp(1.0, integer(-3, 3));
+    const double g = std::ldexp(1.0, draw.integer(-3, 3));
     for (std::size_t i = 1; i < 7; ++i) x[i + 6] = g * x[i];
     x[0] = g;
     zeros += checked<ScaledDifference3DeterminantKernel>(x) == Sign::zero;
-    const auto i = static_cast<std::size_t>(integer(0, 12));
-    x[i] = std::nextafter(x[i], integer(0, 1) ? INFINITY : -INFINITY);
+    const auto i = static_cast<std::size_t>(draw.integer(0, 12));
+    x[i] = std::nextafter(x[i], draw.integer(0, 1) ? INFINITY : -INFINITY);
     checked<ScaledDifference3DeterminantKernel>(x);
   }
   EXPECT_EQ(zeros, 3000);
