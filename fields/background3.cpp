@@ -41,6 +41,43 @@ Point3<FilterInterval> around(const Point3<Rational>& p) {
   return {FilterInterval::around(p.x), FilterInterval::around(p.y), FilterInterval::around(p.z)};
 }
 
+std::vector<Point3<FilterInterval>> intervals_of(const std::vector<Point3<Rational>>& vertices) {
+  std::vector<Point3<FilterInterval>> x;
+  for (const auto& p : vertices) x.push_back(around(p));
+  return x;
+}
+
+std::vector<Sign> orientations_of(const std::vector<std::array<int, 4>>& tetrahedra, const std::vector<Point3<Rational>>& p) {
+  std::vector<Sign> o;
+  for (const auto& v : tetrahedra)
+    o.push_back(predicates::orientation3(p[static_cast<std::size_t>(v[0])], p[static_cast<std::size_t>(v[1])], p[static_cast<std::size_t>(v[2])],
+                                         p[static_cast<std::size_t>(v[3])]));
+  return o;
+}
+
+// Each tetrahedron's range of one coordinate, the union of its vertices' intervals.
+std::pair<double, double> range_of(const std::array<int, 4>& v, const std::vector<Point3<FilterInterval>>& x, FilterInterval Point3<FilterInterval>::*c) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (int k : v) lo = std::min(lo, (x[static_cast<std::size_t>(k)].*c).lo), hi = std::max(hi, (x[static_cast<std::size_t>(k)].*c).hi);
+  return {lo, hi};
+}
+
+std::vector<DoubleBox> xy_boxes_of(const std::vector<std::array<int, 4>>& tetrahedra, const std::vector<Point3<FilterInterval>>& x) {
+  std::vector<DoubleBox> boxes;
+  for (const auto& v : tetrahedra) {
+    const auto [x0, x1] = range_of(v, x, &Point3<FilterInterval>::x);
+    const auto [y0, y1] = range_of(v, x, &Point3<FilterInterval>::y);
+    boxes.push_back({x0, x1, y0, y1});
+  }
+  return boxes;
+}
+
+std::vector<std::pair<double, double>> z_ranges_of(const std::vector<std::array<int, 4>>& tetrahedra, const std::vector<Point3<FilterInterval>>& x) {
+  std::vector<std::pair<double, double>> z;
+  for (const auto& v : tetrahedra) z.push_back(range_of(v, x, &Point3<FilterInterval>::z));
+  return z;
+}
+
 Rational volume6(const Point3<Rational>& a, const Point3<Rational>& b, const Point3<Rational>& c, const Point3<Rational>& d) {
   const Rational ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
   const Rational wx = d.x - a.x, wy = d.y - a.y, wz = d.z - a.z;
@@ -50,22 +87,9 @@ Rational volume6(const Point3<Rational>& a, const Point3<Rational>& b, const Poi
 }  // namespace
 
 BackgroundMesh3::BackgroundMesh3(const geometry::Mesh3<Rational>& mesh)
-    : vertices_(checked(mesh).vertices), metrics_(mesh.metrics), tetrahedra_(mesh.tetrahedra), grid_([&] {
-        for (const auto& p : vertices_) vertex_intervals_.push_back(around(p));
-        for (const auto& v : tetrahedra_) {
-          const auto& x = vertex_intervals_;
-          const auto lo = [&](auto c) { return std::min({(x[static_cast<std::size_t>(v[0])].*c).lo, (x[static_cast<std::size_t>(v[1])].*c).lo,
-                                                         (x[static_cast<std::size_t>(v[2])].*c).lo, (x[static_cast<std::size_t>(v[3])].*c).lo}); };
-          const auto hi = [&](auto c) { return std::max({(x[static_cast<std::size_t>(v[0])].*c).hi, (x[static_cast<std::size_t>(v[1])].*c).hi,
-                                                         (x[static_cast<std::size_t>(v[2])].*c).hi, (x[static_cast<std::size_t>(v[3])].*c).hi}); };
-          using P = Point3<FilterInterval>;
-          boxes_.push_back({lo(&P::x), hi(&P::x), lo(&P::y), hi(&P::y)});
-          z_ranges_.emplace_back(lo(&P::z), hi(&P::z));
-          const auto at = [&](int k) { return vertices_[static_cast<std::size_t>(v[static_cast<std::size_t>(k)])]; };
-          orientation_.push_back(predicates::orientation3(at(0), at(1), at(2), at(3)));
-        }
-        return BoxGrid(boxes_);
-      }()) {}
+    : vertices_(checked(mesh).vertices), metrics_(mesh.metrics), tetrahedra_(mesh.tetrahedra), vertex_intervals_(intervals_of(vertices_)),
+      orientation_(orientations_of(tetrahedra_, vertices_)), boxes_(xy_boxes_of(tetrahedra_, vertex_intervals_)),
+      z_ranges_(z_ranges_of(tetrahedra_, vertex_intervals_)), grid_(boxes_) {}
 
 // p in the closed tetrahedron t: on its inner side of, or on, each face's plane (each orientation
 // exact: the filtered predicate on the rationals).
