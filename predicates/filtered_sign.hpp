@@ -211,6 +211,18 @@ template <class K, const ErrorModel& model>
   return std::nullopt;
 }
 
+// An enclosure of K's value at double inputs from the static stage: the double evaluation ± the
+// static bound (widened by an ulp for the rounding of those two sums), as cheap as that
+// evaluation; nothing outside the stage's range. For measured values, where a sign is not enough.
+template <class K>
+std::optional<FilterInterval> static_enclosure(const std::array<double, K::arity>& x) {
+  const std::array<double, magnitude_groups> max = group_maxima<K>(x);
+  if (!in_static_range<K>(max)) return std::nullopt;
+  const double value = K::template eval<double>(x), bound = error_bound<static_error_model<K>>(max);
+  if (!std::isfinite(value)) return std::nullopt;
+  return FilterInterval::widen(value - bound, value + bound);
+}
+
 // The translated static stage (see Translatable), on the rounded differences: tried only when
 // the plain one fails, so that the common case does not pay for the differences.
 template <class K>

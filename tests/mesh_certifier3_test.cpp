@@ -354,3 +354,107 @@ TEST(MeshCertifier3, RadiusEdgeAndDistortionBoundsAreDecidedExactly) {
   EXPECT_TRUE(r.gamma_violations.empty());
   EXPECT_FALSE(r.holds(o));
 }
+
+// LU's sliver measure (oracle/certify/quasi_cosphericity.hpp). One Kuhn cube: its six tetrahedra
+// turn around the main diagonal, six inner faces, and all eight corners lie on one sphere for
+// M = I, so every configuration is exactly cospherical (γ* = 1) and, G ≠ 0, strictly
+// γ₀-cospherical for every γ₀ > 1. Under the Delaunay metric (off-diagonals −¼) none is
+// cospherical, and the exact count at γ₀ just below the least measured γ* is 0, just above it at
+// least 1: the measure (eigenvalues in doubles) and the decision (polynomial signs) agree.
+TEST(MeshCertifier3, SliverMeasureOfTheKuhnCube) {
+  Certify3Options o;
+  o.valid = false;
+  o.gamma0 = Rational(1) + Rational(1, 1000000);
+  const Certify3Report r = certify_mesh3(kuhn_grid(1, {1, 0, 0, 1, 0, 1}), o);
+  ASSERT_TRUE(r.cosphericity.has_value());
+  EXPECT_EQ(r.cosphericity->configurations, 6u);
+  EXPECT_EQ(r.cosphericity->cospherical, 6u);
+  EXPECT_EQ(r.cosphericity->least_critical, 1.0);
+  EXPECT_EQ(r.cosphericity->quasi_cospherical, 6u);
+  EXPECT_EQ(r.cosphericity->witnesses.count(), 6u);
+  EXPECT_EQ(r.cosphericity->at_boundary, 0u);
+
+  const Rational q(-1, 4);
+  const Mesh3 delaunay = kuhn_grid(2, {1, q, q, 1, q, 1});
+  o.gamma0.reset();
+  const Certify3Report d = certify_mesh3(delaunay, o);
+  ASSERT_TRUE(d.cosphericity.has_value());
+  EXPECT_EQ(d.cosphericity->cospherical, 0u);
+  const double least = d.cosphericity->least_critical;
+  ASSERT_GT(least, 1.0001);
+  ASSERT_TRUE(std::isfinite(least));
+  o.gamma0 = Rational(least * (1 - 1e-9));
+  EXPECT_EQ(certify_mesh3(delaunay, o).cosphericity->quasi_cospherical, 0u);
+  o.gamma0 = Rational(least * (1 + 1e-9));
+  const Certify3Report above = certify_mesh3(delaunay, o);
+  EXPECT_GE(above.cosphericity->quasi_cospherical, 1u);
+  EXPECT_LT(above.cosphericity->quasi_cospherical, above.cosphericity->configurations);
+  EXPECT_GT(above.cosphericity->least_radius_edge, 0.0);
+  // Without the locally uniform check, no sliver measure.
+  o.uniform = false;
+  EXPECT_FALSE(certify_mesh3(delaunay, o).cosphericity.has_value());
+}
+
+namespace {
+
+// A 2 × 2 × 2 Kuhn grid with every vertex moved at random and a random metric LLᵀ per vertex,
+// all exact doubles (a binary file's numbers: the checks take their static-filter paths) or, with
+// `tenths`, the same numbers divided by 10 (not doubles: the interval paths).
+Mesh3 random_grid(std::mt19937& rng, bool tenths) {
+  // Doubles with full mantissas: the double evaluations round, and only their bounds keep the
+  // enclosures true.
+  std::uniform_real_distribution<double> move(-0.15, 0.15), entry(-1, 1), diagonal(0.5, 1.5);
+  Mesh3 m = anisocert::geometry::kuhn_grid(2);
+  const auto moved = [&](const Rational& x) { return Rational(x.convert_to<double>() + move(rng)); };  // a double
+  for (auto& p : m.vertices) p = {moved(p.x), moved(p.y), moved(p.z)};
+  for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+    // M = LLᵀ rounded to doubles entrywise: symmetric, positive definite (L is well conditioned).
+    const double l1 = diagonal(rng), l2 = diagonal(rng), l3 = diagonal(rng), l21 = entry(rng) / 4, l31 = entry(rng) / 4, l32 = entry(rng) / 4;
+    m.metrics.push_back({Rational(l1 * l1), Rational(l1 * l21), Rational(l1 * l31), Rational(l21 * l21 + l2 * l2), Rational(l21 * l31 + l2 * l32),
+                         Rational(l31 * l31 + l32 * l32 + l3 * l3)});
+  }
+  if (tenths) {
+    for (auto& p : m.vertices) p = {p.x / 10, p.y / 10, p.z / 10};
+    for (auto& M : m.metrics) M = {100 * M.m11, 100 * M.m12, 100 * M.m13, 100 * M.m22, 100 * M.m23, 100 * M.m33};
+  }
+  return m;
+}
+
+}  // namespace
+
+// Filters only speed up, never change, an answer: the static-bound enclosures of edge lengths and
+// mean ratios (every input a double) and the interval ones (tenths) against rationals computed
+// here. Unit edges are counted from ℓ² ∈ [1/2, 2] in both metrics; the least quality's enclosure
+// [lo, hi] must hold the exact least: the exact decision q >= lo holds for every tetrahedron and
+// q >= hi' (the next double above hi) fails for one.
+TEST(MeshCertifier3, StaticAndIntervalEnclosuresHoldTheExactValues) {
+  std::mt19937 rng(39);
+  for (int round = 0; round < 30; ++round) {
+    const Mesh3 m = random_grid(rng, round % 2 == 1);
+    Certify3Options o = all_checks();
+    o.valid = false, o.uniform = false;
+    const Certify3Report r = certify_mesh3(m, o);
+    ASSERT_TRUE(r.lengths && r.quality);
+    std::vector<std::pair<int, int>> edges;
+    for (const auto& t : m.tetrahedra)
+      for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = i + 1; j < 4; ++j) edges.emplace_back(std::min(t[i], t[j]), std::max(t[i], t[j]));
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    std::size_t unit = 0;
+    for (const auto& [a, b] : edges) {
+      const auto d = minus(m.vertices[static_cast<std::size_t>(b)], m.vertices[static_cast<std::size_t>(a)]);
+      const Rational la = form(m.metrics[static_cast<std::size_t>(a)], d), lb = form(m.metrics[static_cast<std::size_t>(b)], d);
+      unit += la >= Rational(1, 2) && la <= 2 && lb >= Rational(1, 2) && lb <= 2;
+    }
+    EXPECT_EQ(r.lengths->unit_edges, unit) << "round " << round;
+    const anisocert::FilterInterval worst = r.quality->worst;
+    ASSERT_LE(worst.lo, worst.hi);
+    Certify3Options q = o;
+    q.metric = true;
+    q.min_quality = Rational(worst.lo);
+    EXPECT_TRUE(certify_mesh3(m, q).quality->violations.empty()) << "round " << round;
+    q.min_quality = Rational(std::nextafter(worst.hi, 2.0));
+    EXPECT_FALSE(certify_mesh3(m, q).quality->violations.empty()) << "round " << round;
+  }
+}

@@ -166,6 +166,35 @@ void add_uniform3(const oracle::Certify3Report& r, CertifyVerdict& v) {
                        {"violation_count", r.uniform_violations.count()}, {"tie_count", r.uniform_ties.count()}}});
 }
 
+// LU's sliver measure (oracle/certify/quasi_cosphericity.hpp): measured, with exact counts at γ₀.
+void add_cosphericity3(const oracle::CosphericityReport& c, const BoundTexts& b, CertifyVerdict& v) {
+  const auto pair = [](const int (&t)[2]) { return ReportJson::array({t[0], t[1]}); };
+  const auto pair_text = [](const int (&t)[2]) { return "tetrahedra " + std::to_string(t[0]) + " and " + std::to_string(t[1]); };
+  std::string detail = " (" + std::to_string(c.configurations) + " pairs of tetrahedra sharing a face";
+  if (c.least_tetrahedra[0] >= 0)
+    detail += "; least critical distortion γ* ≈ " + as_printed(c.least_critical) + ", " + pair_text(c.least_tetrahedra);
+  if (c.cospherical) detail += "; " + std::to_string(c.cospherical) + " exactly cospherical in a vertex's metric";
+  if (c.decided) {
+    detail += "; " + std::to_string(c.quasi_cospherical) + " γ₀-cospherical for γ₀ = " + excerpt(b.gamma0);
+    if (c.at_boundary) detail += ", " + std::to_string(c.at_boundary) + " exactly at γ₀";
+    if (c.quasi_cospherical) detail += ", least radius-edge ratio of those ≈ " + as_printed(c.least_radius_edge) + " (" + pair_text(c.least_radius_edge_tetrahedra) + ")";
+  }
+  if (c.unmeasured) detail += "; " + std::to_string(c.unmeasured) + " beyond the doubles, γ* not measured";
+  detail += ")";
+  const bool least = c.least_tetrahedra[0] >= 0, radius = c.decided && c.quasi_cospherical;
+  v.checks.push_back({"quasi_cosphericity", "LU's sliver measure (quasi-cosphericity of tetrahedra sharing a face, Definitions 3.6 and 3.9)",
+                      "slivers", true, false, detail, "", {texts(c.witnesses)},
+                      {{"configurations", c.configurations}, {"cospherical", c.cospherical},
+                       {"least_critical_distortion", least ? ReportJson(c.least_critical) : ReportJson(nullptr)},
+                       {"least_critical_tetrahedra", least ? pair(c.least_tetrahedra) : ReportJson(nullptr)},
+                       {"gamma0", c.decided ? ReportJson(b.gamma0) : ReportJson(nullptr)},
+                       {"quasi_cospherical", c.decided ? ReportJson(c.quasi_cospherical) : ReportJson(nullptr)},
+                       {"at_boundary", c.decided ? ReportJson(c.at_boundary) : ReportJson(nullptr)},
+                       {"least_radius_edge", radius ? ReportJson(c.least_radius_edge) : ReportJson(nullptr)},
+                       {"least_radius_edge_tetrahedra", radius ? pair(c.least_radius_edge_tetrahedra) : ReportJson(nullptr)},
+                       {"unmeasured", c.unmeasured}}});
+}
+
 // UGAWG's measures (oracle/certify/ugawg_measures.hpp): statistics, never a verdict.
 void add_ugawg3(const oracle::UgawgMeasures& u, CertifyVerdict& v) {
   ReportJson bins = ReportJson::array();
@@ -194,6 +223,7 @@ CertifyVerdict certify_verdict(const oracle::Certify3Report& r, const oracle::Ce
   if (r.uniform_checked) add_uniform3(r, v);
   if (o.rho0 && v.has_metrics) add_radius_edge(r.worst_rho, r.worst_rho_tetrahedron, r.worst_rho_vertex, r.rho_violations, b, v, "tetrahedron");
   if (o.gamma0 && v.has_metrics) add_distortion(r.worst_gamma, r.worst_gamma_tetrahedron, r.gamma_violations, b, v, "tetrahedron");
+  if (r.cosphericity) add_cosphericity3(*r.cosphericity, b, v);
   if (r.lengths) add_lengths(*r.lengths, b, v);
   if (r.quality) add_quality(*r.quality, b, v, "tetrahedron");
   if (r.angles) add_angles(*r.angles, b, v, "tetrahedron");
@@ -289,6 +319,13 @@ std::vector<StreamedList> lists_of(const std::string& key, const oracle::Certify
   if (key == "angles") return {witness_list("violations", r.angles->violations, "tetrahedron")};
   if (key == "radius_edge") return {witness_list("violations", r.rho_violations, "tetrahedron")};
   if (key == "distortion") return {witness_list("violations", r.gamma_violations, "tetrahedron")};
+  if (key == "quasi_cosphericity") {  // a witness: the vertex whose metric, the two tetrahedra
+    const oracle::WitnessList& ws = r.cosphericity->witnesses;
+    return {{"witnesses", ws.described().size(), [&ws](std::size_t i) {
+               const oracle::MeshWitness& w = ws.described()[i];
+               return ReportJson{{"vertex", w.vertex}, {"tetrahedra", ReportJson::array({w.triangle, w.site})}, {"text", w.text}};
+             }}};
+  }
   return {};
 }
 

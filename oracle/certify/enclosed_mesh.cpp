@@ -42,15 +42,31 @@ Sign EnclosedMesh::orientation(int a, int b, int c) const {
 EnclosedMesh3::EnclosedMesh3(const geometry::Mesh3<Rational>& m) : mesh(m) {
   vertex.reserve(m.vertices.size());
   approx.reserve(m.vertices.size());
+  exact.reserve(m.vertices.size());
   for (const auto& p : m.vertices) {
     vertex.push_back({enclose(p.x), enclose(p.y), enclose(p.z)});
     approx.push_back({approximate(p.x), approximate(p.y), approximate(p.z)});
+    const auto& v = vertex.back();
+    exact.push_back(v.x.lo == v.x.hi && v.y.lo == v.y.hi && v.z.lo == v.z.hi);
   }
   metric.reserve(m.metrics.size());
-  for (const auto& M : m.metrics) metric.push_back({enclose(M.m11), enclose(M.m12), enclose(M.m13), enclose(M.m22), enclose(M.m23), enclose(M.m33)});
+  exact_metric.reserve(m.metrics.size());
+  for (const auto& M : m.metrics) {
+    metric.push_back({enclose(M.m11), enclose(M.m12), enclose(M.m13), enclose(M.m22), enclose(M.m23), enclose(M.m33)});
+    const auto& e = metric.back();
+    exact_metric.push_back(e.m11.lo == e.m11.hi && e.m12.lo == e.m12.hi && e.m13.lo == e.m13.hi && e.m22.lo == e.m22.hi &&
+                           e.m23.lo == e.m23.hi && e.m33.lo == e.m33.hi);
+  }
+  orientations.reserve(m.tetrahedra.size());
+  for (const auto& t : m.tetrahedra) orientations.push_back(orientation(t[0], t[1], t[2], t[3]));
 }
 
 Sign EnclosedMesh3::orientation(int a, int b, int c, int d) const {
+  if (exact[a] && exact[b] && exact[c] && exact[d]) {  // the approximations are the exact doubles
+    const auto &pa = approx[a], &pb = approx[b], &pc = approx[c], &pd = approx[d];
+    return predicates::filtered_sign<predicates::Orientation3Kernel>(
+        std::array<double, 12>{pa.x, pa.y, pa.z, pb.x, pb.y, pb.z, pc.x, pc.y, pc.z, pd.x, pd.y, pd.z});
+  }
   const auto &pa = vertex[a], &pb = vertex[b], &pc = vertex[c], &pd = vertex[d];
   return predicates::interval_then_exact<predicates::Orientation3Kernel>(
       std::array<FilterInterval, 12>{pa.x, pa.y, pa.z, pb.x, pb.y, pb.z, pc.x, pc.y, pc.z, pd.x, pd.y, pd.z}, [&] {

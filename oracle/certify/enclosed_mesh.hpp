@@ -30,10 +30,16 @@ struct EnclosedMesh {
 struct EnclosedMesh3 {
   explicit EnclosedMesh3(const geometry::Mesh3<Rational>& m);
 
-  // The exact orientation of vertices a, b, c, d (interval first; predicates/orientation3.hpp).
+  // The exact orientation of vertices a, b, c, d (predicates/orientation3.hpp): the static
+  // filter when the four are doubles (their enclosures are points), else intervals first.
   Sign orientation(int a, int b, int c, int d) const;
+  // The orientation of tetrahedron t of the mesh, computed once by the constructor.
+  Sign orientation(std::size_t t) const { return orientations[t]; }
 
   const geometry::Mesh3<Rational>& mesh;
+  std::vector<char> exact;                                  // mesh.vertices[i]'s coordinates are doubles
+  std::vector<char> exact_metric;                           // mesh.metrics[i]'s entries are doubles
+  std::vector<Sign> orientations;                           // of each tetrahedron
   std::vector<predicates::Point3<FilterInterval>> vertex;   // encloses mesh.vertices[i]
   std::vector<predicates::Sym3<FilterInterval>> metric;     // encloses mesh.metrics[i]
   std::vector<predicates::Point3<double>> approx;           // approximate(mesh.vertices[i])

@@ -140,7 +140,7 @@ void check_lu_bounds(const EnclosedMesh3& m, const Certify3Options& o, Certify3R
   for (std::size_t ti = 0; ti < mesh.tetrahedra.size(); ++ti) {
     const auto& t = mesh.tetrahedra[ti];
     const int tetrahedron = static_cast<int>(ti);
-    const bool flat = m.orientation(t[0], t[1], t[2], t[3]) == Sign::zero;
+    const bool flat = m.orientation(ti) == Sign::zero;
     if (o.rho0 && flat)  // no circumsphere: the ratio is unbounded, never at most ρ₀
       r.rho_violations.add(t[0], tetrahedron, -1, [&] { return name("tetrahedron", tetrahedron) + " is flat: its radius-edge ratio is unbounded"; });
     if (o.rho0 && !flat)
@@ -199,12 +199,29 @@ bool certainly_outside(const Ellipsoid& e, const predicates::Point3<I>& p, const
   return (d[0] * Md[0] + d[1] * Md[1] + d[2] * Md[2]).lo > e.r2.hi;
 }
 
-// sign of the in-sphere test of e against tetrahedron t in the metric of vertex v (interval first).
+// The inputs of the in-sphere test of e against t in the metric of v when all are doubles.
+std::optional<std::array<double, 21>> double_inputs(const EnclosedMesh3& m, const std::array<int, 4>& t, int e, int v) {
+  const std::array<int, 5> idx{t[0], t[1], t[2], t[3], e};
+  if (!m.exact_metric[static_cast<std::size_t>(v)] || !std::all_of(idx.begin(), idx.end(), [&](int u) { return m.exact[static_cast<std::size_t>(u)] != 0; }))
+    return std::nullopt;
+  std::array<double, 21> x;
+  for (std::size_t k = 0; k < 5; ++k) {
+    const auto& p = m.approx[static_cast<std::size_t>(idx[k])];
+    x[3 * k] = p.x, x[3 * k + 1] = p.y, x[3 * k + 2] = p.z;
+  }
+  const auto& N = m.metric[static_cast<std::size_t>(v)];  // point enclosures: lo is the value
+  x[15] = N.m11.lo, x[16] = N.m12.lo, x[17] = N.m13.lo, x[18] = N.m22.lo, x[19] = N.m23.lo, x[20] = N.m33.lo;
+  return x;
+}
+
+// sign of the in-sphere test of e against tetrahedron t in the metric of vertex v: the filtered
+// predicate on doubles when every input is one, else intervals first.
 Sign insphere(const EnclosedMesh3& m, const std::array<int, 4>& t, int e, int v) {
+  if (const auto x = double_inputs(m, t, e, v)) return predicates::filtered_sign<predicates::InSphereKernel>(*x);
+  const std::array<int, 5> idx{t[0], t[1], t[2], t[3], e};
   const auto& P = m.vertex;
   const auto& M = m.metric[static_cast<std::size_t>(v)];
   std::array<FilterInterval, 21> in;
-  std::array<int, 5> idx{t[0], t[1], t[2], t[3], e};
   for (std::size_t k = 0; k < 5; ++k) {
     const auto& p = P[static_cast<std::size_t>(idx[k])];
     in[3 * k] = p.x, in[3 * k + 1] = p.y, in[3 * k + 2] = p.z;
@@ -250,7 +267,7 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
     std::vector<int> candidates;
     for (std::size_t ti = 0; ti < mesh.tetrahedra.size(); ++ti) {
       const auto& t = mesh.tetrahedra[ti];
-      const Sign orientation = m.orientation(t[0], t[1], t[2], t[3]);
+      const Sign orientation = m.orientation(ti);
       if (orientation == Sign::zero) {
         ++r.unmeasured;
         continue;
@@ -274,9 +291,13 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
         }
         for (const int e : candidates) {
           if (e == t[0] || e == t[1] || e == t[2] || e == t[3]) continue;
-          if (ellipsoid && certainly_outside(*ellipsoid, m.vertex[static_cast<std::size_t>(e)], Mv)) continue;
+          // With doubles only, the static in-sphere filter first (cheaper than the interval sphere
+          // test); when it cannot decide (nearly cospherical), the sphere test before the exact path.
+          const auto x = double_inputs(m, t, e, v);
+          const std::optional<Sign> quick = x ? predicates::static_sign<predicates::InSphereKernel, predicates::static_error_model<predicates::InSphereKernel>>(*x) : std::nullopt;
+          if (!quick && ellipsoid && certainly_outside(*ellipsoid, m.vertex[static_cast<std::size_t>(e)], Mv)) continue;
           ++r.insphere_tests;
-          const Sign s = insphere(m, t, e, v) * orientation;
+          const Sign s = (quick ? *quick : insphere(m, t, e, v)) * orientation;
           if (s == Sign::negative || (s == Sign::zero && tied)) continue;
           const auto text = [&, e, v] {
             return "vertex " + std::to_string(e) + " is " + (s == Sign::positive ? "strictly inside" : "on") +
@@ -293,6 +314,7 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
       }
     }
   }
+  if (o.uniform && has_metrics) r.cosphericity = check_quasi_cosphericity(m, o.gamma0, o.described_witnesses);
   r.rho_violations = WitnessList(o.described_witnesses);
   r.gamma_violations = WitnessList(o.described_witnesses);
   if ((o.rho0 || o.gamma0) && has_metrics) check_lu_bounds(m, o, r);

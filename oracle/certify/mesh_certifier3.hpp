@@ -10,6 +10,8 @@
 //  - LU's bounds, when given: the radius-edge ratio (LU Definition 3.10: the M_v-circumradius over the
 //    shortest edge in M_v) at most ρ₀ in each vertex's metric, and the distortion γ (LU §2, the
 //    3×3 predicates/distortion.hpp) at most γ₀ between the vertices of each tetrahedron, exactly;
+//  - LU's sliver measure, with the locally uniform check: the quasi-cosphericity of every two
+//    tetrahedra sharing a face (quasi_cosphericity.hpp), measured, and decided exactly at γ₀;
 //  - conforming to its metric: edge lengths in both endpoints' metrics, the share in
 //    [1/√2, √2] decided exactly, and a range as a verdict; the mean-ratio quality in each vertex's
 //    metric, enclosed, and a lower bound as a verdict (metric_checks.hpp, one loop for both
@@ -22,6 +24,7 @@
 // vertex is a candidate. Each decision is the exact in-sphere sign, interval first.
 #include "geometry/mesh3.hpp"
 #include "oracle/certify/metric_checks.hpp"
+#include "oracle/certify/quasi_cosphericity.hpp"
 #include "oracle/certify/tetrahedralization_check.hpp"
 #include "oracle/certify/ugawg_measures.hpp"
 
@@ -49,6 +52,7 @@ struct Certify3Report {
   double worst_rho = 0, worst_gamma = 0;  // approximations
   int worst_rho_tetrahedron = -1, worst_rho_vertex = -1, worst_gamma_tetrahedron = -1;
   WitnessList rho_violations, gamma_violations;  // one per tetrahedron each
+  std::optional<CosphericityReport> cosphericity;  // with the uniform check: LU's sliver measure
   std::optional<AngleReport> angles;    // dihedral angles in each edge end's metric
   std::optional<UgawgMeasures> ugawg;  // with the metric checks: UGAWG's measures, floating point
   std::size_t tetrahedra = 0;

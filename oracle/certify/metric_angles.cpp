@@ -170,8 +170,7 @@ struct Tetrahedra {
   const EnclosedMesh3& m;
   std::size_t size() const { return m.mesh.tetrahedra.size(); }
   bool measurable(std::size_t t) const {
-    const auto& v = m.mesh.tetrahedra[t];
-    return m.orientation(v[0], v[1], v[2], v[3]) != Sign::zero;
+    return m.orientation(t) != Sign::zero;
   }
   static constexpr std::size_t angles = 12;
   static constexpr std::array<std::array<int, 4>, 6> edges{{{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}}};

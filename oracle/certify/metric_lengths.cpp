@@ -6,6 +6,7 @@
 #include "predicates/point.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 namespace anisocert::oracle {
 namespace {
@@ -20,8 +21,9 @@ struct LengthKernel {
 };
 struct Length3Kernel {
   static constexpr std::size_t arity = 13;
+  static constexpr std::array<int, arity> groups{0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 2};
   template <class T>
-  static T eval(const std::array<T, arity>& x) {
+  static constexpr T eval(const std::array<T, arity>& x) {
     return predicates::quadratic_form(x[6], x[7], x[8], x[9], x[10], x[11], T(x[3] - x[0]), T(x[4] - x[1]), T(x[5] - x[2])) - x[12];
   }
 };
@@ -50,8 +52,7 @@ const auto& exact_metrics(const EnclosedMesh3& m) { return m.mesh.metrics; }
 template <class Enclosed, class Kernel>
 class Length2 {
  public:
-  Length2(const Enclosed& m, int a, int b, int v)
-      : m_(m), a_(a), b_(b), v_(v), l2_(Kernel::template eval<FilterInterval>(inputs(points(m)[a], points(m)[b], m.metric[v], FilterInterval(0)))) {}
+  Length2(const Enclosed& m, int a, int b, int v) : m_(m), a_(a), b_(b), v_(v), l2_(enclosure()) {}
   // sign(ℓ² − c), ci enclosing c
   Sign compare(const Rational& c, const FilterInterval& ci) const {
     if (l2_.lo > ci.hi) return Sign::positive;
@@ -61,6 +62,20 @@ class Length2 {
   double approx() const { return std::sqrt(std::max(0.0, (l2_.lo + l2_.hi) / 2)); }
 
  private:
+  // The static bound when every input is a double (a tetrahedral mesh's from a binary file), else
+  // intervals.
+  FilterInterval enclosure() const {
+    const auto& p = points(m_);
+    const auto& M = m_.metric;
+    if constexpr (std::is_same_v<Enclosed, EnclosedMesh3>) {
+      if (m_.exact[a_] && m_.exact[b_] && m_.exact_metric[v_]) {
+        const auto x = inputs(m_.approx[a_], m_.approx[b_], predicates::Sym3<double>{M[v_].m11.lo, M[v_].m12.lo, M[v_].m13.lo, M[v_].m22.lo, M[v_].m23.lo, M[v_].m33.lo}, 0.0);
+        if (const auto l2 = predicates::static_enclosure<Kernel>(x)) return *l2;
+      }
+    }
+    return Kernel::template eval<FilterInterval>(inputs(p[a_], p[b_], M[v_], FilterInterval(0)));
+  }
+
   const Enclosed& m_;
   int a_, b_, v_;
   FilterInterval l2_;

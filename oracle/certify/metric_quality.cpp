@@ -3,6 +3,7 @@
 #include "oracle/certify/metric_checks.hpp"
 
 #include "predicates/filtered_sign.hpp"
+#include "predicates/orientation3.hpp"
 #include "predicates/point.hpp"
 
 #include <algorithm>
@@ -45,29 +46,50 @@ struct QualityKernel {
   }
 };
 
-// 432 det(M) D² − q₀³ S³, D = det[b − a; c − a; d − a] (six volumes), S = Σ ℓ_M² over the six
-// edges: positive or zero exactly when the tetrahedron's mean ratio 12 (3 V_M)^(2/3) / S, V_M =
-// √det M · |D|/6, is at least q₀ (the regular tetrahedron: D² = 1/2 for unit edges, S = 6, 1).
+// S = Σ ℓ_M² over the six edges of tetrahedron abcd: inputs a, b, c, d, then M (m11 m12 m13 m22
+// m23 m33). Degree 2 in the coordinates, 1 in the metric; `groups` for its static bound
+// (predicates::static_enclosure).
+struct FormSum3Kernel {
+  static constexpr std::size_t arity = 18;
+  static constexpr std::array<int, arity> groups{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1};
+  template <class T>
+  static constexpr T eval(const std::array<T, arity>& x) {
+    T S(0);
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j)
+        S = S + predicates::quadratic_form(x[12], x[13], x[14], x[15], x[16], x[17], T(x[3 * j] - x[3 * i]), T(x[3 * j + 1] - x[3 * i + 1]),
+                                           T(x[3 * j + 2] - x[3 * i + 2]));
+    return S;
+  }
+};
+
+// det M of a 3 × 3 metric (m11 m12 m13 m22 m23 m33).
+struct MetricDeterminant3Kernel {
+  static constexpr std::size_t arity = 6;
+  static constexpr std::array<int, arity> groups{1, 1, 1, 1, 1, 1};
+  template <class T>
+  static constexpr T eval(const std::array<T, arity>& x) {
+    return x[0] * (x[3] * x[5] - x[4] * x[4]) - x[1] * (x[1] * x[5] - x[4] * x[2]) + x[2] * (x[1] * x[4] - x[3] * x[2]);
+  }
+};
+
+// 432 det(M) D² − q₀³ S³, D = det[b − a; c − a; d − a] (six volumes, orientation3.hpp's
+// polynomial), S = Σ ℓ_M² over the six edges: positive or zero exactly when the tetrahedron's mean
+// ratio 12 (3 V_M)^(2/3) / S, V_M = √det M · |D|/6, is at least q₀ (the regular tetrahedron: D² =
+// 1/2 for unit edges, S = 6, 1).
 struct Quality3Kernel {
   static constexpr std::size_t arity = 19;
   // (432 det(M) D², S): the two parts, shared by the decision and the enclosure of q.
   template <class T>
   static std::pair<T, T> parts(const std::array<T, arity>& x) {
-    const std::array<T, 3> a{x[0], x[1], x[2]};
-    std::array<std::array<T, 3>, 4> p{a, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}, {x[9], x[10], x[11]}};
-    const T m11 = x[12], m12 = x[13], m13 = x[14], m22 = x[15], m23 = x[16], m33 = x[17];
-    const auto form = [&](const T& dx, const T& dy, const T& dz) {
-      return T(dx * (m11 * dx + m12 * dy + m13 * dz) + dy * (m12 * dx + m22 * dy + m23 * dz) + dz * (m13 * dx + m23 * dy + m33 * dz));
-    };
-    T S(0);
-    for (std::size_t i = 0; i < 4; ++i)
-      for (std::size_t j = i + 1; j < 4; ++j) S = S + form(T(p[j][0] - p[i][0]), T(p[j][1] - p[i][1]), T(p[j][2] - p[i][2]));
-    const T ux = p[1][0] - a[0], uy = p[1][1] - a[1], uz = p[1][2] - a[2];
-    const T vx = p[2][0] - a[0], vy = p[2][1] - a[1], vz = p[2][2] - a[2];
-    const T wx = p[3][0] - a[0], wy = p[3][1] - a[1], wz = p[3][2] - a[2];
-    const T D = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
-    const T det = m11 * (m22 * m33 - m23 * m23) - m12 * (m12 * m33 - m23 * m13) + m13 * (m12 * m23 - m22 * m13);
-    return {T(432) * det * D * D, S};
+    std::array<T, 12> p;
+    std::array<T, 18> pm;
+    std::array<T, 6> M;
+    for (std::size_t i = 0; i < 18; ++i) pm[i] = x[i];
+    for (std::size_t i = 0; i < 12; ++i) p[i] = x[i];
+    for (std::size_t i = 0; i < 6; ++i) M[i] = x[12 + i];
+    const T D = predicates::Orientation3Kernel::eval(p);
+    return {T(432) * MetricDeterminant3Kernel::eval(M) * D * D, FormSum3Kernel::eval(pm)};
   }
   template <class T>
   static T eval(const std::array<T, arity>& x) {
@@ -134,8 +156,7 @@ struct Tetrahedra {
   const std::array<int, 4>& vertices(std::size_t t) const { return m.mesh.tetrahedra[t]; }
   bool same_metric(int u, int v) const { return same_metric_of(m, u, v); }
   bool measurable(std::size_t t) const {  // flat: validity reports it; either orientation is measured (D² alone)
-    const auto& k = vertices(t);
-    return m.orientation(k[0], k[1], k[2], k[3]) != Sign::zero;
+    return m.orientation(t) != Sign::zero;
   }
   template <class T, class P, class Mt>
   static std::array<T, 19> arguments(const std::array<int, 4>& k, const std::vector<P>& x, const Mt& M, const T& q0k) {
@@ -147,9 +168,25 @@ struct Tetrahedra {
     a[12] = M.m11, a[13] = M.m12, a[14] = M.m13, a[15] = M.m22, a[16] = M.m23, a[17] = M.m33, a[18] = q0k;
     return a;
   }
-  // q = (432 det M D² / S³)^(1/3), from the kernel's parts.
+  // q = (432 det M D² / S³)^(1/3), from the kernel's parts: each part enclosed by its static
+  // bound when every input is a double (a binary file's), else the parts in intervals.
   FilterInterval quality(std::size_t t, int v) const {
-    const auto [top, S] = Quality3Kernel::parts(arguments(vertices(t), m.vertex, m.metric[static_cast<std::size_t>(v)], FilterInterval(0)));
+    const auto& k = vertices(t);
+    const auto vi = static_cast<std::size_t>(v);
+    if (m.exact_metric[vi] && std::all_of(k.begin(), k.end(), [&](int u) { return m.exact[static_cast<std::size_t>(u)] != 0; })) {
+      const auto x = arguments(k, m.approx, m.metric[vi], FilterInterval(0));
+      std::array<double, 18> pm;
+      for (std::size_t i = 0; i < 18; ++i) pm[i] = x[i].lo;  // points: lo = hi
+      std::array<double, 12> p;
+      std::array<double, 6> M;
+      for (std::size_t i = 0; i < 12; ++i) p[i] = pm[i];
+      for (std::size_t i = 0; i < 6; ++i) M[i] = pm[12 + i];
+      const auto D = predicates::static_enclosure<predicates::Orientation3Kernel>(p);
+      const auto S = predicates::static_enclosure<FormSum3Kernel>(pm);
+      const auto det = predicates::static_enclosure<MetricDeterminant3Kernel>(M);
+      if (D && S && det) return cbrt(FilterInterval(432) * *det * sqr(*D) / (*S * *S * *S));
+    }
+    const auto [top, S] = Quality3Kernel::parts(arguments(k, m.vertex, m.metric[vi], FilterInterval(0)));
     return cbrt(top / (S * S * S));
   }
   Sign decide(std::size_t t, int v, const FilterInterval& q0k, const Rational& q0k_exact) const {

@@ -54,7 +54,7 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
     const auto& v = tets[t];
     sign[t] = v[0] == v[1] || v[0] == v[2] || v[0] == v[3] || v[1] == v[2] || v[1] == v[3] || v[2] == v[3]
                   ? Sign::zero
-                  : m.orientation(v[0], v[1], v[2], v[3]);
+                  : m.orientation(t);
     positive += sign[t] == Sign::positive, negative += sign[t] == Sign::negative;
   }
   r.orientation = positive == 0 && negative == 0 ? "" : positive >= negative ? "positive" : "negative";

@@ -1,0 +1,205 @@
+#include "oracle/certify/quasi_cosphericity.hpp"
+
+#include "geometry/circumellipsoid.hpp"
+#include "predicates/quasi_cospherical.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <type_traits>
+
+namespace anisocert::oracle {
+namespace {
+
+// Two tetrahedra sharing a face: the face's three vertices, the opposite vertex of each.
+struct Configuration {
+  std::array<int, 5> vertex;  // a, b, c, d, e: abc shared, d in the first, e in the second
+  std::array<int, 2> tetrahedron;
+};
+
+std::vector<Configuration> configurations(const geometry::Mesh3<Rational>& mesh) {
+  struct Face {
+    std::array<int, 3> key;
+    int tetrahedron, opposite;
+    bool operator<(const Face& f) const { return key < f.key; }
+  };
+  std::vector<Face> faces;
+  faces.reserve(4 * mesh.tetrahedra.size());
+  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+    const auto& k = mesh.tetrahedra[t];
+    for (std::size_t i = 0; i < 4; ++i) {
+      std::array<int, 3> f{k[(i + 1) % 4], k[(i + 2) % 4], k[(i + 3) % 4]};
+      std::sort(f.begin(), f.end());
+      faces.push_back({f, static_cast<int>(t), k[i]});
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+  std::vector<Configuration> c;
+  // A face in exactly two tetrahedra (validity reports the others).
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i;
+    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
+    if (j == i + 2) {
+      const auto& f = faces[i].key;
+      c.push_back({{f[0], f[1], f[2], faces[i].opposite, faces[i + 1].opposite}, {faces[i].tetrahedron, faces[i + 1].tetrahedron}});
+    }
+    i = j;
+  }
+  return c;
+}
+
+// γ* from c₁ = tr GM, c₂, c₃ (the eigenvalues of GM by the trigonometric solution of the cubic,
+// all real): (Σ h⁺ / Σ |h⁻|)^(1/4) with c₁ made positive; +∞ when no eigenvalue is negative,
+// NaN beyond the doubles.
+double critical_distortion(double c1, double c2, double c3) {
+  if (c1 < 0) c1 = -c1, c3 = -c3;
+  const double shift = c1 / 3, p = c2 - c1 * c1 / 3, q = -2 * c1 * c1 * c1 / 27 + c1 * c2 / 3 - c3;
+  std::array<double, 3> h{shift, shift, shift};
+  if (p < 0) {
+    const double r = 2 * std::sqrt(-p / 3), cosine = std::clamp(3 * q / (p * r), -1.0, 1.0), theta = std::acos(cosine) / 3;
+    for (std::size_t k = 0; k < 3; ++k) h[k] = shift + r * std::cos(theta - 2 * std::numbers::pi * static_cast<double>(k) / 3);
+  }
+  double positive = 0, negative = 0;
+  for (const double x : h) (x > 0 ? positive : negative) += std::abs(x);
+  if (!std::isfinite(positive) || !std::isfinite(negative)) return NAN;
+  return negative > 0 ? std::sqrt(std::sqrt(positive / negative)) : INFINITY;
+}
+
+// LU Definition 3.9's radius-edge ratio of five points in metric M, in doubles: the least
+// M-circumradius of a non-flat four-point subset over the shortest M-distance.
+double radius_edge_ratio(const std::array<predicates::Point3<double>, 5>& p, const predicates::Sym3<double>& M) {
+  double r2 = INFINITY, d2 = INFINITY;
+  for (std::size_t skip = 0; skip < 5; ++skip) {
+    std::array<predicates::Point3<double>, 4> q;
+    for (std::size_t i = 0, j = 0; i < 5; ++i)
+      if (i != skip) q[j++] = p[i];
+    const double r = geometry::circumellipsoid(q[0], q[1], q[2], q[3], M).r2;
+    if (std::isfinite(r) && r > 0) r2 = std::min(r2, r);
+  }
+  for (std::size_t i = 0; i < 5; ++i)
+    for (std::size_t j = i + 1; j < 5; ++j) d2 = std::min(d2, predicates::quadratic_form(M, p[j].x - p[i].x, p[j].y - p[i].y, p[j].z - p[i].z));
+  return std::sqrt(r2 / d2);
+}
+
+predicates::Sym3<double> midpoint(const predicates::Sym3<FilterInterval>& M) {
+  const auto mid = [](const FilterInterval& x) { return x.lo / 2 + x.hi / 2; };
+  return {mid(M.m11), mid(M.m12), mid(M.m13), mid(M.m22), mid(M.m23), mid(M.m33)};
+}
+
+}  // namespace
+
+CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::optional<Rational>& gamma0, std::size_t described) {
+  const auto& mesh = m.mesh;
+  CosphericityReport r;
+  r.witnesses = WitnessList(described);
+  r.decided = gamma0.has_value();
+  const Rational k = gamma0 ? *gamma0 * *gamma0 * *gamma0 * *gamma0 - 1 : Rational(0);
+  const FilterInterval ki = enclose(k);
+  const auto same_metric = [&](int u, int v) {
+    const auto &a = m.metric[static_cast<std::size_t>(u)], &b = m.metric[static_cast<std::size_t>(v)];
+    if (a.m11.lo != b.m11.lo || a.m11.hi != b.m11.hi || a.m22.lo != b.m22.lo || a.m22.hi != b.m22.hi) return false;
+    return mesh.metrics[static_cast<std::size_t>(u)] == mesh.metrics[static_cast<std::size_t>(v)];
+  };
+  for (const Configuration& c : configurations(mesh)) {
+    if (m.orientation(static_cast<std::size_t>(c.tetrahedron[0])) == Sign::zero || m.orientation(static_cast<std::size_t>(c.tetrahedron[1])) == Sign::zero)
+      continue;
+    ++r.configurations;
+    std::array<FilterInterval, 22> xi;
+    std::array<predicates::Point3<double>, 5> approx;
+    for (std::size_t i = 0; i < 5; ++i) {
+      const auto vi = static_cast<std::size_t>(c.vertex[i]);
+      const auto& p = m.vertex[vi];
+      xi[3 * i] = p.x, xi[3 * i + 1] = p.y, xi[3 * i + 2] = p.z;
+      approx[i] = m.approx[vi];
+    }
+    xi[21] = ki;
+    double least = INFINITY;
+    bool counted = false, measured = true, exactly = false;
+    for (std::size_t i = 0; i < 5; ++i) {
+      const int v = c.vertex[i];
+      if (std::any_of(c.vertex.begin(), c.vertex.begin() + static_cast<std::ptrdiff_t>(i), [&](int u) { return same_metric(u, v); })) continue;
+      const auto& M = m.metric[static_cast<std::size_t>(v)];
+      xi[15] = M.m11, xi[16] = M.m12, xi[17] = M.m13, xi[18] = M.m22, xi[19] = M.m23, xi[20] = M.m33;
+      // The sign of kernel K on this configuration in M_v: with doubles only (point enclosures),
+      // the double evaluation checked for rounding, intervals, then expansions (a lattice's zeros
+      // are decided at the first); else intervals, then rationals.
+      const auto sign_of = [&]<class K>(K) {
+        std::array<FilterInterval, K::arity> in;
+        for (std::size_t j = 0; j < K::arity; ++j) in[j] = xi[j];
+        if (std::all_of(in.begin(), in.end(), [](const FilterInterval& e) { return e.lo == e.hi; })) {
+          std::array<double, K::arity> d;
+          for (std::size_t j = 0; j < K::arity; ++j) d[j] = in[j].lo;
+          return predicates::filtered_sign_slow<K>(d);
+        }
+        return predicates::interval_then_exact<K>(in, [&] {
+          std::array<Rational, K::arity> q;
+          for (std::size_t j = 0; j < 5 && 3 * j < K::arity; ++j) {
+            const auto& p = mesh.vertices[static_cast<std::size_t>(c.vertex[j])];
+            q[3 * j] = p.x, q[3 * j + 1] = p.y, q[3 * j + 2] = p.z;
+          }
+          const auto& N = mesh.metrics[static_cast<std::size_t>(v)];
+          q[15] = N.m11, q[16] = N.m12, q[17] = N.m13, q[18] = N.m22, q[19] = N.m23, q[20] = N.m33;
+          if constexpr (K::arity == 22) q[21] = k;
+          return q;
+        });
+      };
+      // e on the M_v-sphere: the static filter when every input is a double, else as the others.
+      const bool doubles = m.exact_metric[static_cast<std::size_t>(v)] &&
+                           std::all_of(c.vertex.begin(), c.vertex.end(), [&](int u) { return m.exact[static_cast<std::size_t>(u)] != 0; });
+      std::array<double, 21> x;
+      for (std::size_t j = 0; j < 5; ++j) x[3 * j] = approx[j].x, x[3 * j + 1] = approx[j].y, x[3 * j + 2] = approx[j].z;
+      const auto Md = midpoint(M);
+      x[15] = Md.m11, x[16] = Md.m12, x[17] = Md.m13, x[18] = Md.m22, x[19] = Md.m23, x[20] = Md.m33;
+      const Sign on = doubles ? predicates::filtered_sign<predicates::InSphereKernel>(x) : sign_of(predicates::InSphereKernel{});
+      double critical = 1;
+      if (on == Sign::zero) {
+        exactly = true;
+      } else {
+        const auto [c2, c3] = predicates::lifted_gram_invariants(x);
+        critical = critical_distortion(predicates::InSphereKernel::eval(x), c2, c3);
+      }
+      if (std::isnan(critical)) measured = false;
+      else least = std::min(least, critical);
+      if (!gamma0 || counted) continue;
+      // The kernels share G: its invariants enclosed once, each kernel's sign read off them when
+      // they decide it (an enclosure of the same polynomial), else the kernel's own evaluation.
+      std::array<FilterInterval, 21> x21;
+      for (std::size_t j = 0; j < 21; ++j) x21[j] = xi[j];
+      const FilterInterval c1 = predicates::InSphereKernel::eval(x21);
+      const auto [c2, c3] = predicates::lifted_gram_invariants(x21);
+      const FilterInterval A = predicates::one_negative_polynomial(c1, c2, c3, ki), B = predicates::two_negative_polynomial(c1, c2, c3, ki);
+      const auto shared_sign = [&, c2 = c2, c3 = c3]<class K>(K kernel) {
+        std::optional<Sign> known;
+        if constexpr (std::is_same_v<K, predicates::InSphereKernel>) known = c1.sign();
+        if constexpr (std::is_same_v<K, predicates::LiftedGramSecondKernel>) known = c2.sign();
+        if constexpr (std::is_same_v<K, predicates::LiftedGramThirdKernel>) known = c3.sign();
+        if constexpr (std::is_same_v<K, predicates::CosphericalOneNegativeKernel>) known = A.sign();
+        if constexpr (std::is_same_v<K, predicates::CosphericalTwoNegativeKernel>) known = B.sign();
+        return known ? *known : sign_of(kernel);
+      };
+      const Sign s = predicates::quasi_cospherical_from(shared_sign);
+      if (s == Sign::negative) continue;
+      counted = true;
+      if (s == Sign::zero) {
+        ++r.at_boundary;
+        continue;
+      }
+      ++r.quasi_cospherical;
+      const double ratio = radius_edge_ratio(approx, Md);
+      if (ratio < r.least_radius_edge) r.least_radius_edge = ratio, r.least_radius_edge_tetrahedra[0] = c.tetrahedron[0], r.least_radius_edge_tetrahedra[1] = c.tetrahedron[1];
+      r.witnesses.add(v, c.tetrahedron[0], c.tetrahedron[1], [&] {
+        return "tetrahedra " + std::to_string(c.tetrahedron[0]) + " and " + std::to_string(c.tetrahedron[1]) + " (vertices " +
+               std::to_string(c.vertex[0]) + " " + std::to_string(c.vertex[1]) + " " + std::to_string(c.vertex[2]) + " " +
+               std::to_string(c.vertex[3]) + " " + std::to_string(c.vertex[4]) + ") are γ₀-cospherical in the metric of vertex " +
+               std::to_string(v) + " (critical distortion about " + std::to_string(critical) + ", radius-edge ratio about " + std::to_string(ratio) + ")";
+      });
+    }
+    if (!measured) ++r.unmeasured;
+    if (exactly) ++r.cospherical;
+    if (least < r.least_critical) r.least_critical = least, r.least_tetrahedra[0] = c.tetrahedron[0], r.least_tetrahedra[1] = c.tetrahedron[1];
+  }
+  return r;
+}
+
+}  // namespace anisocert::oracle
