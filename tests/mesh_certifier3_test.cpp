@@ -395,6 +395,35 @@ TEST(MeshCertifier3, SliverMeasureOfTheKuhnCube) {
   EXPECT_FALSE(certify_mesh3(delaunay, o).cosphericity.has_value());
 }
 
+// The five metrics of a configuration each asked (a second reader's finding: a boundary answer in
+// the first vertex's metric hid a strict one in the next): two tetrahedra across the face of box
+// corners (0,0,1), (0,2,0), (2,0,1), apexes (0,2,1) and (0,0,0); at γ₀ = 3/2 they are exactly at
+// the boundary in vertex 0's metric (QuasiCospherical.AnExactTieIsTheBoundary) and, the five on
+// one sphere, strictly cospherical in I, the other vertices' metric.
+TEST(MeshCertifier3, SliverMeasureAsksEveryVertexMetric) {
+  Mesh3 m;
+  m.vertices = {{0, 0, 1}, {0, 2, 0}, {0, 2, 1}, {2, 0, 1}, {0, 0, 0}};
+  m.tetrahedra = {{0, 1, 3, 2}, {0, 1, 3, 4}};
+  const Sym3<Rational> tie{Rational(162, 227), 0, Rational(-65, 227), Rational(97, 227), Rational(65, 227), Rational(97, 227)};
+  m.metrics = {tie, {1, 0, 0, 1, 0, 1}, {1, 0, 0, 1, 0, 1}, {1, 0, 0, 1, 0, 1}, {1, 0, 0, 1, 0, 1}};
+  Certify3Options o;
+  o.valid = false;
+  o.gamma0 = Rational(3, 2);
+  const Certify3Report r = certify_mesh3(m, o);
+  ASSERT_TRUE(r.cosphericity.has_value());
+  EXPECT_EQ(r.cosphericity->configurations, 1u);
+  EXPECT_EQ(r.cosphericity->quasi_cospherical, 1u);
+  EXPECT_EQ(r.cosphericity->at_boundary, 0u);
+  EXPECT_EQ(r.cosphericity->cospherical, 1u);
+  ASSERT_EQ(r.cosphericity->witnesses.count(), 1u);
+  EXPECT_EQ(r.cosphericity->witnesses.places()[0].vertex, 1);  // the first metric that makes it strict
+  m.metrics.assign(5, tie);  // only the tied metric: the boundary
+  const Certify3Report t = certify_mesh3(m, o);
+  EXPECT_EQ(t.cosphericity->quasi_cospherical, 0u);
+  EXPECT_EQ(t.cosphericity->at_boundary, 1u);
+  EXPECT_EQ(t.cosphericity->cospherical, 0u);
+}
+
 namespace {
 
 // A 2 × 2 × 2 Kuhn grid with every vertex moved at random and a random metric LLᵀ per vertex,

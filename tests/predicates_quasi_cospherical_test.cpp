@@ -197,7 +197,9 @@ TEST(QuasiCospherical, DecisionAgreesWithAnExplicitOptimalMetric) {
       continue;
     }
     const double critical_g2 = std::sqrt(positive / negative);  // γ*² = (P/Q)^(1/2)
-    for (const double factor : {1.1, 1 / 1.1}) {
+    // 10% either side, and 0.1%: the two-negative polynomial B's terms in c₂ and c₃ move the
+    // threshold by less than 2% (a second reader's finding), which only the narrow margin sees.
+    for (const double factor : {1.1, 1 / 1.1, 1.001, 1 / 1.001}) {
       const double g2d = critical_g2 * factor;
       if (g2d <= 1.0001 || g2d > 1e6) continue;
       const Rational g2(g2d);
@@ -210,8 +212,8 @@ TEST(QuasiCospherical, DecisionAgreesWithAnExplicitOptimalMetric) {
     }
   }
   // Both answers met often (the test must be able to fail either way).
-  EXPECT_GT(cospherical, 100);
-  EXPECT_GT(not_cospherical, 100);
+  EXPECT_GT(cospherical, 200);
+  EXPECT_GT(not_cospherical, 200);
 }
 
 // Five points on one M-sphere: γ₀-cospherical for every γ₀ > 1 (e is on the sphere); five
@@ -236,6 +238,19 @@ TEST(QuasiCospherical, DegenerateConfigurations) {
 
   for (auto& p : c.p) p.z = 0;
   EXPECT_EQ(decide(c, Rational(2)), Sign::zero);
+}
+
+// An exact tie of the one-negative polynomial (a second reader's configuration): the corners
+// (0,0,1), (0,2,0), (2,0,1), (0,2,1) and (0,0,0) of a box in M = (162, 0, −65, 97, 65, 97)/227
+// have A = 0 at γ₀ = 3/2: the boundary answer there, cospherical just above, not just below.
+TEST(QuasiCospherical, AnExactTieIsTheBoundary) {
+  Case c;
+  c.p = {Point3<Rational>{0, 0, 1}, {0, 2, 0}, {2, 0, 1}, {0, 2, 1}, {0, 0, 0}};
+  c.M = Sym3<Rational>{Rational(162, 227), 0, Rational(-65, 227), Rational(97, 227), Rational(65, 227), Rational(97, 227)};
+  const Rational g(3, 2), eps(1, 1000000000);
+  EXPECT_EQ(decide(c, g * g), Sign::zero);
+  EXPECT_EQ(decide(c, (g + eps) * (g + eps)), Sign::positive);
+  EXPECT_EQ(decide(c, (g - eps) * (g - eps)), Sign::negative);
 }
 
 // Every kernel's filtered sign (double and rational inputs, intervals first) equals the exact one.

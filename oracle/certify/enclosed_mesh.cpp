@@ -3,9 +3,23 @@
 #include "predicates/orientation.hpp"
 #include "predicates/orientation3.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <unordered_map>
 
 namespace anisocert::oracle {
+namespace {
+
+struct EndsHash {
+  std::size_t operator()(const std::array<double, 12>& a) const {
+    std::size_t h = 0;
+    for (const double x : a) h = h * 1000003u ^ std::hash<double>{}(x);
+    return h;
+  }
+};
+
+}  // namespace
 
 double approximate(const Rational& q) { return mpq_get_d(q.backend().data()); }
 
@@ -56,6 +70,20 @@ EnclosedMesh3::EnclosedMesh3(const geometry::Mesh3<Rational>& m) : mesh(m) {
     const auto& e = metric.back();
     exact_metric.push_back(e.m11.lo == e.m11.hi && e.m12.lo == e.m12.hi && e.m13.lo == e.m13.hi && e.m22.lo == e.m22.hi &&
                            e.m23.lo == e.m23.hi && e.m33.lo == e.m33.hi);
+  }
+  // Classes of equal metrics: candidates share their enclosures' twelve ends; equal exactly.
+  std::unordered_map<std::array<double, 12>, std::vector<int>, EndsHash> representatives;
+  metric_class.reserve(metric.size());
+  for (std::size_t i = 0; i < metric.size(); ++i) {
+    const auto& e = metric[i];
+    auto& bucket = representatives[{e.m11.lo, e.m11.hi, e.m12.lo, e.m12.hi, e.m13.lo, e.m13.hi, e.m22.lo, e.m22.hi, e.m23.lo, e.m23.hi, e.m33.lo, e.m33.hi}];
+    const auto same = std::find_if(bucket.begin(), bucket.end(), [&](int r) { return m.metrics[static_cast<std::size_t>(r)] == m.metrics[i]; });
+    if (same != bucket.end()) {
+      metric_class.push_back(metric_class[static_cast<std::size_t>(*same)]);
+    } else {
+      metric_class.push_back(static_cast<int>(i));
+      bucket.push_back(static_cast<int>(i));
+    }
   }
   orientations.reserve(m.tetrahedra.size());
   for (const auto& t : m.tetrahedra) orientations.push_back(orientation(t[0], t[1], t[2], t[3]));

@@ -35,10 +35,14 @@ struct EnclosedMesh3 {
   Sign orientation(int a, int b, int c, int d) const;
   // The orientation of tetrahedron t of the mesh, computed once by the constructor.
   Sign orientation(std::size_t t) const { return orientations[t]; }
+  // Whether vertices u and v have exactly the same metric (a constant field: all do), from classes
+  // of equal metrics formed once by the constructor (the enclosures hashed, the rationals compared).
+  bool same_metric(int u, int v) const { return metric_class[static_cast<std::size_t>(u)] == metric_class[static_cast<std::size_t>(v)]; }
 
   const geometry::Mesh3<Rational>& mesh;
   std::vector<char> exact;                                  // mesh.vertices[i]'s coordinates are doubles
   std::vector<char> exact_metric;                           // mesh.metrics[i]'s entries are doubles
+  std::vector<int> metric_class;                            // equal for vertices with equal metrics
   std::vector<Sign> orientations;                           // of each tetrahedron
   std::vector<predicates::Point3<FilterInterval>> vertex;   // encloses mesh.vertices[i]
   std::vector<predicates::Sym3<FilterInterval>> metric;     // encloses mesh.metrics[i]

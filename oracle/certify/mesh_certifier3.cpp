@@ -147,7 +147,7 @@ void check_lu_bounds(const EnclosedMesh3& m, const Certify3Options& o, Certify3R
       for (std::size_t i = 0; i < 4; ++i) {
         const int v = t[i];
         const auto vi = static_cast<std::size_t>(v);
-        if (std::any_of(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(i), [&](int u) { return mesh.metrics[static_cast<std::size_t>(u)] == mesh.metrics[vi]; }))
+        if (std::any_of(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(i), [&](int u) { return m.same_metric(u, v); }))
           continue;  // the same metric, the same ratio
         const auto at = [&](auto& points, std::size_t k) { return points[static_cast<std::size_t>(t[k])]; };
         const I e = radius_edge_squared(std::array{at(m.vertex, 0), at(m.vertex, 1), at(m.vertex, 2), at(m.vertex, 3)}, m.metric[vi]);
@@ -279,7 +279,7 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
       for (std::size_t i = 0; i < 4 && !violated; ++i) {
         const int v = t[i];
         // A metric equal to an earlier vertex's (a constant field) asks the same question again.
-        const auto same = [&](std::size_t j) { return mesh.metrics[static_cast<std::size_t>(t[j])] == mesh.metrics[static_cast<std::size_t>(v)]; };
+        const auto same = [&](std::size_t j) { return m.same_metric(t[j], v); };
         if ((i > 0 && same(0)) || (i > 1 && same(1)) || (i > 2 && same(2))) continue;
         const auto& Mv = m.metric[static_cast<std::size_t>(v)];
         const auto ellipsoid = enclose_ellipsoid(m, t, Mv);

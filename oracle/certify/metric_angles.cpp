@@ -179,7 +179,7 @@ struct Tetrahedra {
     if (k % 2 == 0) return false;
     const auto& v = m.mesh.tetrahedra[t];
     const auto& e = edges[k / 2];
-    return m.mesh.metrics[static_cast<std::size_t>(v[static_cast<std::size_t>(e[0])])] == m.mesh.metrics[static_cast<std::size_t>(v[static_cast<std::size_t>(e[1])])];
+    return m.same_metric(v[static_cast<std::size_t>(e[0])], v[static_cast<std::size_t>(e[1])]);
   }
   Dihedral angle(std::size_t t, std::size_t k) const {
     const auto& v = m.mesh.tetrahedra[t];

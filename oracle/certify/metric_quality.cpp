@@ -108,9 +108,9 @@ FilterInterval cbrt(const FilterInterval& x) {
 // Per dimension, what the one loop below asks of an element: whether it can be measured, its
 // vertices, the enclosure of its quality in one vertex's metric, and the exact decision of
 // quality ≥ q₀ (the sign of the kernel; q0k = q₀² in 2D, q₀³ in 3D).
-// Whether vertices u and v of m have the same metric, exactly (the enclosures first).
-template <class Mesh>
-bool same_metric_of(const Mesh& m, int u, int v) {
+// Whether vertices u and v of a triangle mesh have the same metric, exactly (the enclosures
+// first; a tetrahedral mesh keeps classes of equal metrics, EnclosedMesh3::same_metric).
+bool same_metric_of(const EnclosedMesh& m, int u, int v) {
   const auto &a = m.metric[static_cast<std::size_t>(u)], &b = m.metric[static_cast<std::size_t>(v)];
   if (a.m11.lo != b.m11.lo || a.m11.hi != b.m11.hi || a.m22.lo != b.m22.lo || a.m22.hi != b.m22.hi) return false;
   return m.mesh.metrics[static_cast<std::size_t>(u)] == m.mesh.metrics[static_cast<std::size_t>(v)];
@@ -154,7 +154,7 @@ struct Tetrahedra {
   static constexpr int power = 3;
   std::size_t size() const { return m.mesh.tetrahedra.size(); }
   const std::array<int, 4>& vertices(std::size_t t) const { return m.mesh.tetrahedra[t]; }
-  bool same_metric(int u, int v) const { return same_metric_of(m, u, v); }
+  bool same_metric(int u, int v) const { return m.same_metric(u, v); }
   bool measurable(std::size_t t) const {  // flat: validity reports it; either orientation is measured (D² alone)
     return m.orientation(t) != Sign::zero;
   }

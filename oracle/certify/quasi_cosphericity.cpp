@@ -50,10 +50,11 @@ std::vector<Configuration> configurations(const geometry::Mesh3<Rational>& mesh)
 }
 
 // γ* from c₁ = tr GM, c₂, c₃ (the eigenvalues of GM by the trigonometric solution of the cubic,
-// all real): (Σ h⁺ / Σ |h⁻|)^(1/4) with c₁ made positive; +∞ when no eigenvalue is negative,
-// NaN beyond the doubles.
-double critical_distortion(double c1, double c2, double c3) {
-  if (c1 < 0) c1 = -c1, c3 = -c3;
+// all real) and c₁'s exact sign s: (Σ h⁺ / Σ |h⁻|)^(1/4) with c₁ made positive by s (not by its
+// approximation, whose sign a nearly cospherical configuration may get wrong), at least 1 as γ*
+// is; +∞ when no eigenvalue is negative, NaN beyond the doubles.
+double critical_distortion(double c1, double c2, double c3, Sign s) {
+  if (s == Sign::negative) c1 = -c1, c3 = -c3;
   const double shift = c1 / 3, p = c2 - c1 * c1 / 3, q = -2 * c1 * c1 * c1 / 27 + c1 * c2 / 3 - c3;
   std::array<double, 3> h{shift, shift, shift};
   if (p < 0) {
@@ -63,7 +64,7 @@ double critical_distortion(double c1, double c2, double c3) {
   double positive = 0, negative = 0;
   for (const double x : h) (x > 0 ? positive : negative) += std::abs(x);
   if (!std::isfinite(positive) || !std::isfinite(negative)) return NAN;
-  return negative > 0 ? std::sqrt(std::sqrt(positive / negative)) : INFINITY;
+  return negative > 0 ? std::max(1.0, std::sqrt(std::sqrt(positive / negative))) : INFINITY;
 }
 
 // LU Definition 3.9's radius-edge ratio of five points in metric M, in doubles: the least
@@ -96,11 +97,6 @@ CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::o
   r.decided = gamma0.has_value();
   const Rational k = gamma0 ? *gamma0 * *gamma0 * *gamma0 * *gamma0 - 1 : Rational(0);
   const FilterInterval ki = enclose(k);
-  const auto same_metric = [&](int u, int v) {
-    const auto &a = m.metric[static_cast<std::size_t>(u)], &b = m.metric[static_cast<std::size_t>(v)];
-    if (a.m11.lo != b.m11.lo || a.m11.hi != b.m11.hi || a.m22.lo != b.m22.lo || a.m22.hi != b.m22.hi) return false;
-    return mesh.metrics[static_cast<std::size_t>(u)] == mesh.metrics[static_cast<std::size_t>(v)];
-  };
   for (const Configuration& c : configurations(mesh)) {
     if (m.orientation(static_cast<std::size_t>(c.tetrahedron[0])) == Sign::zero || m.orientation(static_cast<std::size_t>(c.tetrahedron[1])) == Sign::zero)
       continue;
@@ -115,10 +111,12 @@ CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::o
     }
     xi[21] = ki;
     double least = INFINITY;
-    bool counted = false, measured = true, exactly = false;
+    // `counted`: γ₀-cospherical in some metric (decided strictly); `boundary`: exactly at γ₀ in
+    // some metric, which counts only when no metric makes it strict.
+    bool counted = false, boundary = false, measured = true, exactly = false;
     for (std::size_t i = 0; i < 5; ++i) {
       const int v = c.vertex[i];
-      if (std::any_of(c.vertex.begin(), c.vertex.begin() + static_cast<std::ptrdiff_t>(i), [&](int u) { return same_metric(u, v); })) continue;
+      if (std::any_of(c.vertex.begin(), c.vertex.begin() + static_cast<std::ptrdiff_t>(i), [&](int u) { return m.same_metric(u, v); })) continue;
       const auto& M = m.metric[static_cast<std::size_t>(v)];
       xi[15] = M.m11, xi[16] = M.m12, xi[17] = M.m13, xi[18] = M.m22, xi[19] = M.m23, xi[20] = M.m33;
       // The sign of kernel K on this configuration in M_v: with doubles only (point enclosures),
@@ -157,7 +155,7 @@ CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::o
         exactly = true;
       } else {
         const auto [c2, c3] = predicates::lifted_gram_invariants(x);
-        critical = critical_distortion(predicates::InSphereKernel::eval(x), c2, c3);
+        critical = critical_distortion(predicates::InSphereKernel::eval(x), c2, c3, on);
       }
       if (std::isnan(critical)) measured = false;
       else least = std::min(least, critical);
@@ -180,11 +178,11 @@ CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::o
       };
       const Sign s = predicates::quasi_cospherical_from(shared_sign);
       if (s == Sign::negative) continue;
-      counted = true;
       if (s == Sign::zero) {
-        ++r.at_boundary;
+        boundary = true;
         continue;
       }
+      counted = true;
       ++r.quasi_cospherical;
       const double ratio = radius_edge_ratio(approx, Md);
       if (ratio < r.least_radius_edge) r.least_radius_edge = ratio, r.least_radius_edge_tetrahedra[0] = c.tetrahedron[0], r.least_radius_edge_tetrahedra[1] = c.tetrahedron[1];
@@ -195,6 +193,7 @@ CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::o
                std::to_string(v) + " (critical distortion about " + std::to_string(critical) + ", radius-edge ratio about " + std::to_string(ratio) + ")";
       });
     }
+    if (boundary && !counted) ++r.at_boundary;
     if (!measured) ++r.unmeasured;
     if (exactly) ++r.cospherical;
     if (least < r.least_critical) r.least_critical = least, r.least_tetrahedra[0] = c.tetrahedron[0], r.least_tetrahedra[1] = c.tetrahedron[1];

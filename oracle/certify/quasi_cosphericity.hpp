@@ -29,7 +29,8 @@ struct CosphericityReport {
   int least_tetrahedra[2] = {-1, -1};
   // With γ₀:
   bool decided = false;
-  std::size_t quasi_cospherical = 0, at_boundary = 0;  // exact counts
+  std::size_t quasi_cospherical = 0;  // exact: γ₀-cospherical in some vertex's metric
+  std::size_t at_boundary = 0;        // exact: at γ₀ exactly in some vertex's metric, strictly in none
   double least_radius_edge = std::numeric_limits<double>::infinity();  // Definition 3.9, approximate
   int least_radius_edge_tetrahedra[2] = {-1, -1};
   WitnessList witnesses;  // vertex (the metric), tetrahedron, the other tetrahedron
