@@ -18,9 +18,19 @@ struct Circumellipsoid {
   T r2;                // the squared M-radius
 };
 
+// Cramer's determinants of the centre: x_k = numerator[k] / denominator, polynomials in the
+// coordinates (differences from a) and M: degrees 4 and 3 in the coordinates, 3 in the metric
+// (so that a certifier can enclose them by a static filter's bound, predicates::static_enclosure).
 template <class T>
-Circumellipsoid<T> circumellipsoid(const predicates::Point3<T>& a, const predicates::Point3<T>& b, const predicates::Point3<T>& c,
-                                   const predicates::Point3<T>& d, const predicates::Sym3<T>& M) {
+struct CramerDeterminants {
+  std::array<T, 3> numerator;
+  T denominator;
+};
+
+template <class T>
+constexpr CramerDeterminants<T> circumcentre_determinants(const predicates::Point3<T>& a, const predicates::Point3<T>& b,
+                                                          const predicates::Point3<T>& c, const predicates::Point3<T>& d,
+                                                          const predicates::Sym3<T>& M) {
   const auto times = [&](const std::array<T, 3>& v) {
     return std::array<T, 3>{M.m11 * v[0] + M.m12 * v[1] + M.m13 * v[2], M.m12 * v[0] + M.m22 * v[1] + M.m23 * v[2],
                             M.m13 * v[0] + M.m23 * v[1] + M.m33 * v[2]};
@@ -38,16 +48,31 @@ Circumellipsoid<T> circumellipsoid(const predicates::Point3<T>& a, const predica
     A[i] = {T(Me[0] * T(2)), T(Me[1] * T(2)), T(Me[2] * T(2))};
     rhs[i] = e[0] * Me[0] + e[1] * Me[1] + e[2] * Me[2];
   }
-  const T D = det3(A);
-  Circumellipsoid<T> r;
+  CramerDeterminants<T> r;
+  r.denominator = det3(A);
   for (std::size_t k = 0; k < 3; ++k) {
     auto Ak = A;
     for (std::size_t i = 0; i < 3; ++i) Ak[i][k] = rhs[i];
-    r.x[k] = det3(Ak) / D;
+    r.numerator[k] = det3(Ak);
   }
-  const auto Mx = times(r.x);
+  return r;
+}
+
+// The ellipsoid from the determinants (or enclosures of them).
+template <class T>
+Circumellipsoid<T> circumellipsoid_of(const CramerDeterminants<T>& c, const predicates::Sym3<T>& M) {
+  Circumellipsoid<T> r;
+  for (std::size_t k = 0; k < 3; ++k) r.x[k] = c.numerator[k] / c.denominator;
+  const std::array<T, 3> Mx{M.m11 * r.x[0] + M.m12 * r.x[1] + M.m13 * r.x[2], M.m12 * r.x[0] + M.m22 * r.x[1] + M.m23 * r.x[2],
+                            M.m13 * r.x[0] + M.m23 * r.x[1] + M.m33 * r.x[2]};
   r.r2 = r.x[0] * Mx[0] + r.x[1] * Mx[1] + r.x[2] * Mx[2];
   return r;
+}
+
+template <class T>
+Circumellipsoid<T> circumellipsoid(const predicates::Point3<T>& a, const predicates::Point3<T>& b, const predicates::Point3<T>& c,
+                                   const predicates::Point3<T>& d, const predicates::Sym3<T>& M) {
+  return circumellipsoid_of(circumcentre_determinants(a, b, c, d, M), M);
 }
 
 }  // namespace anisocert::geometry

@@ -214,11 +214,13 @@ template <class K, const ErrorModel& model>
 // An enclosure of K's value at double inputs from the static stage: the double evaluation ± the
 // static bound (widened by an ulp for the rounding of those two sums), as cheap as that
 // evaluation; nothing outside the stage's range. For measured values, where a sign is not enough.
-template <class K>
-std::optional<FilterInterval> static_enclosure(const std::array<double, K::arity>& x) {
+// A Translatable kernel is evaluated on the rounded differences, with their model's bound (see
+// below), so that the enclosure's width scales with the element, not with its distance from 0.
+template <class K, const ErrorModel& model>
+std::optional<FilterInterval> static_enclosure_with(const std::array<double, K::arity>& x) {
   const std::array<double, magnitude_groups> max = group_maxima<K>(x);
   if (!in_static_range<K>(max)) return std::nullopt;
-  const double value = K::template eval<double>(x), bound = error_bound<static_error_model<K>>(max);
+  const double value = K::template eval<double>(x), bound = error_bound<model>(max);
   if (!std::isfinite(value)) return std::nullopt;
   return FilterInterval::widen(value - bound, value + bound);
 }
@@ -233,6 +235,17 @@ std::optional<Sign> translated_static_sign(const std::array<double, K::arity>& x
     return static_sign<K, translated_error_model<K>>(t);
   }
   return std::nullopt;
+}
+
+template <class K>
+std::optional<FilterInterval> static_enclosure(const std::array<double, K::arity>& x) {
+  if constexpr (Translatable<K>) {
+    std::array<double, K::arity> t;
+    for (std::size_t i = 0; i < K::arity; ++i) t[i] = K::origin[i] < 0 ? x[i] : x[i] - x[K::origin[i]];
+    return static_enclosure_with<K, translated_error_model<K>>(t);
+  } else {
+    return static_enclosure_with<K, static_error_model<K>>(x);
+  }
 }
 
 // The translated, interval and exact stages, out of line: rare, and large.

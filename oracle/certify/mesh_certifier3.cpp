@@ -88,12 +88,54 @@ struct Ellipsoid {
   std::array<double, 3> lo, hi;
 };
 
-// The enclosure, or nothing when intervals cannot give one. The centre is a + x with
+// Cramer's determinants of the M-circumcentre (geometry/circumellipsoid.hpp) as kernels, for
+// their static enclosures when every input is a double: inputs a, b, c, d, then M; component
+// k < 3 a numerator, 3 the denominator. Degrees 4/3 (numerator) and 3/3 in the coordinates' and
+// the metric's groups, inside the static range; translatable (differences from a).
+template <int k>
+struct CircumcentreKernel {
+  static constexpr std::size_t arity = 18;
+  static constexpr std::array<int, arity> groups{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1};
+  static constexpr std::array<int, arity> origin{0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, -1, -1, -1, -1, -1, -1};
+  template <class T>
+  static constexpr T eval(const std::array<T, arity>& x) {
+    const auto point = [&](std::size_t i) { return predicates::Point3<T>{x[3 * i], x[3 * i + 1], x[3 * i + 2]}; };
+    const auto c = geometry::circumcentre_determinants(point(0), point(1), point(2), point(3),
+                                                       predicates::Sym3<T>{x[12], x[13], x[14], x[15], x[16], x[17]});
+    if constexpr (k < 3)
+      return c.numerator[k];
+    else
+      return c.denominator;
+  }
+};
+
+// The M-circumellipsoid from the static enclosures of Cramer's determinants when every input is a
+// double (a binary file's); nothing when an input is not one, or the denominator's enclosure holds 0.
+std::optional<geometry::Circumellipsoid<I>> static_circumellipsoid(const EnclosedMesh3& m, const std::array<int, 4>& t, int v) {
+  const auto vi = static_cast<std::size_t>(v);
+  if (!m.exact_metric[vi] || !std::all_of(t.begin(), t.end(), [&](int u) { return m.exact[static_cast<std::size_t>(u)] != 0; })) return std::nullopt;
+  const auto& M = m.metric[vi];
+  std::array<double, 18> x;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto& p = m.approx[static_cast<std::size_t>(t[i])];
+    x[3 * i] = p.x, x[3 * i + 1] = p.y, x[3 * i + 2] = p.z;
+  }
+  x[12] = M.m11.lo, x[13] = M.m12.lo, x[14] = M.m13.lo, x[15] = M.m22.lo, x[16] = M.m23.lo, x[17] = M.m33.lo;
+  const auto n0 = predicates::static_enclosure<CircumcentreKernel<0>>(x), n1 = predicates::static_enclosure<CircumcentreKernel<1>>(x),
+             n2 = predicates::static_enclosure<CircumcentreKernel<2>>(x), d = predicates::static_enclosure<CircumcentreKernel<3>>(x);
+  if (!n0 || !n1 || !n2 || !d || d->has_zero()) return std::nullopt;
+  return geometry::circumellipsoid_of(geometry::CramerDeterminants<I>{{*n0, *n1, *n2}, *d}, M);
+}
+
+// The enclosure, or nothing when intervals cannot give one (the static enclosures of Cramer's
+// determinants when every input is a double, else intervals throughout). The centre is a + x with
 // 2(q − a)ᵀ M x = (q − a)ᵀ M (q − a) for q = b, c, d; r² = xᵀMx; the ellipsoid
 // {y : (y − c)ᵀ M (y − c) ≤ r²} spans c_i ± √(r² (M⁻¹)_ii) along axis i.
-std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::array<int, 4>& t, const predicates::Sym3<I>& M) {
+std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::array<int, 4>& t, int v) {
+  const predicates::Sym3<I>& M = m.metric[static_cast<std::size_t>(v)];
   const auto at = [&](std::size_t i) -> const predicates::Point3<I>& { return m.vertex[static_cast<std::size_t>(t[i])]; };
-  const auto c = geometry::circumellipsoid(at(0), at(1), at(2), at(3), M);  // an unsure determinant: the whole line
+  const auto fast = static_circumellipsoid(m, t, v);
+  const auto c = fast ? *fast : geometry::circumellipsoid(at(0), at(1), at(2), at(3), M);  // an unsure determinant: the whole line
   const auto& x = c.x;
   const I& r2 = c.r2;
   if (!std::isfinite(r2.lo) || !std::isfinite(r2.hi) || r2.lo < 0) return std::nullopt;
@@ -282,7 +324,7 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
         const auto same = [&](std::size_t j) { return m.same_metric(t[j], v); };
         if ((i > 0 && same(0)) || (i > 1 && same(1)) || (i > 2 && same(2))) continue;
         const auto& Mv = m.metric[static_cast<std::size_t>(v)];
-        const auto ellipsoid = enclose_ellipsoid(m, t, Mv);
+        const auto ellipsoid = enclose_ellipsoid(m, t, v);
         if (ellipsoid) {
           grid.query(ellipsoid->lo, ellipsoid->hi, candidates);
         } else {
