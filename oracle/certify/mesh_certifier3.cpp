@@ -282,14 +282,26 @@ Sign insphere(const EnclosedMesh3& m, const std::array<int, 4>& t, int e, int v)
   });
 }
 
-std::vector<std::pair<int, int>> unique_edges(const std::vector<std::array<int, 4>>& tets) {
-  std::vector<std::pair<int, int>> e;
-  e.reserve(6 * tets.size());
+// The edges (u, v), u < v, in increasing order: bucketed by u (a counting sort), each bucket's
+// few ends sorted and made unique; the same list as sorting all 6 per tetrahedron, in linear time.
+std::vector<std::pair<int, int>> unique_edges(const std::vector<std::array<int, 4>>& tets, std::size_t vertices) {
+  std::vector<std::size_t> start(vertices + 1, 0);
   for (const auto& t : tets)
     for (std::size_t i = 0; i < 4; ++i)
-      for (std::size_t j = i + 1; j < 4; ++j) e.emplace_back(std::min(t[i], t[j]), std::max(t[i], t[j]));
-  std::sort(e.begin(), e.end());
-  e.erase(std::unique(e.begin(), e.end()), e.end());
+      for (std::size_t j = i + 1; j < 4; ++j) ++start[static_cast<std::size_t>(std::min(t[i], t[j])) + 1];
+  for (std::size_t u = 1; u <= vertices; ++u) start[u] += start[u - 1];
+  std::vector<int> other(start[vertices]);
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (const auto& t : tets)
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j) other[next[static_cast<std::size_t>(std::min(t[i], t[j]))]++] = std::max(t[i], t[j]);
+  std::vector<std::pair<int, int>> e;
+  e.reserve(other.size() / 4);
+  for (std::size_t u = 0; u < vertices; ++u) {
+    const auto first = other.begin() + static_cast<std::ptrdiff_t>(start[u]), last = other.begin() + static_cast<std::ptrdiff_t>(start[u + 1]);
+    std::sort(first, last);
+    for (auto it = first; it != last; it = std::upper_bound(it, last, *it)) e.emplace_back(static_cast<int>(u), *it);
+  }
   return e;
 }
 
@@ -361,7 +373,7 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
   r.gamma_violations = WitnessList(o.described_witnesses);
   if ((o.rho0 || o.gamma0) && has_metrics) check_lu_bounds(m, o, r);
   if (o.metric && has_metrics) {
-    const std::vector<std::pair<int, int>> edges = unique_edges(mesh.tetrahedra);
+    const std::vector<std::pair<int, int>> edges = unique_edges(mesh.tetrahedra, mesh.vertices.size());
     r.lengths = check_lengths(m, edges, o.length_range, o.described_witnesses);
     r.quality = check_quality(m, o.min_quality, o.described_witnesses);
     r.angles = check_angles(m, o.min_angle, o.described_witnesses);
