@@ -373,6 +373,9 @@ TEST(MeshCertifier3, SliverMeasureOfTheKuhnCube) {
   EXPECT_EQ(r.cosphericity->quasi_cospherical, 6u);
   EXPECT_EQ(r.cosphericity->witnesses.count(), 6u);
   EXPECT_EQ(r.cosphericity->at_boundary, 0u);
+  // Definition 3.9 by hand: every non-flat four of the five lies on the cube's sphere (radius
+  // √3/2) and the shortest distance is an edge, 1: the ratio √3/2.
+  EXPECT_NEAR(r.cosphericity->least_radius_edge, std::sqrt(3.0) / 2, 1e-12);
 
   const Rational q(-1, 4);
   const Mesh3 delaunay = kuhn_grid(2, {1, q, q, 1, q, 1});
