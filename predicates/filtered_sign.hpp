@@ -225,24 +225,27 @@ std::optional<FilterInterval> static_enclosure_with(const std::array<double, K::
   return FilterInterval::widen(value - bound, value + bound);
 }
 
+// A translatable kernel's inputs as the rounded differences from their origins.
+template <class K>
+  requires Translatable<K>
+std::array<double, K::arity> translated(const std::array<double, K::arity>& x) {
+  std::array<double, K::arity> t;
+  for (std::size_t i = 0; i < K::arity; ++i) t[i] = K::origin[i] < 0 ? x[i] : x[i] - x[K::origin[i]];
+  return t;
+}
+
 // The translated static stage (see Translatable), on the rounded differences: tried only when
 // the plain one fails, so that the common case does not pay for the differences.
 template <class K>
 std::optional<Sign> translated_static_sign(const std::array<double, K::arity>& x) {
-  if constexpr (Translatable<K>) {
-    std::array<double, K::arity> t;
-    for (std::size_t i = 0; i < K::arity; ++i) t[i] = K::origin[i] < 0 ? x[i] : x[i] - x[K::origin[i]];
-    return static_sign<K, translated_error_model<K>>(t);
-  }
+  if constexpr (Translatable<K>) return static_sign<K, translated_error_model<K>>(translated<K>(x));
   return std::nullopt;
 }
 
 template <class K>
 std::optional<FilterInterval> static_enclosure(const std::array<double, K::arity>& x) {
   if constexpr (Translatable<K>) {
-    std::array<double, K::arity> t;
-    for (std::size_t i = 0; i < K::arity; ++i) t[i] = K::origin[i] < 0 ? x[i] : x[i] - x[K::origin[i]];
-    return static_enclosure_with<K, translated_error_model<K>>(t);
+    return static_enclosure_with<K, translated_error_model<K>>(translated<K>(x));
   } else {
     return static_enclosure_with<K, static_error_model<K>>(x);
   }

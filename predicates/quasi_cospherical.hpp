@@ -134,9 +134,10 @@ constexpr T two_negative_polynomial(const T& c1, const T& c2, const T& c3, const
   return ((c1c1c1 + T(2) * c1c1c1 * k) + c1c1c1 * kk) + ((c1c2kk + c1c2kk * k) - c3 * kk * k);
 }
 
-// A (one negative eigenvalue).
-struct CosphericalOneNegativeKernel {
-  static constexpr const char* name = "quasi-cosphericity (one negative eigenvalue)";
+// A (`two` false: one negative eigenvalue) or B (two), from the configuration and k.
+template <bool two>
+struct CosphericalDecisionKernel {
+  static constexpr const char* name = two ? "quasi-cosphericity (two negative eigenvalues)" : "quasi-cosphericity (one negative eigenvalue)";
   static constexpr std::size_t arity = 22;
   static constexpr std::array<int, arity> groups{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 2};
   static constexpr std::array<const char*, arity> inputs = cospherical_inputs;
@@ -145,24 +146,11 @@ struct CosphericalOneNegativeKernel {
     const auto y = without_k(x);
     const T c1 = InSphereKernel::eval(y);
     const auto [c2, c3] = lifted_gram_invariants(y);
-    return one_negative_polynomial(c1, c2, c3, x[21]);
+    return two ? two_negative_polynomial(c1, c2, c3, x[21]) : one_negative_polynomial(c1, c2, c3, x[21]);
   }
 };
-
-// B (two negative eigenvalues).
-struct CosphericalTwoNegativeKernel {
-  static constexpr const char* name = "quasi-cosphericity (two negative eigenvalues)";
-  static constexpr std::size_t arity = 22;
-  static constexpr std::array<int, arity> groups = CosphericalOneNegativeKernel::groups;
-  static constexpr std::array<const char*, arity> inputs = cospherical_inputs;
-  template <class T>
-  static constexpr T eval(const std::array<T, arity>& x) {
-    const auto y = without_k(x);
-    const T c1 = InSphereKernel::eval(y);
-    const auto [c2, c3] = lifted_gram_invariants(y);
-    return two_negative_polynomial(c1, c2, c3, x[21]);
-  }
-};
+using CosphericalOneNegativeKernel = CosphericalDecisionKernel<false>;
+using CosphericalTwoNegativeKernel = CosphericalDecisionKernel<true>;
 
 // The verdict of fact 3 from the signs of its polynomials, each computed by `sign_of(kernel)`:
 // positive when the five are strictly γ₀-cospherical for M, zero at the boundary (a zero A or B,

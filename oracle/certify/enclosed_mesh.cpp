@@ -33,6 +33,11 @@ FilterInterval enclose(const Rational& q) {
   return FilterInterval::around(q);
 }
 
+predicates::Sym3<double> midpoint(const predicates::Sym3<FilterInterval>& M) {
+  const auto mid = [](const FilterInterval& x) { return x.lo / 2 + x.hi / 2; };
+  return {mid(M.m11), mid(M.m12), mid(M.m13), mid(M.m22), mid(M.m23), mid(M.m33)};
+}
+
 EnclosedMesh::EnclosedMesh(const geometry::Mesh<Rational>& m) : mesh(m) {
   site.reserve(m.sites.size());
   approx.reserve(m.sites.size());

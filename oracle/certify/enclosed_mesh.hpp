@@ -10,6 +10,7 @@
 #include "geometry/mesh3.hpp"
 #include "numbers/filter_interval.hpp"
 
+#include <array>
 #include <vector>
 
 namespace anisocert::oracle {
@@ -38,6 +39,15 @@ struct EnclosedMesh3 {
   // Whether vertices u and v have exactly the same metric (a constant field: all do), from classes
   // of equal metrics formed once by the constructor (the enclosures hashed, the rationals compared).
   bool same_metric(int u, int v) const { return metric_class[static_cast<std::size_t>(u)] == metric_class[static_cast<std::size_t>(v)]; }
+  // Whether the given vertices' coordinates and the metric of vertex `metric_vertex` are all doubles
+  // (their enclosures points, their approximations exact): the static filters' inputs.
+  template <std::size_t n>
+  bool doubles(const std::array<int, n>& vertices, int metric_vertex) const {
+    if (!exact_metric[static_cast<std::size_t>(metric_vertex)]) return false;
+    for (const int u : vertices)
+      if (!exact[static_cast<std::size_t>(u)]) return false;
+    return true;
+  }
 
   const geometry::Mesh3<Rational>& mesh;
   std::vector<char> exact;                                  // mesh.vertices[i]'s coordinates are doubles
@@ -53,5 +63,7 @@ struct EnclosedMesh3 {
 double approximate(const Rational& q);
 // The tightest enclosure: the point [d, d] when q is the double d, else d widened by an ulp.
 FilterInterval enclose(const Rational& q);
+// A metric enclosure's midpoints, entry by entry: an approximate metric for measured values.
+predicates::Sym3<double> midpoint(const predicates::Sym3<FilterInterval>& M);
 
 }  // namespace anisocert::oracle

@@ -113,7 +113,7 @@ struct CircumcentreKernel {
 // double (a binary file's); nothing when an input is not one, or the denominator's enclosure holds 0.
 std::optional<geometry::Circumellipsoid<I>> static_circumellipsoid(const EnclosedMesh3& m, const std::array<int, 4>& t, int v) {
   const auto vi = static_cast<std::size_t>(v);
-  if (!m.exact_metric[vi] || !std::all_of(t.begin(), t.end(), [&](int u) { return m.exact[static_cast<std::size_t>(u)] != 0; })) return std::nullopt;
+  if (!m.doubles(t, v)) return std::nullopt;
   const auto& M = m.metric[vi];
   std::array<double, 18> x;
   for (std::size_t i = 0; i < 4; ++i) {
@@ -164,11 +164,6 @@ T radius_edge_squared(const std::array<predicates::Point3<T>, 4>& p, const predi
     for (std::size_t j = i + 1; j < 4; ++j)
       shortest = min(shortest, predicates::quadratic_form(M, T(p[j].x - p[i].x), T(p[j].y - p[i].y), T(p[j].z - p[i].z)));
   return geometry::circumellipsoid(p[0], p[1], p[2], p[3], M).r2 / shortest;
-}
-
-predicates::Sym3<double> midpoint(const predicates::Sym3<I>& M) {
-  const auto mid = [](const I& x) { return x.lo / 2 + x.hi / 2; };
-  return {mid(M.m11), mid(M.m12), mid(M.m13), mid(M.m22), mid(M.m23), mid(M.m33)};
 }
 
 // ρ ≤ ρ₀ in every vertex's metric and γ ≤ γ₀ between the vertices of every tetrahedron (the 2D
@@ -244,8 +239,7 @@ bool certainly_outside(const Ellipsoid& e, const predicates::Point3<I>& p, const
 // The inputs of the in-sphere test of e against t in the metric of v when all are doubles.
 std::optional<std::array<double, 21>> double_inputs(const EnclosedMesh3& m, const std::array<int, 4>& t, int e, int v) {
   const std::array<int, 5> idx{t[0], t[1], t[2], t[3], e};
-  if (!m.exact_metric[static_cast<std::size_t>(v)] || !std::all_of(idx.begin(), idx.end(), [&](int u) { return m.exact[static_cast<std::size_t>(u)] != 0; }))
-    return std::nullopt;
+  if (!m.doubles(idx, v)) return std::nullopt;
   std::array<double, 21> x;
   for (std::size_t k = 0; k < 5; ++k) {
     const auto& p = m.approx[static_cast<std::size_t>(idx[k])];

@@ -68,7 +68,7 @@ class Length2 {
     const auto& p = points(m_);
     const auto& M = m_.metric;
     if constexpr (std::is_same_v<Enclosed, EnclosedMesh3>) {
-      if (m_.exact[a_] && m_.exact[b_] && m_.exact_metric[v_]) {
+      if (m_.doubles(std::array<int, 2>{a_, b_}, v_)) {
         const auto x = inputs(m_.approx[a_], m_.approx[b_], predicates::Sym3<double>{M[v_].m11.lo, M[v_].m12.lo, M[v_].m13.lo, M[v_].m22.lo, M[v_].m23.lo, M[v_].m33.lo}, 0.0);
         if (const auto l2 = predicates::static_enclosure<Kernel>(x)) return *l2;
       }

@@ -173,7 +173,7 @@ struct Tetrahedra {
   FilterInterval quality(std::size_t t, int v) const {
     const auto& k = vertices(t);
     const auto vi = static_cast<std::size_t>(v);
-    if (m.exact_metric[vi] && std::all_of(k.begin(), k.end(), [&](int u) { return m.exact[static_cast<std::size_t>(u)] != 0; })) {
+    if (m.doubles(k, v)) {
       const auto x = arguments(k, m.approx, m.metric[vi], FilterInterval(0));
       std::array<double, 18> pm;
       for (std::size_t i = 0; i < 18; ++i) pm[i] = x[i].lo;  // points: lo = hi

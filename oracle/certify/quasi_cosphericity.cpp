@@ -83,11 +83,6 @@ double radius_edge_ratio(const std::array<predicates::Point3<double>, 5>& p, con
   return std::sqrt(r2 / d2);
 }
 
-predicates::Sym3<double> midpoint(const predicates::Sym3<FilterInterval>& M) {
-  const auto mid = [](const FilterInterval& x) { return x.lo / 2 + x.hi / 2; };
-  return {mid(M.m11), mid(M.m12), mid(M.m13), mid(M.m22), mid(M.m23), mid(M.m33)};
-}
-
 }  // namespace
 
 CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::optional<Rational>& gamma0, std::size_t described) {
@@ -143,8 +138,7 @@ CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::o
         });
       };
       // e on the M_v-sphere: the static filter when every input is a double, else as the others.
-      const bool doubles = m.exact_metric[static_cast<std::size_t>(v)] &&
-                           std::all_of(c.vertex.begin(), c.vertex.end(), [&](int u) { return m.exact[static_cast<std::size_t>(u)] != 0; });
+      const bool doubles = m.doubles(c.vertex, v);
       std::array<double, 21> x;
       for (std::size_t j = 0; j < 5; ++j) x[3 * j] = approx[j].x, x[3 * j + 1] = approx[j].y, x[3 * j + 2] = approx[j].z;
       const auto Md = midpoint(M);

@@ -19,11 +19,6 @@ double length2(const Sym3<double>& M, const Point3<double>& a, const Point3<doub
   return M.m11 * x * x + M.m22 * y * y + M.m33 * z * z + 2 * (M.m12 * x * y + M.m13 * x * z + M.m23 * y * z);
 }
 
-Sym3<double> midpoint(const Sym3<FilterInterval>& M) {
-  const auto mid = [](const FilterInterval& x) { return x.lo / 2 + x.hi / 2; };
-  return {mid(M.m11), mid(M.m12), mid(M.m13), mid(M.m22), mid(M.m23), mid(M.m33)};
-}
-
 }  // namespace
 
 double log_interpolated_length(double la, double lb) {
