@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -69,6 +70,46 @@ TEST(CliCertify3, TheKuhnGridIsCertifiedWithItsTies) {
   EXPECT_EQ(j["valid"]["boundary_faces"], 48);  // 6 sides of 2 × 2 squares, 2 triangles each
   EXPECT_EQ(j["lengths"]["edges"], 98);  // 54 along the axes, 36 face diagonals, 8 cube diagonals
   EXPECT_EQ(j["lengths"]["unit_edges"], 90);  // the cube diagonals (√3) are longer than √2
+}
+
+// LU's sliver measure in the report, on one Kuhn cube in M = I (by hand: its six tetrahedra share
+// the cube's sphere, radius √3/2, so each of the six pairs across its inner faces is exactly
+// cospherical, γ₀-cospherical at any γ₀ > 1, with Definition 3.9's ratio √3/2 over edge 1).
+TEST(CliCertify3, TheSliverMeasureIsReported) {
+  const fs::path d = fresh("sliver");
+  write(d / "cube.mesh", kuhn_medit(1));
+  write(d / "cube.sol", identity_sol(8));
+  const Outcome r = run("certify " + (d / "cube.mesh").string() + " --gamma0 1.0001 --json " + (d / "r.json").string());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;  // a measure, not a verdict
+  EXPECT_NE(r.out.find("LU's sliver measure (quasi-cosphericity of tetrahedra sharing a face, Definitions 3.6 and 3.9): measured (6 pairs of "
+                       "tetrahedra sharing a face; least critical distortion γ* ≈ 1"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("6 exactly cospherical in a vertex's metric; 6 γ₀-cospherical for γ₀ = 1.0001, least radius-edge ratio of those ≈ 0.866025"),
+            std::string::npos)
+      << r.out;
+  std::ifstream in(d / "r.json");
+  const nlohmann::json q = nlohmann::json::parse(in)["quasi_cosphericity"];
+  EXPECT_EQ(q["configurations"], 6);
+  EXPECT_EQ(q["cospherical"], 6);
+  EXPECT_EQ(q["least_critical_distortion"], 1.0);
+  EXPECT_EQ(q["gamma0"], "1.0001");
+  EXPECT_EQ(q["quasi_cospherical"], 6);
+  EXPECT_EQ(q["at_boundary"], 0);
+  EXPECT_NEAR(q["least_radius_edge"].get<double>(), std::sqrt(3.0) / 2, 1e-12);
+  EXPECT_EQ(q["least_radius_edge_tetrahedra"].size(), 2u);
+  EXPECT_EQ(q["least_critical_tetrahedra"].size(), 2u);
+  EXPECT_EQ(q["unmeasured"], 0);
+  ASSERT_EQ(q["witnesses"].size(), 6u);
+  EXPECT_EQ(q["witnesses"][0]["tetrahedra"].size(), 2u);
+  EXPECT_EQ(q["witnesses"][0]["vertex"], 0);
+  // Without γ₀: measured only, the exact counts null.
+  const Outcome m = run("certify " + (d / "cube.mesh").string() + " --json " + (d / "m.json").string());
+  std::ifstream min(d / "m.json");
+  const nlohmann::json n = nlohmann::json::parse(min)["quasi_cosphericity"];
+  EXPECT_TRUE(n["quasi_cospherical"].is_null());
+  EXPECT_TRUE(n["gamma0"].is_null());
+  EXPECT_EQ(n["cospherical"], 6);
 }
 
 // A built-in 3D field: the UGAWG linear field on the Kuhn grid of 2 × 2 × 2 unit cubes. At z = 0

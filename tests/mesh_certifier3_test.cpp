@@ -420,6 +420,9 @@ TEST(MeshCertifier3, SliverMeasureAsksEveryVertexMetric) {
   EXPECT_EQ(r.cosphericity->cospherical, 1u);
   ASSERT_EQ(r.cosphericity->witnesses.count(), 1u);
   EXPECT_EQ(r.cosphericity->witnesses.places()[0].vertex, 1);  // the first metric that makes it strict
+  EXPECT_EQ(r.cosphericity->witnesses.described()[0].text,
+            "tetrahedra 0 and 1 (vertices 0 1 3 2 4) are γ₀-cospherical in the metric of vertex 1 (critical distortion about 1.000000, "
+            "radius-edge ratio about 1.500000)");  // in I, by hand: all five on the 2 × 2 × 1 box's sphere, radius 3/2; shortest distance 1
   m.metrics.assign(5, tie);  // only the tied metric: the boundary
   const Certify3Report t = certify_mesh3(m, o);
   EXPECT_EQ(t.cosphericity->quasi_cospherical, 0u);
