@@ -216,13 +216,19 @@ template <class K, const ErrorModel& model>
 // evaluation; nothing outside the stage's range. For measured values, where a sign is not enough.
 // A Translatable kernel is evaluated on the rounded differences, with their model's bound (see
 // below), so that the enclosure's width scales with the element, not with its distance from 0.
+// `value` is K::eval<double>(x), computed by the caller when several kernels are parts of one
+// computation on the same inputs (Cramer's determinants: one elimination, four enclosures).
+template <class K, const ErrorModel& model>
+std::optional<FilterInterval> static_enclosure_of_value(const std::array<double, K::arity>& x, double value) {
+  const std::array<double, magnitude_groups> max = group_maxima<K>(x);
+  if (!in_static_range<K>(max) || !std::isfinite(value)) return std::nullopt;
+  const double bound = error_bound<model>(max);
+  return FilterInterval::widen(value - bound, value + bound);
+}
+
 template <class K, const ErrorModel& model>
 std::optional<FilterInterval> static_enclosure_with(const std::array<double, K::arity>& x) {
-  const std::array<double, magnitude_groups> max = group_maxima<K>(x);
-  if (!in_static_range<K>(max)) return std::nullopt;
-  const double value = K::template eval<double>(x), bound = error_bound<model>(max);
-  if (!std::isfinite(value)) return std::nullopt;
-  return FilterInterval::widen(value - bound, value + bound);
+  return static_enclosure_of_value<K, model>(x, K::template eval<double>(x));
 }
 
 // A translatable kernel's inputs as the rounded differences from their origins.

@@ -19,19 +19,21 @@ struct EndsHash {
   }
 };
 
-}  // namespace
-
-double approximate(const Rational& q) { return mpq_get_d(q.backend().data()); }
-
-FilterInterval enclose(const Rational& q) {
-  const double d = approximate(q);
+// The tightest enclosure of q given d = approximate(q).
+FilterInterval enclose(const Rational& q, double d) {
   // q is a normal double (or 0) when its reduced numerator has at most 53 bits and its
   // denominator is 2^e with e <= 1022: then the conversion was exact. No allocation.
   const mpz_srcptr num = mpq_numref(q.backend().data()), den = mpq_denref(q.backend().data());
   const std::size_t e = mpz_scan1(den, 0);
   if (e + 1 == mpz_sizeinbase(den, 2) && e <= 1022 && mpz_sizeinbase(num, 2) <= 53) return {d, d};
-  return FilterInterval::around(q);
+  return FilterInterval::widen(d, d);  // within an ulp (approximate's rounding towards zero)
 }
+
+}  // namespace
+
+double approximate(const Rational& q) { return mpq_get_d(q.backend().data()); }
+
+FilterInterval enclose(const Rational& q) { return enclose(q, approximate(q)); }
 
 predicates::Sym3<double> midpoint(const predicates::Sym3<FilterInterval>& M) {
   const auto mid = [](const FilterInterval& x) { return x.lo / 2 + x.hi / 2; };
@@ -63,8 +65,9 @@ EnclosedMesh3::EnclosedMesh3(const geometry::Mesh3<Rational>& m) : mesh(m) {
   approx.reserve(m.vertices.size());
   exact.reserve(m.vertices.size());
   for (const auto& p : m.vertices) {
-    vertex.push_back({enclose(p.x), enclose(p.y), enclose(p.z)});
     approx.push_back({approximate(p.x), approximate(p.y), approximate(p.z)});
+    const auto& a = approx.back();
+    vertex.push_back({enclose(p.x, a.x), enclose(p.y, a.y), enclose(p.z, a.z)});
     const auto& v = vertex.back();
     exact.push_back(v.x.lo == v.x.hi && v.y.lo == v.y.hi && v.z.lo == v.z.hi);
   }
@@ -92,6 +95,7 @@ EnclosedMesh3::EnclosedMesh3(const geometry::Mesh3<Rational>& m) : mesh(m) {
   }
   orientations.reserve(m.tetrahedra.size());
   for (const auto& t : m.tetrahedra) orientations.push_back(orientation(t[0], t[1], t[2], t[3]));
+  faces = faces_in_order(m.tetrahedra, m.vertices.size());
 }
 
 Sign EnclosedMesh3::orientation(int a, int b, int c, int d) const {

@@ -9,6 +9,7 @@
 #include "geometry/mesh.hpp"
 #include "geometry/mesh3.hpp"
 #include "numbers/filter_interval.hpp"
+#include "oracle/certify/tetrahedron_faces.hpp"
 
 #include <array>
 #include <vector>
@@ -54,6 +55,7 @@ struct EnclosedMesh3 {
   std::vector<char> exact_metric;                           // mesh.metrics[i]'s entries are doubles
   std::vector<int> metric_class;                            // equal for vertices with equal metrics
   std::vector<Sign> orientations;                           // of each tetrahedron
+  std::vector<TetrahedronFace> faces;                       // every tetrahedron's four, equal ones adjacent
   std::vector<predicates::Point3<FilterInterval>> vertex;   // encloses mesh.vertices[i]
   std::vector<predicates::Sym3<FilterInterval>> metric;     // encloses mesh.metrics[i]
   std::vector<predicates::Point3<double>> approx;           // approximate(mesh.vertices[i])

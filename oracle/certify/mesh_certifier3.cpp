@@ -121,17 +121,36 @@ std::optional<geometry::Circumellipsoid<I>> static_circumellipsoid(const Enclose
     x[3 * i] = p.x, x[3 * i + 1] = p.y, x[3 * i + 2] = p.z;
   }
   x[12] = M.m11.lo, x[13] = M.m12.lo, x[14] = M.m13.lo, x[15] = M.m22.lo, x[16] = M.m23.lo, x[17] = M.m33.lo;
-  const auto n0 = predicates::static_enclosure<CircumcentreKernel<0>>(x), n1 = predicates::static_enclosure<CircumcentreKernel<1>>(x),
-             n2 = predicates::static_enclosure<CircumcentreKernel<2>>(x), d = predicates::static_enclosure<CircumcentreKernel<3>>(x);
+  // The four kernels share their inputs' translation: one elimination gives the four values that
+  // predicates::static_enclosure would compute one by one.
+  const auto y = predicates::translated<CircumcentreKernel<3>>(x);
+  const auto at = [&](std::size_t i) { return predicates::Point3<double>{y[3 * i], y[3 * i + 1], y[3 * i + 2]}; };
+  const auto values = geometry::circumcentre_determinants(at(0), at(1), at(2), at(3), predicates::Sym3<double>{y[12], y[13], y[14], y[15], y[16], y[17]});
+  const auto enclosed = [&]<int k>(CircumcentreKernel<k>) {
+    return predicates::static_enclosure_of_value<CircumcentreKernel<k>, predicates::translated_error_model<CircumcentreKernel<k>>>(
+        y, k < 3 ? values.numerator[static_cast<std::size_t>(k)] : values.denominator);
+  };
+  const auto n0 = enclosed(CircumcentreKernel<0>{}), n1 = enclosed(CircumcentreKernel<1>{}), n2 = enclosed(CircumcentreKernel<2>{}),
+             d = enclosed(CircumcentreKernel<3>{});
   if (!n0 || !n1 || !n2 || !d || d->has_zero()) return std::nullopt;
   return geometry::circumellipsoid_of(geometry::CramerDeterminants<I>{{*n0, *n1, *n2}, *d}, M);
+}
+
+// The diagonal of M⁻¹ (cofactor over det M), enclosed; nothing when det M's enclosure is not
+// positive. Once per vertex: it spans the box of every ellipsoid in M.
+std::optional<std::array<I, 3>> inverse_diagonal(const predicates::Sym3<I>& M) {
+  const I detM = det3({{{M.m11, M.m12, M.m13}, {M.m12, M.m22, M.m23}, {M.m13, M.m23, M.m33}}});
+  if (!(detM.lo > 0)) return std::nullopt;
+  return std::array<I, 3>{(M.m22 * M.m33 - M.m23 * M.m23) / detM, (M.m11 * M.m33 - M.m13 * M.m13) / detM, (M.m11 * M.m22 - M.m12 * M.m12) / detM};
 }
 
 // The enclosure, or nothing when intervals cannot give one (the static enclosures of Cramer's
 // determinants when every input is a double, else intervals throughout). The centre is a + x with
 // 2(q − a)ᵀ M x = (q − a)ᵀ M (q − a) for q = b, c, d; r² = xᵀMx; the ellipsoid
 // {y : (y − c)ᵀ M (y − c) ≤ r²} spans c_i ± √(r² (M⁻¹)_ii) along axis i.
-std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::array<int, 4>& t, int v) {
+std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::array<int, 4>& t, int v,
+                                           const std::optional<std::array<I, 3>>& inverse_diagonal) {
+  if (!inverse_diagonal) return std::nullopt;
   const predicates::Sym3<I>& M = m.metric[static_cast<std::size_t>(v)];
   const auto at = [&](std::size_t i) -> const predicates::Point3<I>& { return m.vertex[static_cast<std::size_t>(t[i])]; };
   const auto fast = static_circumellipsoid(m, t, v);
@@ -139,17 +158,14 @@ std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::ar
   const auto& x = c.x;
   const I& r2 = c.r2;
   if (!std::isfinite(r2.lo) || !std::isfinite(r2.hi) || r2.lo < 0) return std::nullopt;
-  const I detM = det3({{{M.m11, M.m12, M.m13}, {M.m12, M.m22, M.m23}, {M.m13, M.m23, M.m33}}});
-  if (!(detM.lo > 0)) return std::nullopt;
-  const std::array<I, 3> cofactor{M.m22 * M.m33 - M.m23 * M.m23, M.m11 * M.m33 - M.m13 * M.m13, M.m11 * M.m22 - M.m12 * M.m12};
   const auto& a = at(0);
   Ellipsoid e{{a.x + x[0], a.y + x[1], a.z + x[2]}, r2, {}, {}};
   for (std::size_t i = 0; i < 3; ++i) {
-    const I half = sqrt(r2 * cofactor[i] / detM);
+    const I half = sqrt(r2 * (*inverse_diagonal)[i]);
     double lo = (e.centre[i] - half).lo, hi = (e.centre[i] + half).hi;
     if (!std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
     // The grid holds approximations within an ulp of the exact vertices.
-    e.lo[i] = std::nextafter(std::nextafter(lo, -INFINITY), -INFINITY), e.hi[i] = std::nextafter(std::nextafter(hi, INFINITY), INFINITY);
+    e.lo[i] = I::next_down(I::next_down(lo)), e.hi[i] = I::next_up(I::next_up(hi));
   }
   return e;
 }
@@ -312,6 +328,8 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
   if (o.uniform && has_metrics) {
     r.uniform_checked = true;
     const VertexGrid grid(m.approx);
+    std::vector<std::optional<std::array<I, 3>>> diagonals(mesh.vertices.size());
+    for (std::size_t v = 0; v < diagonals.size(); ++v) diagonals[v] = inverse_diagonal(m.metric[v]);
     std::vector<int> candidates;
     for (std::size_t ti = 0; ti < mesh.tetrahedra.size(); ++ti) {
       const auto& t = mesh.tetrahedra[ti];
@@ -330,7 +348,7 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
         const auto same = [&](std::size_t j) { return m.same_metric(t[j], v); };
         if ((i > 0 && same(0)) || (i > 1 && same(1)) || (i > 2 && same(2))) continue;
         const auto& Mv = m.metric[static_cast<std::size_t>(v)];
-        const auto ellipsoid = enclose_ellipsoid(m, t, v);
+        const auto ellipsoid = enclose_ellipsoid(m, t, v, diagonals[static_cast<std::size_t>(v)]);
         if (ellipsoid) {
           grid.query(ellipsoid->lo, ellipsoid->hi, candidates);
         } else {

@@ -29,12 +29,14 @@ std::pair<Rational, Rational> sin_squared_bounds(const Rational& degrees, long p
 
 namespace {
 
-// The angle whose cosine is dot / √norms, in degrees (approximate).
-double degrees_of(double dot, double norms) {
+// The cosine dot / √norms (approximate, in [−1, 1]); 1 (an angle of 0°) when the norms vanish.
+double cosine_of(double dot, double norms) {
   const double n = std::sqrt(std::max(0.0, norms));
-  return n > 0 ? std::acos(std::clamp(dot / n, -1.0, 1.0)) * 180 / std::numbers::pi : 0;
+  return n > 0 ? std::clamp(dot / n, -1.0, 1.0) : 1;
 }
-double degrees_of(const FilterInterval& dot, const FilterInterval& norms) { return degrees_of((dot.lo + dot.hi) / 2, (norms.lo + norms.hi) / 2); }
+double cosine_of(const FilterInterval& dot, const FilterInterval& norms) { return cosine_of((dot.lo + dot.hi) / 2, (norms.lo + norms.hi) / 2); }
+// The angle of a cosine, in degrees: asked once per element (angles are compared by cosine).
+double degrees_of(double cosine) { return std::acos(cosine) * 180 / std::numbers::pi; }
 
 // The corner at b of triangle abc measured by M_b: its angle (approximate, degrees) and sign
 // decisions on the enclosures first.
@@ -42,10 +44,10 @@ class Corner {
  public:
   Corner(const EnclosedMesh& m, int a, int b, int c) : m_(m), a_(a), b_(b), c_(c) {}
 
-  double approx_degrees() const {
+  double approx_cosine() const {
     const auto in = enclosure(FilterInterval(0));
     const auto [dot, norms] = predicates::angle_dot_and_norms(in);
-    return degrees_of(dot, norms);
+    return cosine_of(dot, norms);
   }
   bool obtuse_or_right() const {  // uᵀMw <= 0: the angle is at least 90°
     const auto e = enclosure(FilterInterval(0));
@@ -85,7 +87,7 @@ class Dihedral {
 
   // In doubles (the angle reported is approximate; decisions are below): the points' nearest
   // doubles and the metric enclosures' midpoints.
-  double approx_degrees() const {
+  double approx_cosine() const {
     std::array<double, 18> x;
     for (std::size_t i = 0; i < 4; ++i) {
       const auto& p = m_.approx[static_cast<std::size_t>(v_[i])];
@@ -95,7 +97,7 @@ class Dihedral {
     std::size_t k = 12;
     for (const FilterInterval* e : {&M.m11, &M.m12, &M.m13, &M.m22, &M.m23, &M.m33}) x[k++] = e->lo / 2 + e->hi / 2;
     const auto [dot, norms] = predicates::dihedral_dot_and_norms(x);
-    return degrees_of(dot, norms);
+    return cosine_of(dot, norms);
   }
   bool obtuse_or_right() const {
     const auto e = enclosure(FilterInterval(0));
@@ -201,6 +203,8 @@ AngleReport check_angles_of(const Level& level, const std::optional<Rational>& m
       return std::string(Level::element) + " " + std::to_string(t) + " has " + Level::kind + about + " " + angle.where() + ", below the bound";
     });
   };
+  // The extremes by cosine (a smaller angle has a larger cosine), in degrees at the end.
+  double smallest = -1, largest = 1;
   for (std::size_t t = 0; t < level.size(); ++t) {
     if (!level.measurable(t)) {
       ++r.undecided;
@@ -212,24 +216,26 @@ AngleReport check_angles_of(const Level& level, const std::optional<Rational>& m
     }
     ++r.measured;
     bool reported = false;
-    double least = 180;
+    double least = -1;
     for (std::size_t i = 0; i < Level::angles; ++i) {
       if (level.repeats(t, i)) continue;
       const auto angle = level.angle(t, i);
-      const double deg = angle.approx_degrees();
-      least = std::min(least, deg);
-      if (deg < r.smallest) r.smallest = deg, r.smallest_triangle = static_cast<int>(t);
-      if (deg > r.largest) r.largest = deg, r.largest_triangle = static_cast<int>(t);
+      const double cosine = angle.approx_cosine();
+      least = std::max(least, cosine);
+      if (cosine > smallest) smallest = cosine, r.smallest_triangle = static_cast<int>(t);
+      if (cosine < largest) largest = cosine, r.largest_triangle = static_cast<int>(t);
       if (!min_angle || reported || angle.obtuse_or_right() || angle.below(bounds.second) != Sign::positive) continue;
       if (angle.below(bounds.first) == Sign::positive) {
         reported = true;
-        report(t, angle, " of about " + std::to_string(deg) + "°");
+        report(t, angle, " of about " + std::to_string(degrees_of(cosine)) + "°");
       } else {
         open.emplace_back(t, i);
       }
     }
-    r.element_smallest.push_back(least);
+    r.element_smallest.push_back(degrees_of(least));
   }
+  if (r.smallest_triangle >= 0) r.smallest = degrees_of(smallest);
+  if (r.largest_triangle >= 0) r.largest = degrees_of(largest);
   // sin² θ irrational and an angle within the enclosure: refine it (the angle's rational sin²
   // differs from sin² θ, so some precision decides it).
   std::vector<bool> reported(level.size(), false);

@@ -18,31 +18,19 @@ struct Configuration {
   std::array<int, 2> tetrahedron;
 };
 
-std::vector<Configuration> configurations(const geometry::Mesh3<Rational>& mesh) {
-  struct Face {
-    std::array<int, 3> key;
-    int tetrahedron, opposite;
-    bool operator<(const Face& f) const { return key < f.key; }
-  };
-  std::vector<Face> faces;
-  faces.reserve(4 * mesh.tetrahedra.size());
-  for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
-    const auto& k = mesh.tetrahedra[t];
-    for (std::size_t i = 0; i < 4; ++i) {
-      std::array<int, 3> f{k[(i + 1) % 4], k[(i + 2) % 4], k[(i + 3) % 4]};
-      std::sort(f.begin(), f.end());
-      faces.push_back({f, static_cast<int>(t), k[i]});
-    }
-  }
-  std::sort(faces.begin(), faces.end());
+// A face in exactly two tetrahedra (validity reports the others).
+std::vector<Configuration> configurations(const EnclosedMesh3& m) {
+  const auto& faces = m.faces;
   std::vector<Configuration> c;
-  // A face in exactly two tetrahedra (validity reports the others).
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i;
-    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
+    while (j < faces.size() && faces[j].sorted == faces[i].sorted) ++j;
     if (j == i + 2) {
-      const auto& f = faces[i].key;
-      c.push_back({{f[0], f[1], f[2], faces[i].opposite, faces[i + 1].opposite}, {faces[i].tetrahedron, faces[i + 1].tetrahedron}});
+      const auto& f = faces[i].sorted;
+      const auto opposite = [&](const TetrahedronFace& g) {
+        return m.mesh.tetrahedra[static_cast<std::size_t>(g.tetrahedron)][static_cast<std::size_t>(g.opposite)];
+      };
+      c.push_back({{f[0], f[1], f[2], opposite(faces[i]), opposite(faces[i + 1])}, {faces[i].tetrahedron, faces[i + 1].tetrahedron}});
     }
     i = j;
   }
@@ -58,8 +46,10 @@ double critical_distortion(double c1, double c2, double c3, Sign s) {
   const double shift = c1 / 3, p = c2 - c1 * c1 / 3, q = -2 * c1 * c1 * c1 / 27 + c1 * c2 / 3 - c3;
   std::array<double, 3> h{shift, shift, shift};
   if (p < 0) {
+    // h_k = shift + r cos(θ − 2πk/3), k = 0, 1, 2, from one cosine and one sine of θ.
     const double r = 2 * std::sqrt(-p / 3), cosine = std::clamp(3 * q / (p * r), -1.0, 1.0), theta = std::acos(cosine) / 3;
-    for (std::size_t k = 0; k < 3; ++k) h[k] = shift + r * std::cos(theta - 2 * std::numbers::pi * static_cast<double>(k) / 3);
+    const double c = r * std::cos(theta), s = r * std::sin(theta) * std::numbers::sqrt3 / 2;
+    h = {shift + c, shift - c / 2 + s, shift - c / 2 - s};
   }
   double positive = 0, negative = 0;
   for (const double x : h) (x > 0 ? positive : negative) += std::abs(x);
@@ -92,7 +82,7 @@ CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::o
   r.decided = gamma0.has_value();
   const Rational k = gamma0 ? *gamma0 * *gamma0 * *gamma0 * *gamma0 - 1 : Rational(0);
   const FilterInterval ki = enclose(k);
-  for (const Configuration& c : configurations(mesh)) {
+  for (const Configuration& c : configurations(m)) {
     if (m.orientation(static_cast<std::size_t>(c.tetrahedron[0])) == Sign::zero || m.orientation(static_cast<std::size_t>(c.tetrahedron[1])) == Sign::zero)
       continue;
     ++r.configurations;

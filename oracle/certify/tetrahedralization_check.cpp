@@ -12,22 +12,21 @@ std::string triple_text(const Triple& t) {
   return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
 }
 
-// A tetrahedron's face with its outward orientation: `sorted` its vertices in increasing order,
-// `even` whether the outward triple is an even permutation (a rotation) of `sorted`.
-struct Face {
-  Triple sorted;
-  bool even;
-  int tetrahedron;
-  Triple outward;
-};
+// The outward orientation of face f: the face opposite vertex i of a positively oriented
+// (a, b, c, d) is, outward, (b, c, d), (a, d, c), (a, b, d), (a, c, b) for i = 0 to 3 (for the unit
+// tetrahedron the first has normal (1, 1, 1)/…, away from a); of a negatively oriented one, reversed.
+Triple outward(const std::array<int, 4>& v, int i, Sign sign) {
+  const auto [a, b, c, d] = v;
+  const std::array<Triple, 4> out{Triple{b, c, d}, Triple{a, d, c}, Triple{a, b, d}, Triple{a, c, b}};
+  Triple f = out[static_cast<std::size_t>(i)];
+  if (sign == Sign::negative) std::swap(f[1], f[2]);
+  return f;
+}
 
-Face face(const Triple& outward, int t) {
-  Triple s = outward;
-  std::sort(s.begin(), s.end());
-  // A rotation of the sorted triple is even; a rotation of its reverse is odd.
-  const bool even = (outward[0] == s[0] && outward[1] == s[1]) || (outward[0] == s[1] && outward[1] == s[2]) ||
-                    (outward[0] == s[2] && outward[1] == s[0]);
-  return {s, even, t, outward};
+// Whether an outward triple is an even permutation (a rotation) of its sorted vertices; a
+// rotation of their reverse is odd.
+bool even(const Triple& outward, const Triple& s) {
+  return (outward[0] == s[0] && outward[1] == s[1]) || (outward[0] == s[1] && outward[1] == s[2]) || (outward[0] == s[2] && outward[1] == s[0]);
 }
 
 }  // namespace
@@ -44,9 +43,6 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
   const std::size_t n = m.mesh.vertices.size();
   std::vector<int> bad;
 
-  // Orientation: the outward faces of a positively oriented (a, b, c, d) are (b, c, d), (a, d, c),
-  // (a, b, d), (a, c, b) (for the unit tetrahedron the first has normal (1, 1, 1)/…, away from a);
-  // of a negatively oriented one, the same reversed.
   r.checks_run.push_back("every tetrahedron has the same non-zero orientation (exact)");
   std::vector<Sign> sign(tets.size());
   std::size_t positive = 0, negative = 0;
@@ -76,19 +72,10 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
   // Faces, each with its tetrahedron's outward orientation (by the tetrahedron's own sign, so
   // that two tetrahedra on one side of a face are found whatever the convention).
   r.checks_run.push_back("every face is in one tetrahedron (boundary) or in two on opposite sides of it");
-  std::vector<Face> faces;
-  faces.reserve(4 * tets.size());
-  for (std::size_t t = 0; t < tets.size(); ++t) {
-    const auto& [a, b, c, d] = tets[t];
-    const int ti = static_cast<int>(t);
-    std::array<Triple, 4> out{Triple{b, c, d}, Triple{a, d, c}, Triple{a, b, d}, Triple{a, c, b}};
-    for (Triple& f : out) {
-      if (sign[t] == Sign::negative) std::swap(f[1], f[2]);
-      faces.push_back(face(f, ti));
-    }
-  }
-  std::sort(faces.begin(), faces.end(),
-            [](const Face& x, const Face& y) { return std::tie(x.sorted, x.tetrahedron) < std::tie(y.sorted, y.tetrahedron); });
+  const std::vector<TetrahedronFace>& faces = m.faces;  // equal faces adjacent
+  const auto outward_of = [&](const TetrahedronFace& f) {
+    return outward(tets[static_cast<std::size_t>(f.tetrahedron)], f.opposite, sign[static_cast<std::size_t>(f.tetrahedron)]);
+  };
   std::vector<Triple> boundary;  // outward
   std::vector<int> boundary_tetrahedron;
   std::vector<Triple> interior;  // sorted triples, in order
@@ -96,11 +83,11 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
     std::size_t j = i + 1;
     while (j < faces.size() && faces[j].sorted == faces[i].sorted) ++j;
     if (j - i == 1) {
-      boundary.push_back(faces[i].outward), boundary_tetrahedron.push_back(faces[i].tetrahedron);
+      boundary.push_back(outward_of(faces[i])), boundary_tetrahedron.push_back(faces[i].tetrahedron);
     } else if (j - i == 2) {
       ++r.interior_faces;
       interior.push_back(faces[i].sorted);
-      if (faces[i].even == faces[i + 1].even) {
+      if (even(outward_of(faces[i]), faces[i].sorted) == even(outward_of(faces[i + 1]), faces[i].sorted)) {
         r.fail("face " + triple_text(faces[i].sorted) + " is in tetrahedra " + std::to_string(faces[i].tetrahedron) + " and " +
                std::to_string(faces[i + 1].tetrahedron) + ", which lie on the same side of it (they overlap)");
         bad.push_back(faces[i].tetrahedron), bad.push_back(faces[i + 1].tetrahedron);

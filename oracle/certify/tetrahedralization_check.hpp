@@ -21,7 +21,7 @@
 // intersect itself, and so winds once around the domain, is not checked here (the check says so
 // in `checks_run`).
 // Witnesses name tetrahedra, faces and vertices numbered from 0 in the order of the file.
-// Cost: one orientation per tetrahedron (interval first), and sorting the 4n faces.
+// Cost: one orientation per tetrahedron and the 4n faces in order, both made by EnclosedMesh3.
 #include "oracle/certify/enclosed_mesh.hpp"
 
 #include <string>
