@@ -10,6 +10,8 @@
 //  - "decimal": "delaunay" scaled by 1/10 (its metric by 100: the same lengths), as an ASCII file
 //    writes it: coordinates that are not doubles, so the checks take their interval paths instead
 //    of the static filters that a binary file's doubles allow.
+// Each on one thread (CPU time), and "all checks" also on two (`/2`, wall-clock time: the locally
+// uniform search and the sliver measure run per tetrahedron and per face pair on every thread).
 // Run: build/bin/certifier3_bench (figures in docs/bench.md).
 #include "geometry/kuhn_grid.hpp"
 #include "io/formats/medit.hpp"
@@ -45,6 +47,7 @@ void valid(benchmark::State& state) {
   const auto m = grid(static_cast<int>(state.range(0)), Grid::delaunay);
   Certify3Options o;
   o.uniform = false;
+  o.threads = 1;
   Certify3Report r;
   for (auto _ : state) r = certify_mesh3(m, o);
   if (!r.valid_holds()) state.SkipWithError("the Kuhn grid is not valid");
@@ -55,6 +58,7 @@ void all_checks(benchmark::State& state, Grid kind) {
   const auto m = grid(static_cast<int>(state.range(0)), kind);
   Certify3Options o;
   o.metric = true;
+  o.threads = static_cast<int>(state.range(1));
   Certify3Report r;
   for (auto _ : state) r = certify_mesh3(m, o);
   if (!r.valid_holds() || !r.uniform_violations.empty()) state.SkipWithError("the Kuhn grid does not hold");
@@ -69,6 +73,7 @@ void one_check(benchmark::State& state, bool uniform) {
   o.valid = false;
   o.uniform = uniform;
   o.metric = !uniform;
+  o.threads = 1;
   Certify3Report r;
   for (auto _ : state) r = certify_mesh3(m, o);
   counters(state, m.tetrahedra.size());
@@ -84,6 +89,7 @@ void bad_million(benchmark::State& state) {
   m.metrics.assign(m.vertices.size(), Sym3<Rational>{1, Rational(1, 4), Rational(1, 4), 1, Rational(1, 4), 1});
   Certify3Options o;
   o.metric = true, o.rho0 = 2, o.gamma0 = 2, o.min_quality = Rational(1, 2), o.min_angle = 30;
+  o.threads = static_cast<int>(state.range(1));
   Certify3Report r;
   for (auto _ : state) r = certify_mesh3(m, o);
   if (r.uniform_violations.count() == 0) state.SkipWithError("the stretched Kuhn grid should fail local uniformity");
@@ -109,11 +115,11 @@ void read_medit(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(valid)->Arg(10)->Arg(30)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(all_checks, delaunay, Grid::delaunay)->Arg(10)->Arg(30)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(all_checks, decimal, Grid::decimal)->Arg(30)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(all_checks, ties, Grid::ties)->Arg(10)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(all_checks, delaunay, Grid::delaunay)->Args({10, 1})->Args({30, 1})->Args({30, 2})->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(all_checks, decimal, Grid::decimal)->Args({30, 1})->Args({30, 2})->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(all_checks, ties, Grid::ties)->Args({10, 1})->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(one_check, uniform, true)->Arg(30)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(one_check, lengths, false)->Arg(30)->Unit(benchmark::kMillisecond);
 BENCHMARK(read_medit)->Arg(10)->Arg(30)->Unit(benchmark::kMillisecond);
-BENCHMARK(bad_million)->Arg(55)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(bad_million)->Args({55, 2})->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -5,7 +5,7 @@
 // `exact_only`), and the counts are added to the caller's at the end. Results go to slots indexed
 // by i, so the caller combines them in index order and the output does not depend on the number
 // of threads. An exception stops the work, and the one of the least index is rethrown, as a loop
-// would have thrown it.
+// would have thrown it. concurrently() runs two different pieces of work side by side.
 #include "oracle/algebraic/filter_context.hpp"
 
 #include <algorithm>
@@ -65,6 +65,41 @@ void parallel_for(std::size_t n, int threads, Body body, const std::function<voi
   for (std::thread& th : pool) th.join();
   for (const FilterContext& c : contexts) caller.counts += c.counts;
   if (failure) std::rethrow_exception(failure);
+}
+
+// beside() on a thread of its own while main() runs on this one (which may itself use
+// parallel_for), when `threads` > 1; one after the other otherwise. The two must write apart.
+// The helper decides with its own filter context, its counts added to the caller's; an exception
+// of either is rethrown after both have finished (beside's first, as one after the other would).
+template <class Beside, class Main>
+void concurrently(int threads, Beside beside, Main main) {
+  if (threads <= 1) {
+    beside();
+    main();
+    return;
+  }
+  FilterContext& caller = filter_context();
+  FilterContext helper;
+  helper.exact_only = caller.exact_only;
+  std::exception_ptr failure;
+  std::thread side([&] {
+    FilterScope scope(helper);
+    try {
+      beside();
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  });
+  std::exception_ptr main_failure;
+  try {
+    main();
+  } catch (...) {
+    main_failure = std::current_exception();
+  }
+  side.join();
+  caller.counts += helper.counts;
+  if (failure) std::rethrow_exception(failure);
+  if (main_failure) std::rethrow_exception(main_failure);
 }
 
 }  // namespace anisocert::oracle

@@ -493,3 +493,65 @@ TEST(MeshCertifier3, StaticAndIntervalEnclosuresHoldTheExactValues) {
     EXPECT_FALSE(certify_mesh3(m, q).quality->violations.empty()) << "round " << round;
   }
 }
+
+namespace {
+
+void expect_same(const WitnessList& a, const WitnessList& b, const std::string& what) {
+  ASSERT_EQ(a.count(), b.count()) << what;
+  for (std::size_t i = 0; i < a.count(); ++i) {
+    EXPECT_EQ(a.places()[i].vertex, b.places()[i].vertex) << what << " " << i;
+    EXPECT_EQ(a.places()[i].triangle, b.places()[i].triangle) << what << " " << i;
+    EXPECT_EQ(a.places()[i].site, b.places()[i].site) << what << " " << i;
+  }
+  ASSERT_EQ(a.described().size(), b.described().size()) << what;
+  for (std::size_t i = 0; i < a.described().size(); ++i) EXPECT_EQ(a.described()[i].text, b.described()[i].text) << what << " " << i;
+}
+
+}  // namespace
+
+// The locally uniform search and the sliver measure run per tetrahedron and per face pair on every
+// thread, the other checks beside them on a thread of their own; findings are added in order, so
+// the report is the one thread's, witness for witness (with 5 described: the cap falls inside the
+// lists). Meshes: the Kuhn grid under the +¼ metric (violations; γ₀ = 2 makes configurations
+// γ₀-cospherical), under M = I (ties, exactly cospherical pairs), and randomly moved (random_grid).
+TEST(MeshCertifier3, OneThreadAndSeveralGiveTheSameReport) {
+  std::mt19937 rng(43);
+  const Rational q(1, 4);
+  for (const Mesh3& m : {kuhn_grid(4, {1, q, q, 1, q, 1}), kuhn_grid(3, {1, 0, 0, 1, 0, 1}), random_grid(rng, false), random_grid(rng, true)}) {
+    Certify3Options o = all_checks();
+    o.rho0 = 2, o.gamma0 = 2, o.min_quality = Rational(1, 2), o.min_angle = 30, o.described_witnesses = 5;
+    o.threads = 1;
+    const Certify3Report one = certify_mesh3(m, o);
+    o.threads = 3;
+    const Certify3Report three = certify_mesh3(m, o);
+    expect_same(one.uniform_violations, three.uniform_violations, "violations");
+    expect_same(one.uniform_ties, three.uniform_ties, "ties");
+    expect_same(one.rho_violations, three.rho_violations, "rho");
+    expect_same(one.gamma_violations, three.gamma_violations, "gamma");
+    EXPECT_EQ(one.insphere_tests, three.insphere_tests);
+    EXPECT_EQ(one.unmeasured, three.unmeasured);
+    ASSERT_TRUE(one.cosphericity && three.cosphericity);
+    const CosphericityReport &a = *one.cosphericity, &b = *three.cosphericity;
+    EXPECT_EQ(a.configurations, b.configurations);
+    EXPECT_EQ(a.cospherical, b.cospherical);
+    EXPECT_EQ(a.quasi_cospherical, b.quasi_cospherical);
+    EXPECT_EQ(a.at_boundary, b.at_boundary);
+    EXPECT_EQ(a.unmeasured, b.unmeasured);
+    EXPECT_EQ(a.least_critical, b.least_critical);
+    EXPECT_EQ(a.least_tetrahedra[0], b.least_tetrahedra[0]);
+    EXPECT_EQ(a.least_tetrahedra[1], b.least_tetrahedra[1]);
+    EXPECT_EQ(a.least_radius_edge, b.least_radius_edge);
+    expect_same(a.witnesses, b.witnesses, "sliver witnesses");
+    ASSERT_TRUE(one.valid && three.valid);
+    EXPECT_EQ(one.valid->failure_count, three.valid->failure_count);
+    ASSERT_TRUE(one.quality && three.quality && one.angles && three.angles);
+    expect_same(one.quality->violations, three.quality->violations, "quality");
+    expect_same(one.angles->violations, three.angles->violations, "angles");
+  }
+  // The cases are not vacuous: the first mesh has violations and γ₀-cospherical pairs, the second ties.
+  Certify3Options o = all_checks();
+  o.gamma0 = 2;
+  EXPECT_GT(certify_mesh3(kuhn_grid(4, {1, q, q, 1, q, 1}), o).uniform_violations.count(), 5u);
+  EXPECT_GT(certify_mesh3(kuhn_grid(4, {1, q, q, 1, q, 1}), o).cosphericity->witnesses.count(), 5u);
+  EXPECT_GT(certify_mesh3(kuhn_grid(3, {1, 0, 0, 1, 0, 1}), o).uniform_ties.count(), 5u);
+}

@@ -72,7 +72,7 @@ int run_certify3(CertifyCommandOptions& c, const oracle::CertifyOptions& o, cons
   oracle::Certify3Options o3;
   o3.valid = o.valid, o3.uniform = o.uniform, o3.metric = o.metric, o3.length_range = o.length_range;
   o3.min_quality = o.min_quality, o3.min_angle = o.min_angle, o3.rho0 = o.rho0, o3.gamma0 = o.gamma0;
-  o3.described_witnesses = o.described_witnesses;
+  o3.described_witnesses = o.described_witnesses, o3.threads = o.threads;
   const oracle::Certify3Report report = oracle::certify_mesh3(mesh, o3);
   io::CertifyVerdict v = io::certify_verdict(report, o3, mesh, c.bounds);
   v.metric_source = file.metric_source;

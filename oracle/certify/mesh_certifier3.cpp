@@ -2,6 +2,7 @@
 
 #include "geometry/circumellipsoid.hpp"
 #include "geometry/distortion_estimate.hpp"
+#include "oracle/parallel_for.hpp"
 #include "predicates/distortion.hpp"
 #include "predicates/insphere.hpp"
 
@@ -292,6 +293,71 @@ Sign insphere(const EnclosedMesh3& m, const std::array<int, 4>& t, int e, int v)
   });
 }
 
+// What the search of one tetrahedron found: one witness per tetrahedron, as in 2D
+// (mesh_certifier.cpp): the search stops at the first vertex strictly inside (`violation`), and
+// records one tie at most (`tie`, found before any violation); vertex −1 where none.
+struct UniformResult3 {
+  struct Found {
+    int vertex = -1, inside = -1;  // the metric's vertex, the vertex inside (or on) the sphere
+  };
+  Found tie, violation;
+  std::size_t insphere_tests = 0;
+  bool unmeasured = false;  // flat
+};
+
+// The search of tetrahedron ti in each of its vertices' metrics: the candidates in the box of its
+// circumellipsoid enclosed (every vertex when the enclosure fails), each decided exactly.
+UniformResult3 search(const EnclosedMesh3& m, const VertexGrid& grid, const std::vector<std::optional<std::array<I, 3>>>& diagonals,
+                      std::size_t ti) {
+  thread_local std::vector<int> candidates;
+  UniformResult3 u;
+  const auto& t = m.mesh.tetrahedra[ti];
+  const Sign orientation = m.orientation(ti);
+  if (orientation == Sign::zero) {
+    u.unmeasured = true;
+    return u;
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    const int v = t[i];
+    // A metric equal to an earlier vertex's (a constant field) asks the same question again.
+    const auto same = [&](std::size_t j) { return m.same_metric(t[j], v); };
+    if ((i > 0 && same(0)) || (i > 1 && same(1)) || (i > 2 && same(2))) continue;
+    const auto& Mv = m.metric[static_cast<std::size_t>(v)];
+    const auto ellipsoid = enclose_ellipsoid(m, t, v, diagonals[static_cast<std::size_t>(v)]);
+    if (ellipsoid) {
+      grid.query(ellipsoid->lo, ellipsoid->hi, candidates);
+    } else {
+      candidates.resize(m.mesh.vertices.size());
+      for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k] = static_cast<int>(k);
+    }
+    // With doubles only, the static in-sphere filter first (cheaper than the interval sphere
+    // test); when it cannot decide (nearly cospherical), the sphere test before the exact path.
+    // Its inputs but the candidate's, once.
+    const bool doubles = m.doubles(t, v);
+    std::array<double, 21> x;
+    if (doubles) x = *double_inputs(m, t, t[0], v);
+    for (const int e : candidates) {
+      if (e == t[0] || e == t[1] || e == t[2] || e == t[3]) continue;
+      std::optional<Sign> quick;
+      if (doubles && m.exact[static_cast<std::size_t>(e)]) {
+        const auto& p = m.approx[static_cast<std::size_t>(e)];
+        x[12] = p.x, x[13] = p.y, x[14] = p.z;
+        quick = predicates::static_sign<predicates::InSphereKernel, predicates::static_error_model<predicates::InSphereKernel>>(x);
+      }
+      if (!quick && ellipsoid && certainly_outside(*ellipsoid, m.vertex[static_cast<std::size_t>(e)], Mv)) continue;
+      ++u.insphere_tests;
+      const Sign s = (quick ? *quick : insphere(m, t, e, v)) * orientation;
+      if (s == Sign::negative || (s == Sign::zero && u.tie.vertex >= 0)) continue;
+      if (s == Sign::positive) {
+        u.violation = {v, e};
+        return u;
+      }
+      u.tie = {v, e};
+    }
+  }
+  return u;
+}
+
 // The edges (u, v), u < v, in increasing order: bucketed by u (a counting sort), each bucket's
 // few ends sorted and made unique; the same list as sorting all 6 per tetrahedron, in linear time.
 std::vector<std::pair<int, int>> unique_edges(const std::vector<std::array<int, 4>>& tets, std::size_t vertices) {
@@ -315,6 +381,33 @@ std::vector<std::pair<int, int>> unique_edges(const std::vector<std::array<int, 
   return e;
 }
 
+// The locally uniform search on every thread, its findings added in tetrahedron order: the report
+// does not depend on the number of threads.
+void check_uniform(const EnclosedMesh3& m, int threads, Certify3Report& r) {
+  const auto& mesh = m.mesh;
+  r.uniform_checked = true;
+  const VertexGrid grid(m.approx);
+  std::vector<std::optional<std::array<I, 3>>> diagonals(mesh.vertices.size());
+  for (std::size_t v = 0; v < diagonals.size(); ++v) diagonals[v] = inverse_diagonal(m.metric[v]);
+  const std::size_t n = mesh.tetrahedra.size();
+  std::vector<UniformResult3> results(n);
+  parallel_for(n, thread_count(threads), [&](std::size_t t) { results[t] = search(m, grid, diagonals, t); });
+  for (std::size_t t = 0; t < n; ++t) {
+    const UniformResult3& u = results[t];
+    r.unmeasured += u.unmeasured ? 1 : 0;
+    r.insphere_tests += u.insphere_tests;
+    const int tetrahedron = static_cast<int>(t);
+    for (const auto& [f, strict] : {std::pair{u.tie, false}, std::pair{u.violation, true}}) {
+      if (f.vertex < 0) continue;
+      const UniformResult3::Found found = f;  // named, not bound: clang 14 cannot capture bindings
+      (strict ? r.uniform_violations : r.uniform_ties).add(found.vertex, tetrahedron, found.inside, [&, strict = strict] {
+        return "vertex " + std::to_string(found.inside) + " is " + (strict ? "strictly inside" : "on") + " the circumsphere of tetrahedron " +
+               std::to_string(tetrahedron) + " in the metric of its vertex " + std::to_string(found.vertex);
+      });
+    }
+  }
+}
+
 }  // namespace
 
 Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certify3Options& o) {
@@ -323,74 +416,30 @@ Certify3Report certify_mesh3(const geometry::Mesh3<Rational>& mesh, const Certif
   r.tetrahedra = mesh.tetrahedra.size();
   r.uniform_violations = WitnessList(o.described_witnesses);
   r.uniform_ties = WitnessList(o.described_witnesses);
-  if (o.valid) r.valid = check_tetrahedralization(m, o.described_witnesses);
-  const bool has_metrics = mesh.metrics.size() == mesh.vertices.size() && !mesh.metrics.empty();
-  if (o.uniform && has_metrics) {
-    r.uniform_checked = true;
-    const VertexGrid grid(m.approx);
-    std::vector<std::optional<std::array<I, 3>>> diagonals(mesh.vertices.size());
-    for (std::size_t v = 0; v < diagonals.size(); ++v) diagonals[v] = inverse_diagonal(m.metric[v]);
-    std::vector<int> candidates;
-    for (std::size_t ti = 0; ti < mesh.tetrahedra.size(); ++ti) {
-      const auto& t = mesh.tetrahedra[ti];
-      const Sign orientation = m.orientation(ti);
-      if (orientation == Sign::zero) {
-        ++r.unmeasured;
-        continue;
-      }
-      // One witness per tetrahedron, as in 2D (mesh_certifier.cpp): its search stops at the first
-      // site strictly inside, and records one tie at most.
-      const int tetrahedron = static_cast<int>(ti);
-      bool violated = false, tied = false;
-      for (std::size_t i = 0; i < 4 && !violated; ++i) {
-        const int v = t[i];
-        // A metric equal to an earlier vertex's (a constant field) asks the same question again.
-        const auto same = [&](std::size_t j) { return m.same_metric(t[j], v); };
-        if ((i > 0 && same(0)) || (i > 1 && same(1)) || (i > 2 && same(2))) continue;
-        const auto& Mv = m.metric[static_cast<std::size_t>(v)];
-        const auto ellipsoid = enclose_ellipsoid(m, t, v, diagonals[static_cast<std::size_t>(v)]);
-        if (ellipsoid) {
-          grid.query(ellipsoid->lo, ellipsoid->hi, candidates);
-        } else {
-          candidates.resize(mesh.vertices.size());
-          for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k] = static_cast<int>(k);
-        }
-        for (const int e : candidates) {
-          if (e == t[0] || e == t[1] || e == t[2] || e == t[3]) continue;
-          // With doubles only, the static in-sphere filter first (cheaper than the interval sphere
-          // test); when it cannot decide (nearly cospherical), the sphere test before the exact path.
-          const auto x = double_inputs(m, t, e, v);
-          const std::optional<Sign> quick = x ? predicates::static_sign<predicates::InSphereKernel, predicates::static_error_model<predicates::InSphereKernel>>(*x) : std::nullopt;
-          if (!quick && ellipsoid && certainly_outside(*ellipsoid, m.vertex[static_cast<std::size_t>(e)], Mv)) continue;
-          ++r.insphere_tests;
-          const Sign s = (quick ? *quick : insphere(m, t, e, v)) * orientation;
-          if (s == Sign::negative || (s == Sign::zero && tied)) continue;
-          const auto text = [&, e, v] {
-            return "vertex " + std::to_string(e) + " is " + (s == Sign::positive ? "strictly inside" : "on") +
-                   " the circumsphere of tetrahedron " + std::to_string(tetrahedron) + " in the metric of its vertex " + std::to_string(v);
-          };
-          if (s == Sign::positive) {
-            r.uniform_violations.add(v, tetrahedron, e, text);
-            violated = true;
-            break;
-          }
-          r.uniform_ties.add(v, tetrahedron, e, text);
-          tied = true;
-        }
-      }
-    }
-  }
-  if (o.uniform && has_metrics) r.cosphericity = check_quasi_cosphericity(m, o.gamma0, o.described_witnesses);
   r.rho_violations = WitnessList(o.described_witnesses);
   r.gamma_violations = WitnessList(o.described_witnesses);
-  if ((o.rho0 || o.gamma0) && has_metrics) check_lu_bounds(m, o, r);
-  if (o.metric && has_metrics) {
-    const std::vector<std::pair<int, int>> edges = unique_edges(mesh.tetrahedra, mesh.vertices.size());
-    r.lengths = check_lengths(m, edges, o.length_range, o.described_witnesses);
-    r.quality = check_quality(m, o.min_quality, o.described_witnesses);
-    r.angles = check_angles(m, o.min_angle, o.described_witnesses);
-    r.ugawg = ugawg_measures(m, edges, r.valid && r.valid->orientation == "negative" ? -1 : 1);
-  }
+  const bool has_metrics = mesh.metrics.size() == mesh.vertices.size() && !mesh.metrics.empty();
+  const int threads = thread_count(o.threads);
+  // The per-element checks on a thread of their own beside the locally uniform search and the
+  // sliver measure, which run on every thread: they write different parts of the report.
+  concurrently(
+      threads,
+      [&] {
+        if (o.valid) r.valid = check_tetrahedralization(m, o.described_witnesses);
+        if ((o.rho0 || o.gamma0) && has_metrics) check_lu_bounds(m, o, r);
+        if (o.metric && has_metrics) {
+          const std::vector<std::pair<int, int>> edges = unique_edges(mesh.tetrahedra, mesh.vertices.size());
+          r.lengths = check_lengths(m, edges, o.length_range, o.described_witnesses);
+          r.quality = check_quality(m, o.min_quality, o.described_witnesses);
+          r.angles = check_angles(m, o.min_angle, o.described_witnesses);
+          r.ugawg = ugawg_measures(m, edges, r.valid && r.valid->orientation == "negative" ? -1 : 1);
+        }
+      },
+      [&] {
+        if (!o.uniform || !has_metrics) return;
+        check_uniform(m, threads, r);
+        r.cosphericity = check_quasi_cosphericity(m, o.gamma0, o.described_witnesses, threads);
+      });
   return r;
 }
 

@@ -40,6 +40,7 @@ struct Certify3Options {
   std::optional<Rational> min_angle;                          // verdict: every dihedral angle at least it (degrees, (0, 90])
   std::optional<Rational> rho0, gamma0;                       // LU's bounds: radius-edge ratio, distortion (with metrics)
   std::size_t described_witnesses = default_described_witnesses;
+  int threads = 0;  // for the locally uniform check and the sliver measure; 0: one per core (the same report)
 };
 
 struct Certify3Report {

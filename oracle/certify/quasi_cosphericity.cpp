@@ -1,6 +1,7 @@
 #include "oracle/certify/quasi_cosphericity.hpp"
 
 #include "geometry/circumellipsoid.hpp"
+#include "oracle/parallel_for.hpp"
 #include "predicates/quasi_cospherical.hpp"
 
 #include <algorithm>
@@ -73,114 +74,143 @@ double radius_edge_ratio(const std::array<predicates::Point3<double>, 5>& p, con
   return std::sqrt(r2 / d2);
 }
 
+// What the measure of one configuration found, for the report (in configuration order).
+struct ConfigurationResult {
+  bool flat = false;  // a flat tetrahedron: not a configuration
+  double least = INFINITY;  // γ*, the least over the five metrics
+  // `counted`: γ₀-cospherical in some metric (decided strictly); `boundary`: exactly at γ₀ in
+  // some metric, which counts only when no metric makes it strict.
+  bool counted = false, boundary = false, measured = true, exactly = false;
+  struct {
+    int vertex = -1;  // the metric's, where counted
+    double critical = 0, ratio = 0;
+  } witness;
+};
+
+// Configuration c in each of its vertices' metrics; k = γ₀⁴ − 1 and its enclosure ki.
+ConfigurationResult measure(const EnclosedMesh3& m, const Configuration& c, const std::optional<Rational>& gamma0, const Rational& k,
+                            const FilterInterval& ki) {
+  const auto& mesh = m.mesh;
+  ConfigurationResult u;
+  if (m.orientation(static_cast<std::size_t>(c.tetrahedron[0])) == Sign::zero || m.orientation(static_cast<std::size_t>(c.tetrahedron[1])) == Sign::zero) {
+    u.flat = true;
+    return u;
+  }
+  std::array<FilterInterval, 22> xi;
+  std::array<predicates::Point3<double>, 5> approx;
+  for (std::size_t i = 0; i < 5; ++i) {
+    const auto vi = static_cast<std::size_t>(c.vertex[i]);
+    const auto& p = m.vertex[vi];
+    xi[3 * i] = p.x, xi[3 * i + 1] = p.y, xi[3 * i + 2] = p.z;
+    approx[i] = m.approx[vi];
+  }
+  xi[21] = ki;
+  for (std::size_t i = 0; i < 5; ++i) {
+    const int v = c.vertex[i];
+    if (std::any_of(c.vertex.begin(), c.vertex.begin() + static_cast<std::ptrdiff_t>(i), [&](int w) { return m.same_metric(w, v); })) continue;
+    const auto& M = m.metric[static_cast<std::size_t>(v)];
+    xi[15] = M.m11, xi[16] = M.m12, xi[17] = M.m13, xi[18] = M.m22, xi[19] = M.m23, xi[20] = M.m33;
+    // The sign of kernel K on this configuration in M_v: with doubles only (point enclosures),
+    // the double evaluation checked for rounding, intervals, then expansions (a lattice's zeros
+    // are decided at the first); else intervals, then rationals.
+    const auto sign_of = [&]<class K>(K) {
+      std::array<FilterInterval, K::arity> in;
+      for (std::size_t j = 0; j < K::arity; ++j) in[j] = xi[j];
+      if (std::all_of(in.begin(), in.end(), [](const FilterInterval& e) { return e.lo == e.hi; })) {
+        std::array<double, K::arity> d;
+        for (std::size_t j = 0; j < K::arity; ++j) d[j] = in[j].lo;
+        return predicates::filtered_sign_slow<K>(d);
+      }
+      return predicates::interval_then_exact<K>(in, [&] {
+        std::array<Rational, K::arity> q;
+        for (std::size_t j = 0; j < 5 && 3 * j < K::arity; ++j) {
+          const auto& p = mesh.vertices[static_cast<std::size_t>(c.vertex[j])];
+          q[3 * j] = p.x, q[3 * j + 1] = p.y, q[3 * j + 2] = p.z;
+        }
+        const auto& N = mesh.metrics[static_cast<std::size_t>(v)];
+        q[15] = N.m11, q[16] = N.m12, q[17] = N.m13, q[18] = N.m22, q[19] = N.m23, q[20] = N.m33;
+        if constexpr (K::arity == 22) q[21] = k;
+        return q;
+      });
+    };
+    // e on the M_v-sphere: the static filter when every input is a double, else as the others.
+    const bool doubles = m.doubles(c.vertex, v);
+    std::array<double, 21> x;
+    for (std::size_t j = 0; j < 5; ++j) x[3 * j] = approx[j].x, x[3 * j + 1] = approx[j].y, x[3 * j + 2] = approx[j].z;
+    const auto Md = midpoint(M);
+    x[15] = Md.m11, x[16] = Md.m12, x[17] = Md.m13, x[18] = Md.m22, x[19] = Md.m23, x[20] = Md.m33;
+    const Sign on = doubles ? predicates::filtered_sign<predicates::InSphereKernel>(x) : sign_of(predicates::InSphereKernel{});
+    double critical = 1;
+    if (on == Sign::zero) {
+      u.exactly = true;
+    } else {
+      const auto [c2, c3] = predicates::lifted_gram_invariants(x);
+      critical = critical_distortion(predicates::InSphereKernel::eval(x), c2, c3, on);
+    }
+    if (std::isnan(critical)) u.measured = false;
+    else u.least = std::min(u.least, critical);
+    if (!gamma0 || u.counted) continue;
+    // The kernels share G: its invariants enclosed once, each kernel's sign read off them when
+    // they decide it (an enclosure of the same polynomial), else the kernel's own evaluation.
+    std::array<FilterInterval, 21> x21;
+    for (std::size_t j = 0; j < 21; ++j) x21[j] = xi[j];
+    const FilterInterval c1 = predicates::InSphereKernel::eval(x21);
+    const auto [c2, c3] = predicates::lifted_gram_invariants(x21);
+    const FilterInterval A = predicates::one_negative_polynomial(c1, c2, c3, ki), B = predicates::two_negative_polynomial(c1, c2, c3, ki);
+    const auto shared_sign = [&, c2 = c2, c3 = c3]<class K>(K kernel) {
+      std::optional<Sign> known;
+      if constexpr (std::is_same_v<K, predicates::InSphereKernel>) known = c1.sign();
+      if constexpr (std::is_same_v<K, predicates::LiftedGramSecondKernel>) known = c2.sign();
+      if constexpr (std::is_same_v<K, predicates::LiftedGramThirdKernel>) known = c3.sign();
+      if constexpr (std::is_same_v<K, predicates::CosphericalOneNegativeKernel>) known = A.sign();
+      if constexpr (std::is_same_v<K, predicates::CosphericalTwoNegativeKernel>) known = B.sign();
+      return known ? *known : sign_of(kernel);
+    };
+    const Sign s = predicates::quasi_cospherical_from(shared_sign);
+    if (s == Sign::negative) continue;
+    if (s == Sign::zero) {
+      u.boundary = true;
+      continue;
+    }
+    u.counted = true;
+    u.witness = {v, critical, radius_edge_ratio(approx, Md)};
+  }
+  return u;
+}
+
 }  // namespace
 
-CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::optional<Rational>& gamma0, std::size_t described) {
-  const auto& mesh = m.mesh;
+CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::optional<Rational>& gamma0, std::size_t described, int threads) {
   CosphericityReport r;
   r.witnesses = WitnessList(described);
   r.decided = gamma0.has_value();
   const Rational k = gamma0 ? *gamma0 * *gamma0 * *gamma0 * *gamma0 - 1 : Rational(0);
   const FilterInterval ki = enclose(k);
-  for (const Configuration& c : configurations(m)) {
-    if (m.orientation(static_cast<std::size_t>(c.tetrahedron[0])) == Sign::zero || m.orientation(static_cast<std::size_t>(c.tetrahedron[1])) == Sign::zero)
-      continue;
+  const std::vector<Configuration> all = configurations(m);
+  std::vector<ConfigurationResult> results(all.size());
+  parallel_for(all.size(), thread_count(threads), [&](std::size_t i) { results[i] = measure(m, all[i], gamma0, k, ki); });
+  // In configuration order: the report does not depend on the number of threads.
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Configuration& c = all[i];
+    const ConfigurationResult& u = results[i];
+    if (u.flat) continue;
     ++r.configurations;
-    std::array<FilterInterval, 22> xi;
-    std::array<predicates::Point3<double>, 5> approx;
-    for (std::size_t i = 0; i < 5; ++i) {
-      const auto vi = static_cast<std::size_t>(c.vertex[i]);
-      const auto& p = m.vertex[vi];
-      xi[3 * i] = p.x, xi[3 * i + 1] = p.y, xi[3 * i + 2] = p.z;
-      approx[i] = m.approx[vi];
-    }
-    xi[21] = ki;
-    double least = INFINITY;
-    // `counted`: γ₀-cospherical in some metric (decided strictly); `boundary`: exactly at γ₀ in
-    // some metric, which counts only when no metric makes it strict.
-    bool counted = false, boundary = false, measured = true, exactly = false;
-    for (std::size_t i = 0; i < 5; ++i) {
-      const int v = c.vertex[i];
-      if (std::any_of(c.vertex.begin(), c.vertex.begin() + static_cast<std::ptrdiff_t>(i), [&](int u) { return m.same_metric(u, v); })) continue;
-      const auto& M = m.metric[static_cast<std::size_t>(v)];
-      xi[15] = M.m11, xi[16] = M.m12, xi[17] = M.m13, xi[18] = M.m22, xi[19] = M.m23, xi[20] = M.m33;
-      // The sign of kernel K on this configuration in M_v: with doubles only (point enclosures),
-      // the double evaluation checked for rounding, intervals, then expansions (a lattice's zeros
-      // are decided at the first); else intervals, then rationals.
-      const auto sign_of = [&]<class K>(K) {
-        std::array<FilterInterval, K::arity> in;
-        for (std::size_t j = 0; j < K::arity; ++j) in[j] = xi[j];
-        if (std::all_of(in.begin(), in.end(), [](const FilterInterval& e) { return e.lo == e.hi; })) {
-          std::array<double, K::arity> d;
-          for (std::size_t j = 0; j < K::arity; ++j) d[j] = in[j].lo;
-          return predicates::filtered_sign_slow<K>(d);
-        }
-        return predicates::interval_then_exact<K>(in, [&] {
-          std::array<Rational, K::arity> q;
-          for (std::size_t j = 0; j < 5 && 3 * j < K::arity; ++j) {
-            const auto& p = mesh.vertices[static_cast<std::size_t>(c.vertex[j])];
-            q[3 * j] = p.x, q[3 * j + 1] = p.y, q[3 * j + 2] = p.z;
-          }
-          const auto& N = mesh.metrics[static_cast<std::size_t>(v)];
-          q[15] = N.m11, q[16] = N.m12, q[17] = N.m13, q[18] = N.m22, q[19] = N.m23, q[20] = N.m33;
-          if constexpr (K::arity == 22) q[21] = k;
-          return q;
-        });
-      };
-      // e on the M_v-sphere: the static filter when every input is a double, else as the others.
-      const bool doubles = m.doubles(c.vertex, v);
-      std::array<double, 21> x;
-      for (std::size_t j = 0; j < 5; ++j) x[3 * j] = approx[j].x, x[3 * j + 1] = approx[j].y, x[3 * j + 2] = approx[j].z;
-      const auto Md = midpoint(M);
-      x[15] = Md.m11, x[16] = Md.m12, x[17] = Md.m13, x[18] = Md.m22, x[19] = Md.m23, x[20] = Md.m33;
-      const Sign on = doubles ? predicates::filtered_sign<predicates::InSphereKernel>(x) : sign_of(predicates::InSphereKernel{});
-      double critical = 1;
-      if (on == Sign::zero) {
-        exactly = true;
-      } else {
-        const auto [c2, c3] = predicates::lifted_gram_invariants(x);
-        critical = critical_distortion(predicates::InSphereKernel::eval(x), c2, c3, on);
-      }
-      if (std::isnan(critical)) measured = false;
-      else least = std::min(least, critical);
-      if (!gamma0 || counted) continue;
-      // The kernels share G: its invariants enclosed once, each kernel's sign read off them when
-      // they decide it (an enclosure of the same polynomial), else the kernel's own evaluation.
-      std::array<FilterInterval, 21> x21;
-      for (std::size_t j = 0; j < 21; ++j) x21[j] = xi[j];
-      const FilterInterval c1 = predicates::InSphereKernel::eval(x21);
-      const auto [c2, c3] = predicates::lifted_gram_invariants(x21);
-      const FilterInterval A = predicates::one_negative_polynomial(c1, c2, c3, ki), B = predicates::two_negative_polynomial(c1, c2, c3, ki);
-      const auto shared_sign = [&, c2 = c2, c3 = c3]<class K>(K kernel) {
-        std::optional<Sign> known;
-        if constexpr (std::is_same_v<K, predicates::InSphereKernel>) known = c1.sign();
-        if constexpr (std::is_same_v<K, predicates::LiftedGramSecondKernel>) known = c2.sign();
-        if constexpr (std::is_same_v<K, predicates::LiftedGramThirdKernel>) known = c3.sign();
-        if constexpr (std::is_same_v<K, predicates::CosphericalOneNegativeKernel>) known = A.sign();
-        if constexpr (std::is_same_v<K, predicates::CosphericalTwoNegativeKernel>) known = B.sign();
-        return known ? *known : sign_of(kernel);
-      };
-      const Sign s = predicates::quasi_cospherical_from(shared_sign);
-      if (s == Sign::negative) continue;
-      if (s == Sign::zero) {
-        boundary = true;
-        continue;
-      }
-      counted = true;
+    if (u.counted) {
       ++r.quasi_cospherical;
-      const double ratio = radius_edge_ratio(approx, Md);
-      if (ratio < r.least_radius_edge) r.least_radius_edge = ratio, r.least_radius_edge_tetrahedra[0] = c.tetrahedron[0], r.least_radius_edge_tetrahedra[1] = c.tetrahedron[1];
-      r.witnesses.add(v, c.tetrahedron[0], c.tetrahedron[1], [&] {
+      const auto& w = u.witness;
+      if (w.ratio < r.least_radius_edge) r.least_radius_edge = w.ratio, r.least_radius_edge_tetrahedra[0] = c.tetrahedron[0], r.least_radius_edge_tetrahedra[1] = c.tetrahedron[1];
+      r.witnesses.add(w.vertex, c.tetrahedron[0], c.tetrahedron[1], [&] {
         return "tetrahedra " + std::to_string(c.tetrahedron[0]) + " and " + std::to_string(c.tetrahedron[1]) + " (vertices " +
                std::to_string(c.vertex[0]) + " " + std::to_string(c.vertex[1]) + " " + std::to_string(c.vertex[2]) + " " +
                std::to_string(c.vertex[3]) + " " + std::to_string(c.vertex[4]) + ") are γ₀-cospherical in the metric of vertex " +
-               std::to_string(v) + " (critical distortion about " + std::to_string(critical) + ", radius-edge ratio about " + std::to_string(ratio) + ")";
+               std::to_string(w.vertex) + " (critical distortion about " + std::to_string(w.critical) + ", radius-edge ratio about " +
+               std::to_string(w.ratio) + ")";
       });
     }
-    if (boundary && !counted) ++r.at_boundary;
-    if (!measured) ++r.unmeasured;
-    if (exactly) ++r.cospherical;
-    if (least < r.least_critical) r.least_critical = least, r.least_tetrahedra[0] = c.tetrahedron[0], r.least_tetrahedra[1] = c.tetrahedron[1];
+    if (u.boundary && !u.counted) ++r.at_boundary;
+    if (!u.measured) ++r.unmeasured;
+    if (u.exactly) ++r.cospherical;
+    if (u.least < r.least_critical) r.least_critical = u.least, r.least_tetrahedra[0] = c.tetrahedron[0], r.least_tetrahedra[1] = c.tetrahedron[1];
   }
   return r;
 }

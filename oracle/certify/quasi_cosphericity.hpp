@@ -36,7 +36,8 @@ struct CosphericityReport {
   WitnessList witnesses;  // vertex (the metric), tetrahedron, the other tetrahedron
 };
 
+// On `threads` threads (0: one per core); the report does not depend on their number.
 CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::optional<Rational>& gamma0,
-                                            std::size_t described = all_witnesses);
+                                            std::size_t described = all_witnesses, int threads = 1);
 
 }  // namespace anisocert::oracle
