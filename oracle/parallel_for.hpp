@@ -5,7 +5,8 @@
 // `exact_only`), and the counts are added to the caller's at the end. Results go to slots indexed
 // by i, so the caller combines them in index order and the output does not depend on the number
 // of threads. An exception stops the work, and the one of the least index is rethrown, as a loop
-// would have thrown it. concurrently() runs two different pieces of work side by side.
+// would have thrown it. parallel_in_order() merges results in order a block at a time;
+// concurrently() runs two different pieces of work side by side.
 #include "oracle/algebraic/filter_context.hpp"
 
 #include <algorithm>
@@ -65,6 +66,19 @@ void parallel_for(std::size_t n, int threads, Body body, const std::function<voi
   for (std::thread& th : pool) th.join();
   for (const FilterContext& c : contexts) caller.counts += c.counts;
   if (failure) std::rethrow_exception(failure);
+}
+
+// compute(i) for every i in [0, n) on `threads` threads (parallel_for), and merge(i, result) on
+// this thread in index order: the output does not depend on the number of threads. A block of
+// indices at a time, so that the results held are one block's, not n's.
+template <class Compute, class Merge>
+void parallel_in_order(std::size_t n, int threads, Compute compute, Merge merge, std::size_t block = std::size_t{1} << 15) {
+  std::vector<decltype(compute(std::size_t{0}))> results(std::min(n, block));
+  for (std::size_t begin = 0; begin < n; begin += block) {
+    const std::size_t size = std::min(block, n - begin);
+    parallel_for(size, threads, [&](std::size_t i) { results[i] = compute(begin + i); });
+    for (std::size_t i = 0; i < size; ++i) merge(begin + i, results[i]);
+  }
 }
 
 // beside() on a thread of its own while main() runs on this one (which may itself use

@@ -389,11 +389,8 @@ void check_uniform(const EnclosedMesh3& m, int threads, Certify3Report& r) {
   const VertexGrid grid(m.approx);
   std::vector<std::optional<std::array<I, 3>>> diagonals(mesh.vertices.size());
   for (std::size_t v = 0; v < diagonals.size(); ++v) diagonals[v] = inverse_diagonal(m.metric[v]);
-  const std::size_t n = mesh.tetrahedra.size();
-  std::vector<UniformResult3> results(n);
-  parallel_for(n, thread_count(threads), [&](std::size_t t) { results[t] = search(m, grid, diagonals, t); });
-  for (std::size_t t = 0; t < n; ++t) {
-    const UniformResult3& u = results[t];
+  const auto compute = [&](std::size_t t) { return search(m, grid, diagonals, t); };
+  parallel_in_order(mesh.tetrahedra.size(), thread_count(threads), compute, [&](std::size_t t, const UniformResult3& u) {
     r.unmeasured += u.unmeasured ? 1 : 0;
     r.insphere_tests += u.insphere_tests;
     const int tetrahedron = static_cast<int>(t);
@@ -405,7 +402,7 @@ void check_uniform(const EnclosedMesh3& m, int threads, Certify3Report& r) {
                std::to_string(tetrahedron) + " in the metric of its vertex " + std::to_string(found.vertex);
       });
     }
-  }
+  });
 }
 
 }  // namespace

@@ -22,6 +22,9 @@
 // within its bounding box enclosed in interval arithmetic (the centre solved by Cramer's rule,
 // the half-widths r·√((M⁻¹)ᵢᵢ)); when the enclosure fails (a nearly flat tetrahedron), every
 // vertex is a candidate. Each decision is the exact in-sphere sign, interval first.
+// Threads: the search per tetrahedron and the sliver measure per face pair on every thread, the
+// other checks beside them on a thread of their own; findings are added in order, so the report
+// does not depend on the number of threads.
 #include "geometry/mesh3.hpp"
 #include "oracle/certify/metric_checks.hpp"
 #include "oracle/certify/quasi_cosphericity.hpp"

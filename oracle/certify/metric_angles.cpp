@@ -101,6 +101,11 @@ class Dihedral {
   }
   bool obtuse_or_right() const {
     const auto e = enclosure(FilterInterval(0));
+    if (m_.doubles(v_, by_)) {  // the double evaluation checked for rounding decides a right angle's exact 0
+      std::array<double, 18> x;
+      for (std::size_t i = 0; i < 18; ++i) x[i] = e[i].lo;
+      return predicates::filtered_sign<predicates::DihedralDotKernel>(x) != Sign::positive;
+    }
     std::array<FilterInterval, 18> head;
     std::copy_n(e.begin(), 18, head.begin());
     return predicates::interval_then_exact<predicates::DihedralDotKernel>(head, [&] {

@@ -19,23 +19,27 @@ struct Configuration {
   std::array<int, 2> tetrahedron;
 };
 
-// A face in exactly two tetrahedra (validity reports the others).
-std::vector<Configuration> configurations(const EnclosedMesh3& m) {
+// The faces in exactly two tetrahedra (validity reports the others): the index in m.faces of the
+// first of each pair.
+std::vector<std::size_t> shared_faces(const EnclosedMesh3& m) {
   const auto& faces = m.faces;
-  std::vector<Configuration> c;
+  std::vector<std::size_t> first;
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i;
     while (j < faces.size() && faces[j].sorted == faces[i].sorted) ++j;
-    if (j == i + 2) {
-      const auto& f = faces[i].sorted;
-      const auto opposite = [&](const TetrahedronFace& g) {
-        return m.mesh.tetrahedra[static_cast<std::size_t>(g.tetrahedron)][static_cast<std::size_t>(g.opposite)];
-      };
-      c.push_back({{f[0], f[1], f[2], opposite(faces[i]), opposite(faces[i + 1])}, {faces[i].tetrahedron, faces[i + 1].tetrahedron}});
-    }
+    if (j == i + 2) first.push_back(i);
     i = j;
   }
-  return c;
+  return first;
+}
+
+// The configuration of the face pair m.faces[i], m.faces[i + 1].
+Configuration configuration(const EnclosedMesh3& m, std::size_t i) {
+  const TetrahedronFace &f = m.faces[i], &g = m.faces[i + 1];
+  const auto opposite = [&](const TetrahedronFace& h) {
+    return m.mesh.tetrahedra[static_cast<std::size_t>(h.tetrahedron)][static_cast<std::size_t>(h.opposite)];
+  };
+  return {{f.sorted[0], f.sorted[1], f.sorted[2], opposite(f), opposite(g)}, {f.tetrahedron, g.tetrahedron}};
 }
 
 // γ* from c₁ = tr GM, c₂, c₃ (the eigenvalues of GM by the trigonometric solution of the cubic,
@@ -186,14 +190,12 @@ CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::o
   r.decided = gamma0.has_value();
   const Rational k = gamma0 ? *gamma0 * *gamma0 * *gamma0 * *gamma0 - 1 : Rational(0);
   const FilterInterval ki = enclose(k);
-  const std::vector<Configuration> all = configurations(m);
-  std::vector<ConfigurationResult> results(all.size());
-  parallel_for(all.size(), thread_count(threads), [&](std::size_t i) { results[i] = measure(m, all[i], gamma0, k, ki); });
+  const std::vector<std::size_t> pairs = shared_faces(m);
+  const auto compute = [&](std::size_t i) { return measure(m, configuration(m, pairs[i]), gamma0, k, ki); };
   // In configuration order: the report does not depend on the number of threads.
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    const Configuration& c = all[i];
-    const ConfigurationResult& u = results[i];
-    if (u.flat) continue;
+  parallel_in_order(pairs.size(), thread_count(threads), compute, [&](std::size_t i, const ConfigurationResult& u) {
+    const Configuration c = configuration(m, pairs[i]);
+    if (u.flat) return;
     ++r.configurations;
     if (u.counted) {
       ++r.quasi_cospherical;
@@ -211,7 +213,7 @@ CosphericityReport check_quasi_cosphericity(const EnclosedMesh3& m, const std::o
     if (!u.measured) ++r.unmeasured;
     if (u.exactly) ++r.cospherical;
     if (u.least < r.least_critical) r.least_critical = u.least, r.least_tetrahedra[0] = c.tetrahedron[0], r.least_tetrahedra[1] = c.tetrahedron[1];
-  }
+  });
   return r;
 }
 
