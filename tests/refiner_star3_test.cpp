@@ -6,6 +6,7 @@
 // consistent (LU Definition 3.3) and an interior site's link a closed sphere.
 #include "predicates/insphere_perturbed.hpp"
 #include "refiners/star/gift_wrap3.hpp"
+#include "refiners/star/star_update3.hpp"
 
 #include <gtest/gtest.h>
 
@@ -258,4 +259,54 @@ TEST(GiftWrapStar3, ConflictZoneDoesNotGrowUnderInsertion) {
   }
   EXPECT_GT(changed, 5u);  // insertions that changed the star
   EXPECT_GT(probes_inside, 1000u);
+}
+
+// Stars kept by insertion (Bowyer–Watson restricted to each star, refiners/star/star_update3.hpp)
+// equal the stars wrapped from scratch after every insertion: sites added one by one to a box's
+// corners and a first few, on the integer lattice (cospherical fives: the perturbation decides) and
+// at random, in I, diag(1, 4, 9) and random metrics. Open stars (the corners') are wrapped again
+// when the hull around them changes; most updates are in place (counted).
+TEST(StarUpdate3, InsertionGivesTheWrappedStar) {
+  using anisocert::refiners::star::insert_into_star3;
+  using anisocert::refiners::star::Star3;
+  using anisocert::refiners::star::Star3Update;
+  std::mt19937 rng(42);
+  std::uniform_int_distribution<int> coordinate(-3, 3);
+  std::size_t updated = 0, recomputed = 0, unchanged = 0;
+  const auto same = [](const Star3& x, const Star3& y) {
+    std::set<std::array<int, 3>> a, b;
+    for (const auto& t : x.link) a.insert(canonical(t));
+    for (const auto& t : y.link) b.insert(canonical(t));
+    return a == b && a.size() == x.link.size();
+  };
+  for (int round = 0; round < 9; ++round) {
+    const Sym3<double> M = round % 3 == 0 ? Sym3<double>{1, 0, 0, 1, 0, 1} : round % 3 == 1 ? Sym3<double>{1, 0, 0, 4, 0, 9} : random_metric(rng);
+    std::vector<Point3<double>> p;
+    std::set<std::array<double, 3>> seen;
+    for (int k = 0; k < 8; ++k) {
+      p.push_back({k & 1 ? 4.0 : -4.0, k & 2 ? 4.0 : -4.0, k & 4 ? 4.0 : -4.0});
+      seen.insert({p.back().x, p.back().y, p.back().z});
+    }
+    std::vector<Star3> stars;
+    for (int v = 0; v < 8; ++v) stars.push_back(gift_wrap_star3(v, all_but(v, p.size()), p, M));
+    for (int step = 0; step < 40; ++step) {
+      Point3<double> q;
+      do q = {double(coordinate(rng)), double(coordinate(rng)), double(coordinate(rng))};
+      while (!seen.insert({q.x, q.y, q.z}).second);
+      p.push_back(q);
+      const int k = static_cast<int>(p.size()) - 1;
+      for (int v = 0; v < k; ++v) {
+        Star3& s = stars[static_cast<std::size_t>(v)];
+        const Star3Update u = insert_into_star3(s, v, k, p, M);
+        const Star3 wrapped = gift_wrap_star3(v, all_but(v, p.size()), p, M);
+        if (u == Star3Update::recompute) s = wrapped;
+        updated += u == Star3Update::updated, recomputed += u == Star3Update::recompute, unchanged += u == Star3Update::unchanged;
+        ASSERT_TRUE(same(s, wrapped)) << "round " << round << ", step " << step << ", star of " << v;
+      }
+      stars.push_back(gift_wrap_star3(k, all_but(k, p.size()), p, M));
+    }
+  }
+  EXPECT_GT(updated, 1000u);
+  EXPECT_GT(unchanged, 1000u);
+  EXPECT_LT(recomputed, updated / 4);
 }
