@@ -74,6 +74,7 @@ void certify_small(const io::MeshFile& f) {
     if (f.mesh3.tetrahedra.size() <= max_certified_triangles && f.mesh3.vertices.size() <= 4 * max_certified_triangles) {
       oracle::Certify3Options o;
       o.uniform = o.metric = !f.mesh3.metrics.empty();
+      o.threads = 1;  // a small mesh per input: threads would cost more than they save
       (void)oracle::certify_mesh3(f.mesh3, o);
     }
     return;
@@ -83,6 +84,7 @@ void certify_small(const io::MeshFile& f) {
   oracle::CertifyOptions o;
   o.uniform = !m.metrics.empty();
   o.metric = !m.metrics.empty();
+  o.threads = 1;
   try {
     (void)oracle::certify_mesh(m, o);
   } catch (const std::invalid_argument&) {

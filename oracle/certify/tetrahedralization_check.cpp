@@ -1,5 +1,7 @@
 #include "oracle/certify/tetrahedralization_check.hpp"
 
+#include "geometry/closed_surface.hpp"
+
 #include <algorithm>
 #include <tuple>
 
@@ -112,67 +114,13 @@ TetrahedralizationCheck check_tetrahedralization(const EnclosedMesh3& m, std::si
   // The boundary surface: each boundary edge in two boundary faces, once in each direction; the
   // boundary faces at a vertex one cycle of its link.
   r.checks_run.push_back("the boundary is a closed 2-manifold (no pinched edge or vertex)");
-  struct Directed {
-    int lo, hi;
-    bool forward;
-  };
-  std::vector<Directed> edges;
-  edges.reserve(3 * boundary.size());
-  for (const Triple& f : boundary)
-    for (int k = 0; k < 3; ++k) {
-      const int p = f[static_cast<std::size_t>(k)], q = f[static_cast<std::size_t>((k + 1) % 3)];
-      edges.push_back({std::min(p, q), std::max(p, q), p < q});
-    }
-  std::sort(edges.begin(), edges.end(), [](const Directed& x, const Directed& y) {
-    return std::tie(x.lo, x.hi, x.forward) < std::tie(y.lo, y.hi, y.forward);
+  geometry::closed_surface_defects(boundary, [&](const geometry::SurfaceDefect& d) {
+    using Kind = geometry::SurfaceDefect::Kind;
+    const std::string e = "boundary edge (" + std::to_string(d.a) + ", " + std::to_string(d.b) + ")";
+    if (d.kind == Kind::edge_count) r.fail(e + " is in " + std::to_string(d.count) + " boundary faces" + (d.count > 2 ? " (a pinched edge)" : ""));
+    else if (d.kind == Kind::same_direction) r.fail(e + " runs the same way in its two boundary faces");
+    else r.fail("vertex " + std::to_string(d.a) + " is pinched: its boundary faces make " + std::to_string(d.count) + " cycles around it, not one");
   });
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i + 1;
-    while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
-    const std::string e = "boundary edge (" + std::to_string(edges[i].lo) + ", " + std::to_string(edges[i].hi) + ")";
-    if (j - i != 2) r.fail(e + " is in " + std::to_string(j - i) + " boundary faces" + (j - i > 2 ? " (a pinched edge)" : ""));
-    else if (edges[i].forward == edges[i + 1].forward) r.fail(e + " runs the same way in its two boundary faces");
-    i = j;
-  }
-  // The link of v: for each boundary face (v, q, r), rotated to start at v, the edge q → r.
-  struct Link {
-    int v, q, r;
-  };
-  std::vector<Link> links;
-  links.reserve(3 * boundary.size());
-  for (const Triple& f : boundary)
-    for (int k = 0; k < 3; ++k)
-      links.push_back({f[static_cast<std::size_t>(k)], f[static_cast<std::size_t>((k + 1) % 3)], f[static_cast<std::size_t>((k + 2) % 3)]});
-  std::sort(links.begin(), links.end(), [](const Link& x, const Link& y) { return std::tie(x.v, x.q) < std::tie(y.v, y.q); });
-  for (std::size_t i = 0; i < links.size();) {
-    std::size_t j = i + 1;
-    while (j < links.size() && links[j].v == links[i].v) ++j;
-    // Cycles of q ↦ r among links[i, j) (sorted by q: a binary search per step).
-    std::vector<char> seen(j - i, 0);
-    std::size_t cycles = 0;
-    bool broken = false;
-    for (std::size_t s = i; s < j && !broken; ++s) {
-      if (seen[s - i]) continue;
-      ++cycles;
-      std::size_t at = s;
-      for (std::size_t steps = 0; steps <= j - i; ++steps) {
-        seen[at - i] = 1;
-        const int next = links[at].r;
-        const auto found = std::lower_bound(links.begin() + static_cast<long>(i), links.begin() + static_cast<long>(j), next,
-                                            [](const Link& x, int q) { return x.q < q; });
-        if (found == links.begin() + static_cast<long>(j) || found->q != next) {
-          broken = true;  // an open fan: an edge in one boundary face, named above
-          break;
-        }
-        at = static_cast<std::size_t>(found - links.begin());
-        if (at == s) break;
-      }
-    }
-    if (!broken && cycles > 1)
-      r.fail("vertex " + std::to_string(links[i].v) + " is pinched: its boundary faces make " + std::to_string(cycles) +
-             " cycles around it, not one");
-    i = j;
-  }
 
   const auto& declared = m.mesh.triangles;
   if (!declared.empty()) {
