@@ -55,13 +55,6 @@ bool segment_meets_triangle(const P3& p, const P3& q, const P3& a, const P3& b, 
   return nonnegative || nonpositive;
 }
 
-// The ray from s through e, e in the plane of the triangle (s, c, d), lies in its closed angle at s.
-bool in_angle(const P3& s, const P3& e, const P3& c, const P3& d) {
-  const Projection f = projection(s, c, d);
-  const Sign turn = predicates::orientation(f(s), f(c), f(d));
-  return predicates::orientation(f(s), f(c), f(e)) != -turn && predicates::orientation(f(s), f(e), f(d)) != -turn;
-}
-
 std::string facet_name(std::size_t k) { return "facet " + std::to_string(k); }
 
 }  // namespace
@@ -86,15 +79,9 @@ bool facets_meet(const std::vector<P3>& x, const std::array<int, 3>& t, const st
     return false;
   }
   const std::vector<int> ot = others(t), ou = others(u);
-  if (n == 1) {  // t = (s, a, b), u = (s, c, d): they meet at s only
-    const int s = shared[0];
-    if (edge_meets(ot[0], ot[1], u) || edge_meets(ou[0], ou[1], t)) return true;
-    for (const int e : ot)
-      if (orient(at(s), at(ou[0]), at(ou[1]), at(e)) == Sign::zero && in_angle(at(s), at(e), at(ou[0]), at(ou[1]))) return true;
-    for (const int e : ou)
-      if (orient(at(s), at(ot[0]), at(ot[1]), at(e)) == Sign::zero && in_angle(at(s), at(e), at(ot[0]), at(ot[1]))) return true;
-    return false;
-  }
+  if (n == 1)  // t = (s, a, b), u = (s, c, d): beyond s they meet in a segment from s (or a region at s,
+                // coplanar), which leaves one of them through its edge opposite s at a point of the other
+    return edge_meets(ot[0], ot[1], u) || edge_meets(ou[0], ou[1], t);
   if (n == 2) {  // coplanar and on the same side of the shared edge: they overlap
     const P3 &s = at(shared[0]), &r = at(shared[1]), &a = at(ot[0]), &b = at(ou[0]);
     if (orient(s, r, a, b) != Sign::zero) return false;

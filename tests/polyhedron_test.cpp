@@ -135,7 +135,8 @@ TEST(Polyhedron, FacetsMeetDecidesEachWayOfSharing) {
   EXPECT_TRUE(meet({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}, {1, 1, 1}}, {0, 1, 2}, {0, 3, 4}));   // touching along 0–(1, 1, 0)
   // Sharing none.
   EXPECT_FALSE(meet({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 1}, {2, 0, 1}, {0, 2, 1}}, {0, 1, 2}, {3, 4, 5}));
-  EXPECT_TRUE(meet({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {Rational(1, 2), Rational(1, 2), -1}, {Rational(1, 2), Rational(1, 2), 1}, {5, 5, 0}}, {0, 1, 2}, {3, 4, 5}));
+  for (const std::array<int, 3>& u : {std::array<int, 3>{3, 4, 5}, {4, 3, 5}})  // the piercing edge either way
+    EXPECT_TRUE(meet({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {Rational(1, 2), Rational(1, 2), -1}, {Rational(1, 2), Rational(1, 2), 1}, {5, 5, 0}}, {0, 1, 2}, u));
   EXPECT_TRUE(meet({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {Rational(1, 2), Rational(1, 2), 0}, {1, 1, 1}, {0, 1, 1}}, {0, 1, 2}, {3, 4, 5}));
   EXPECT_TRUE(meet({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, 0}, {2, 1, 0}, {1, 2, 0}}, {0, 1, 2}, {3, 4, 5}));
 }
