@@ -292,6 +292,21 @@ template <class K>
   return filtered_sign_slow<K>(x);
 }
 
+// The sign of a kernel K whose total degree is beyond the static stage's range guard (at most 8;
+// K then has no `origin`, so no translated static stage either): at double inputs the later
+// stages (the double evaluation checked for rounding, intervals, expansions), at rational inputs
+// intervals, then rationals.
+template <class K, class S>
+Sign high_degree_sign(const std::array<S, K::arity>& x) {
+  if constexpr (std::is_same_v<S, double>) {
+    return filtered_sign_slow<K>(x);
+  } else {
+    std::array<FilterInterval, K::arity> xi;
+    for (std::size_t i = 0; i < K::arity; ++i) xi[i] = FilterInterval::around(x[i]);
+    return interval_then_exact<K>(xi, [&] { return x; });
+  }
+}
+
 // The sign of K at rational inputs: an interval enclosure first, exact when it cannot decide.
 template <class K>
 Sign filtered_sign(const std::array<Rational, K::arity>& q) {

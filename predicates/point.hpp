@@ -57,4 +57,10 @@ constexpr T bilinear_form(const T& m11, const T& m12, const T& m22, const T& ax,
   return ax * (m11 * bx + m12 * by) + ay * (m12 * bx + m22 * by);
 }
 
+// (ax, ay, az) M (bx, by, bz)ᵀ, the M-inner product in dimension 3.
+template <class T>
+constexpr T bilinear_form(const Sym3<T>& M, const T& ax, const T& ay, const T& az, const T& bx, const T& by, const T& bz) {
+  return ax * (M.m11 * bx + M.m12 * by + M.m13 * bz) + ay * (M.m12 * bx + M.m22 * by + M.m23 * bz) + az * (M.m13 * bx + M.m23 * by + M.m33 * bz);
+}
+
 }  // namespace anisocert::predicates

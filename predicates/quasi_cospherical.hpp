@@ -172,20 +172,6 @@ Sign quasi_cospherical_from(SignOf&& sign_of) {
   return -(s1 * decision);  // A, B after choosing c₁ > 0 (both flip with G); < 0: cospherical
 }
 
-// The sign of kernel K (total degree up to 21: beyond the static filter's range guard, which
-// assumes at most 8) at double inputs: the stages after the static one (the double evaluation
-// checked for rounding, intervals, expansions); at rational inputs: intervals, then rationals.
-template <class K, class S>
-Sign cospherical_sign(const std::array<S, K::arity>& x) {
-  if constexpr (std::is_same_v<S, double>) {
-    return filtered_sign_slow<K>(x);
-  } else {
-    std::array<FilterInterval, K::arity> xi;
-    for (std::size_t i = 0; i < K::arity; ++i) xi[i] = FilterInterval::around(x[i]);
-    return interval_then_exact<K>(xi, [&] { return x; });
-  }
-}
-
 // k = γ₀⁴ − 1 > 0 (γ₀ > 1). Throws NonFiniteInput for a NaN or an infinity among double inputs.
 template <class S>
 Sign quasi_cospherical(const Point3<S>& a, const Point3<S>& b, const Point3<S>& c, const Point3<S>& d, const Point3<S>& e,
@@ -197,7 +183,7 @@ Sign quasi_cospherical(const Point3<S>& a, const Point3<S>& b, const Point3<S>& 
   return quasi_cospherical_from([&]<class K>(K) {
     std::array<S, K::arity> y;
     for (std::size_t i = 0; i < K::arity; ++i) y[i] = x[i];
-    return cospherical_sign<K>(y);
+    return high_degree_sign<K>(y);  // degrees up to 21 (filtered_sign.hpp)
   });
 }
 

@@ -274,8 +274,8 @@ TEST(QuasiCospherical, FilteredAgreesWithExact) {
       std::array<anisocert::FilterInterval, K::arity> xi;
       for (std::size_t i = 0; i < K::arity; ++i) xd[i] = x[i], xq[i] = q[i], xi[i] = x[i];
       const Sign exact = anisocert::sign_of(K::eval(xq));
-      disagreements += cospherical_sign<K>(xd) != exact;
-      disagreements += cospherical_sign<K>(xq) != exact;
+      disagreements += high_degree_sign<K>(xd) != exact;
+      disagreements += high_degree_sign<K>(xq) != exact;
       disagreements += interval_then_exact<K>(xi, [&] { return xq; }) != exact;
       ++runs;
     };
