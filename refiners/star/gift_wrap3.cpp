@@ -63,8 +63,8 @@ class Wrap {
 }  // namespace
 
 Star3 gift_wrap_star3(int v, const std::vector<int>& candidates, const std::vector<Point3<double>>& points, const Sym3<double>& M) {
-  const Wrap w(v, candidates, points, M);
-  // Candidates by approximate M-distance (the order only shortens the search for the first tetrahedron).
+  // Candidates by approximate M-distance: the first tetrahedron is searched among the nearest, and
+  // a candidate inside a tried sphere is found sooner among them (the order decides nothing).
   std::vector<std::pair<double, int>> by_distance;
   const auto& pv = points[static_cast<std::size_t>(v)];
   for (const int c : candidates) {
@@ -74,6 +74,7 @@ Star3 gift_wrap_star3(int v, const std::vector<int>& candidates, const std::vect
   std::sort(by_distance.begin(), by_distance.end());
   std::vector<int> order;
   for (const auto& [d, c] : by_distance) order.push_back(c);
+  const Wrap w(v, order, points, M);
   Star3 star;
   const auto start = w.first(order);
   if (!start) return star;
