@@ -119,9 +119,7 @@ std::optional<std::string> polyhedron_defect(const Polyhedron& p) {
   Rational volume6 = 0;
   for (const auto& f : p.facets) {
     const P3 &o = x[0], &a = x[static_cast<std::size_t>(f[0])], &b = x[static_cast<std::size_t>(f[1])], &c = x[static_cast<std::size_t>(f[2])];
-    const Rational ax = a.x - o.x, ay = a.y - o.y, az = a.z - o.z, bx = b.x - o.x, by = b.y - o.y, bz = b.z - o.z, cx = c.x - o.x,
-                   cy = c.y - o.y, cz = c.z - o.z;
-    volume6 += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
+    volume6 += predicates::Orientation3Kernel::eval<Rational>({o.x, o.y, o.z, a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z});  // det[a − o; b − o; c − o]
   }
   if (volume6 <= 0) return std::string("the facets are oriented inward (the enclosed volume is not positive): list each facet's vertices the other way");
   // Candidate pairs: bounding boxes in doubles widened beyond the rounding of the conversion.

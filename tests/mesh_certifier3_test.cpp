@@ -6,6 +6,7 @@
 
 #include "geometry/kuhn_grid.hpp"
 #include "oracle/certify/mesh_certifier3.hpp"
+#include "witness_lists.hpp"
 
 #include <gtest/gtest.h>
 
@@ -494,21 +495,6 @@ TEST(MeshCertifier3, StaticAndIntervalEnclosuresHoldTheExactValues) {
   }
 }
 
-namespace {
-
-void expect_same(const WitnessList& a, const WitnessList& b, const std::string& what) {
-  ASSERT_EQ(a.count(), b.count()) << what;
-  for (std::size_t i = 0; i < a.count(); ++i) {
-    EXPECT_EQ(a.places()[i].vertex, b.places()[i].vertex) << what << " " << i;
-    EXPECT_EQ(a.places()[i].triangle, b.places()[i].triangle) << what << " " << i;
-    EXPECT_EQ(a.places()[i].site, b.places()[i].site) << what << " " << i;
-  }
-  ASSERT_EQ(a.described().size(), b.described().size()) << what;
-  for (std::size_t i = 0; i < a.described().size(); ++i) EXPECT_EQ(a.described()[i].text, b.described()[i].text) << what << " " << i;
-}
-
-}  // namespace
-
 // The locally uniform search and the sliver measure run per tetrahedron and per face pair on every
 // thread, the other checks beside them on a thread of their own; findings are added in order, so
 // the report is the one thread's, witness for witness (with 5 described: the cap falls inside the
@@ -524,10 +510,10 @@ TEST(MeshCertifier3, OneThreadAndSeveralGiveTheSameReport) {
     const Certify3Report one = certify_mesh3(m, o);
     o.threads = 3;
     const Certify3Report three = certify_mesh3(m, o);
-    expect_same(one.uniform_violations, three.uniform_violations, "violations");
-    expect_same(one.uniform_ties, three.uniform_ties, "ties");
-    expect_same(one.rho_violations, three.rho_violations, "rho");
-    expect_same(one.gamma_violations, three.gamma_violations, "gamma");
+    expect_same_witnesses(one.uniform_violations, three.uniform_violations, "violations");
+    expect_same_witnesses(one.uniform_ties, three.uniform_ties, "ties");
+    expect_same_witnesses(one.rho_violations, three.rho_violations, "rho");
+    expect_same_witnesses(one.gamma_violations, three.gamma_violations, "gamma");
     EXPECT_EQ(one.insphere_tests, three.insphere_tests);
     EXPECT_EQ(one.unmeasured, three.unmeasured);
     ASSERT_TRUE(one.cosphericity && three.cosphericity);
@@ -541,12 +527,12 @@ TEST(MeshCertifier3, OneThreadAndSeveralGiveTheSameReport) {
     EXPECT_EQ(a.least_tetrahedra[0], b.least_tetrahedra[0]);
     EXPECT_EQ(a.least_tetrahedra[1], b.least_tetrahedra[1]);
     EXPECT_EQ(a.least_radius_edge, b.least_radius_edge);
-    expect_same(a.witnesses, b.witnesses, "sliver witnesses");
+    expect_same_witnesses(a.witnesses, b.witnesses, "sliver witnesses");
     ASSERT_TRUE(one.valid && three.valid);
     EXPECT_EQ(one.valid->failure_count, three.valid->failure_count);
     ASSERT_TRUE(one.quality && three.quality && one.angles && three.angles);
-    expect_same(one.quality->violations, three.quality->violations, "quality");
-    expect_same(one.angles->violations, three.angles->violations, "angles");
+    expect_same_witnesses(one.quality->violations, three.quality->violations, "quality");
+    expect_same_witnesses(one.angles->violations, three.angles->violations, "angles");
   }
   // The cases are not vacuous: the first mesh has violations and γ₀-cospherical pairs, the second ties.
   Certify3Options o = all_checks();

@@ -2,6 +2,7 @@
 // radius-edge ratios and distortions, a non-Delaunay quadrilateral, cocircular ties, and broken
 // triangulations (a hole, an overlap, a clockwise triangle, a segment that is not a union of edges).
 #include "oracle/certify/mesh_certifier.hpp"
+#include "witness_lists.hpp"
 
 #include <gtest/gtest.h>
 
@@ -198,17 +199,8 @@ TEST(MeshCertifier, UniformCheckOnTwoThreadsGivesTheOneThreadReport) {
   const CertifyReport two = certify_mesh(m, o);
   ASSERT_GT(one.uniform_violations.count(), 10u) << "the lattice must have violations for this test to mean anything";
   EXPECT_EQ(one.incircle_tests, two.incircle_tests);
-  for (const auto& [a, b] : {std::pair<const WitnessList&, const WitnessList&>{one.uniform_violations, two.uniform_violations},
-                              std::pair<const WitnessList&, const WitnessList&>{one.uniform_ties, two.uniform_ties}}) {
-    ASSERT_EQ(a.count(), b.count());
-    for (std::size_t i = 0; i < a.count(); ++i) {
-      EXPECT_EQ(a.places()[i].triangle, b.places()[i].triangle);
-      EXPECT_EQ(a.places()[i].vertex, b.places()[i].vertex);
-      EXPECT_EQ(a.places()[i].site, b.places()[i].site);
-    }
-    ASSERT_EQ(a.described().size(), b.described().size());
-    for (std::size_t i = 0; i < a.described().size(); ++i) EXPECT_EQ(a.described()[i].text, b.described()[i].text);
-  }
+  expect_same_witnesses(one.uniform_violations, two.uniform_violations, "violations");
+  expect_same_witnesses(one.uniform_ties, two.uniform_ties, "ties");
 }
 
 // Every constrained segment is a union of edges, the sites on it ordered by their exact parameter

@@ -95,15 +95,12 @@ UniformResult check_uniform_at(const EnclosedMesh& m, const SiteTree& tree, int 
   return r;
 }
 
-// The triangles on every core (independent), their findings added in triangle order: the report
-// does not depend on the number of threads.
+// The triangles on every core (independent), their findings added in triangle order
+// (parallel_in_order): the report does not depend on the number of threads.
 void check_uniform(const EnclosedMesh& m, const SiteTree& tree, int threads, CertifyReport& r) {
-  const int n = static_cast<int>(m.mesh.triangles.size());
-  std::vector<UniformResult> results(static_cast<std::size_t>(n));
-  parallel_for(static_cast<std::size_t>(n), thread_count(threads),
-               [&](std::size_t t) { results[t] = check_uniform_at(m, tree, static_cast<int>(t)); });
-  for (int t = 0; t < n; ++t) {
-    const UniformResult& u = results[static_cast<std::size_t>(t)];
+  const auto compute = [&](std::size_t t) { return check_uniform_at(m, tree, static_cast<int>(t)); };
+  parallel_in_order(m.mesh.triangles.size(), thread_count(threads), compute, [&](std::size_t ti, const UniformResult& u) {
+    const int t = static_cast<int>(ti);
     r.unmeasured += u.unmeasured ? 1 : 0;
     r.incircle_tests += u.incircle_tests;
     for (const UniformFinding& f : u.found)
@@ -111,7 +108,7 @@ void check_uniform(const EnclosedMesh& m, const SiteTree& tree, int threads, Cer
         return name("site", f.site) + (f.strict ? " is strictly inside" : " is exactly on") + " the circumellipse of " +
                name("triangle", t) + " in the metric of " + name("vertex", f.vertex);
       });
-  }
+  });
 }
 
 // The segment parameter of p on [a, b] (exact), or nothing when p is off the line.

@@ -4,8 +4,8 @@
 #include "predicates/orientation3.hpp"
 
 #include <algorithm>
-#include <map>
 #include <optional>
+#include <set>
 #include <utility>
 
 namespace anisocert::refiners::star {
@@ -80,9 +80,9 @@ Star3 gift_wrap_star3(int v, const std::vector<int>& candidates, const std::vect
   if (!start) return star;
   // Each directed link edge (a, b) once: the tetrahedron (v, a, b, c) has its faces (v, a, b),
   // (v, b, c), (v, c, a) with the link triangle (a, b, c) on their positive side.
-  std::map<std::pair<int, int>, bool> seen;  // directed link edges of the triangles found
+  std::set<std::pair<int, int>> seen;  // directed link edges of the triangles found
   std::vector<std::array<int, 3>> todo{*start};
-  seen[{(*start)[0], (*start)[1]}] = seen[{(*start)[1], (*start)[2]}] = seen[{(*start)[2], (*start)[0]}] = true;
+  seen.insert({{(*start)[0], (*start)[1]}, {(*start)[1], (*start)[2]}, {(*start)[2], (*start)[0]}});
   while (!todo.empty()) {
     const std::array<int, 3> t = todo.back();
     todo.pop_back();
@@ -96,7 +96,7 @@ Star3 gift_wrap_star3(int v, const std::vector<int>& candidates, const std::vect
         continue;
       }
       const std::array<int, 3> u{b, a, d};
-      seen[{b, a}] = seen[{a, d}] = seen[{d, b}] = true;
+      seen.insert({{b, a}, {a, d}, {d, b}});
       todo.push_back(u);
     }
   }
