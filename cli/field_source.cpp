@@ -141,6 +141,33 @@ std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, co
   return metrics;
 }
 
+fields::MetricField3 field3_source(const std::string& text, const std::vector<std::string>& params) {
+  const fields::Parameters given = parameters_of(params);
+  if (text.starts_with(background_prefix)) {
+    if (!given.empty()) throw UsageError("--param: a background field has no parameters");
+    const io::MeshFile file = background_file(text);
+    if (file.dimension != 3) throw UsageError(text.substr(background_prefix.size()) + ": a triangle mesh is no background for a 3D domain");
+    std::shared_ptr<const fields::BackgroundMesh3> mesh;
+    try {
+      mesh = std::make_shared<const fields::BackgroundMesh3>(file.mesh3);
+    } catch (const fields::BackgroundMeshError& e) {
+      throw UsageError(text.substr(background_prefix.size()) + ": " + e.what());
+    }
+    return {text, {}, [mesh, text](double x, double y, double z) {
+              const auto m = mesh->metric_at({rational_from_double(x), rational_from_double(y), rational_from_double(z)});
+              if (!m) throw fields::FieldError("the background mesh of " + text + " does not cover the point (" + std::to_string(x) + ", " +
+                                               std::to_string(y) + ", " + std::to_string(z) + ")");
+              return predicates::Sym3<double>{m->m11.convert_to<double>(), m->m12.convert_to<double>(), m->m13.convert_to<double>(),
+                                              m->m22.convert_to<double>(), m->m23.convert_to<double>(), m->m33.convert_to<double>()};
+            }};
+  }
+  try {
+    return fields::make_field3(text, given);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--field: ") + e.what());
+  }
+}
+
 std::vector<predicates::Sym3<Rational>> metrics3_at(const std::string& text, const std::vector<std::string>& params,
                                                     const std::vector<predicates::Point3<Rational>>& points) {
   const fields::Parameters given = parameters_of(params);

@@ -38,4 +38,9 @@ std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, co
 // and exact (fields/background3.hpp). Throws UsageError as above.
 std::vector<predicates::Sym3<Rational>> metrics3_at(const std::string& text, const std::vector<std::string>& params,
                                                     const std::vector<predicates::Point3<Rational>>& points);
+// The 3D field `text` names, in doubles, for the 3D refiner (issue 40): a built-in 3D field, or a
+// tetrahedral background mesh's P1 metric (exact, rounded to the nearest doubles; a point outside
+// it has no metric: fields::FieldError). Throws UsageError as above.
+fields::MetricField3 field3_source(const std::string& text, const std::vector<std::string>& params);
+
 }  // namespace anisocert::cli

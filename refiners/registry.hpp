@@ -5,6 +5,7 @@
 // writes the lines of its report: the common ones (common/summary.hpp) and its own.
 #include "fields/metric_field.hpp"
 #include "refiners/common/domain.hpp"
+#include "refiners/common/domain3.hpp"
 #include "refiners/common/refinement_loop.hpp"
 
 #include <functional>
@@ -32,6 +33,10 @@ struct Run {
   common::RefineResult result;
   std::vector<std::string> report;  // the summary, one line each
 };
+struct Run3 {
+  common::RefineResult3 result;
+  std::vector<std::string> report;
+};
 
 struct RefinerEntry {
   std::string name, summary;
@@ -55,6 +60,11 @@ struct RefinerEntry {
   // The command that checks a finished run against the refiner's own paper.
   std::string check() const { return dual_of_diagram ? "anisocert dual" : "anisocert certify"; }
   bool seeded = false;  // the run draws random points from `seed` (otherwise --seed is bad input)
+  // The run on a polyhedron for a 3D field (issue 40), for the refiners that mesh in 3D (empty
+  // otherwise); throws as `run` does.
+  std::function<Run3(const common::Domain3&, const fields::MetricField3&, const ParameterValues&, const common::Budget&,
+                     unsigned seed, const common::Progress&)>
+      run3;
 };
 
 const std::vector<RefinerEntry>& registered_refiners();

@@ -7,6 +7,11 @@
 #include "cli/reports/refine_report.hpp"
 #include "cli/usage_error.hpp"
 #include "fields/registry.hpp"
+#include "geometry/builtin_polyhedra.hpp"
+#include "io/formats/polyhedron_file.hpp"
+#include "io/reports/certify_report.hpp"
+#include "io/svg/certify_svg.hpp"
+#include "oracle/certify/mesh_certifier3.hpp"
 #include "io/formats/registry.hpp"
 #include "io/mesh_json.hpp"
 #include "io/svg/diagram_svg.hpp"
@@ -33,7 +38,9 @@ std::string names_of(const std::vector<std::string>& names) {
 }
 
 struct RefineOptions {
-  std::string algo = "star", domain = "square", field = "shock", output, output_format, svg;
+  std::string algo = "star", domain = "square", field = "shock", output, output_format, svg, json;
+  CLI::Option* field_option = nullptr;
+  int threads = 0;
   std::vector<std::string> params;
   std::map<std::string, double> values;            // every refiner parameter's default
   std::map<std::string, std::string> texts;        // the values given, as typed (exact decimals or fractions)
@@ -110,6 +117,97 @@ refiners::common::Budget budget_of(const RefineOptions& o) {
   return b;
 }
 
+// Whether --domain names a 3D domain: a built-in polyhedron, or a surface file (.off, .mesh,
+// .meshb, .msh); JSON domains are polygons.
+bool domain_is_3d(const std::string& domain) {
+  if (geometry::builtin_polyhedron(domain)) return true;
+  for (const char* ext : {".off", ".mesh", ".meshb", ".msh"})
+    if (domain.size() > std::string(ext).size() && domain.ends_with(ext)) return true;
+  return false;
+}
+
+// `refine` on a polyhedron (issue 40): the run, its files, and the exact 3D certifier's verdict on
+// its mesh (valid, locally uniform, ρ₀ and γ₀ met, LU's sliver measure at γ₀): exit 0 only when
+// the run finished with consistent stars and the certifier certifies the mesh.
+int run_refine3(const RefineOptions& o, const refiners::RefinerEntry& entry, const refiners::ParameterValues& values,
+                const refiners::common::Budget& budget, const io::MeshFormat* format) {
+  if (!entry.run3) throw UsageError("--algo " + o.algo + " meshes polygons only: --algo star meshes a 3D domain");
+  geometry::Polyhedron polyhedron;
+  if (const geometry::Polyhedron* builtin = geometry::builtin_polyhedron(o.domain)) {
+    polyhedron = *builtin;
+  } else {
+    try {
+      polyhedron = io::read_polyhedron_file(o.domain);
+    } catch (const io::InputError& e) {
+      throw UsageError(e.what());
+    }
+  }
+  const std::string field_name = o.field_option->count() > 0 ? o.field : "ugawg-linear";
+  const fields::MetricField3 field = field3_source(field_name, o.params);
+  const auto progress = progress_printer(o.quiet);
+  refiners::Run3 run;
+  try {
+    const refiners::common::Domain3 domain(polyhedron);
+    run = entry.run3(domain, field, values, budget, o.seed, progress);
+  } catch (const refiners::common::DomainError& e) {
+    throw UsageError(o.domain + ": " + e.what());
+  } catch (const refiners::common::FieldError& e) {
+    throw UsageError(std::string("--field: ") + e.what());
+  } catch (const refiners::ParameterError& e) {
+    throw UsageError(e.what());
+  }
+  const auto& m = run.result.mesh;
+  io::MeshFile file;
+  file.dimension = 3;
+  for (const auto& p : m.vertices) file.mesh3.vertices.push_back({rational_from_double(p.x), rational_from_double(p.y), rational_from_double(p.z)});
+  for (const auto& M : m.metrics)
+    file.mesh3.metrics.push_back({rational_from_double(M.m11), rational_from_double(M.m12), rational_from_double(M.m13),
+                                  rational_from_double(M.m22), rational_from_double(M.m23), rational_from_double(M.m33)});
+  file.mesh3.tetrahedra = m.tetrahedra;
+  file.mesh3.triangles = m.triangles;
+  file.tetrahedron_refs.assign(m.tetrahedra.size(), 0);
+  file.triangle_refs.assign(m.triangles.size(), 0);
+  file.vertex_refs.assign(m.vertices.size(), 0);
+  // The certifier's verdict on the mesh as written (the rationals the files hold).
+  oracle::Certify3Options co;
+  co.rho0 = rational_from_double(values.at("rho0")), co.gamma0 = rational_from_double(values.at("gamma0"));
+  co.threads = o.threads;
+  if (!o.quiet) progress("refine: certifying the mesh (" + std::to_string(m.tetrahedra.size()) + " tetrahedra)");
+  const oracle::Certify3Report report = oracle::certify_mesh3(file.mesh3, co);
+  io::BoundTexts bounds;
+  bounds.rho0 = as_printed(values.at("rho0")), bounds.gamma0 = as_printed(values.at("gamma0"));
+  io::CertifyVerdict verdict = io::certify_verdict(report, co, file.mesh3, bounds);
+  verdict.metric_source = "--field " + field_name;
+  std::vector<OutputFile> files;
+  std::string written;
+  std::vector<std::string> paths;
+  if (format) {
+    try {
+      for (io::FileText& f : format->write(file, o.output)) {
+        written += (written.empty() ? "" : ", ") + f.path;
+        paths.push_back(f.path);
+        files.push_back({std::move(f.path), std::move(f.content)});
+      }
+    } catch (const io::InputError& e) {
+      throw UsageError(e.what());
+    }
+  }
+  if (!o.json.empty()) files.push_back({o.json, "", [&](std::ostream& out) { io::write_json(out, verdict, report); }});
+  if (!o.svg.empty())
+    files.push_back({o.svg, io::certify_svg(file.mesh3, report, "star refiner (3D), " + o.domain + ", field " + field_name + ": " +
+                                                                   std::to_string(m.vertices.size()) + " vertices" +
+                                                                   (verdict.holds ? ", certified" : ", not certified"))});
+  write_files_atomically(files);
+  std::string text = "refine: domain " + o.domain + ", field " + field_name + "\n";
+  for (const std::string& line : run.report) text += line + "\n";
+  if (format) text += "  mesh: " + written + " (check it with " + check_command(entry, paths) + ")\n";
+  if (!o.svg.empty()) text += "  picture: " + o.svg + "\n";
+  if (!o.json.empty()) text += "  certificate: " + o.json + "\n";
+  text += io::full_text(verdict, "the run's mesh");
+  emit(text);
+  return run.result.consistent && verdict.holds ? 0 : 1;
+}
+
 int run_refine(const RefineOptions& o) {
   const refiners::RefinerEntry* entry = refiners::find_refiner(o.algo);
   if (!entry) throw UsageError("--algo: unknown refiner " + quoted_excerpt(o.algo) + " (" + names_of(refiners::refiner_names()) + ")");
@@ -132,7 +230,9 @@ int run_refine(const RefineOptions& o) {
       throw UsageError(e.what());
     }
   }
-  check_outputs({o.output, o.svg});
+  check_outputs({o.output, o.svg, o.json});
+  if (domain_is_3d(o.domain)) return run_refine3(o, *entry, values, budget, format);
+  if (!o.json.empty()) throw UsageError("--json: the certificate of a 3D run (a 2D run's mesh is certified by anisocert certify --json)");
   io::DomainFile input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, {}};
   if (o.domain != "square") {
     try {
@@ -227,9 +327,13 @@ void add_refine(CLI::App& app, int& exit_code) {
   c->add_option("--algo", o->algo, "the refiner: " + names_of(refiners::refiner_names()))->capture_default_str();
   c->add_option("--domain", o->domain,
                 "square, or a JSON file with a \"domain\" polygon, perhaps with \"points\" and \"interior_segments\" (a PSLG;\n"
-                "--algo star takes its boundary only)")
+                "--algo star takes its boundary only); in 3D (--algo star): cube, cube-cylinder (UGAWG's), or a closed outward\n"
+                "surface of triangles (.off, Medit .mesh/.meshb, Gmsh .msh)")
       ->capture_default_str();
-  c->add_option("--field", o->field, "the metric field: " + names_of(fields::field_names()) + " or background:MESH[:METRIC]")->capture_default_str();
+  o->field_option = c->add_option("--field", o->field,
+                                  "the metric field: " + names_of(fields::field_names()) + " or background:MESH[:METRIC]; in 3D: " +
+                                      names_of(fields::field_names3()) + " (default ugawg-linear) or background:TETMESH[:METRIC]")
+                        ->capture_default_str();
   c->add_option("--param", o->params, "a field parameter name=value (repeatable)");
   // A parameter several refiners share (e.g. --size) is one option: the first refiner's help and
   // default, the refiners that have it, and another's own help where it differs.
@@ -260,6 +364,8 @@ void add_refine(CLI::App& app, int& exit_code) {
                 "write a picture: --algo " + refiners_where(true) +
                     ", the exact diagram D|Ω of the final sites with its dual, computed by the oracle\n"
                     "after the run (seconds for 10k vertices, minutes for 100k); --algo " + refiners_where(false) + ", the mesh");
+  c->add_option("--json", o->json, "3D: write the certificate of the run's mesh, as certify --json writes it");
+  c->add_option("--threads", o->threads, "3D: threads for certifying the run's mesh (default: every core; the same verdict)");
   c->add_flag("--quiet", o->quiet, "no progress lines");
   c->callback([o, &exit_code] { exit_code = run_refine(*o); });
 }

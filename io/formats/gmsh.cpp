@@ -687,7 +687,7 @@ Format read_format(TextReader& text) {
 
 // § MSH file format: $MeshFormat first, its text line telling the version and the encoding; then
 // the sections. Sites have no reference (vertex_refs all 0).
-MeshFile read(std::string_view bytes, const std::string& source) {
+MeshFile read(std::string_view bytes, const std::string& source, bool surface) {
   TextReader text(bytes, source);
   text.expect("$MeshFormat");
   Format format{};
@@ -715,6 +715,16 @@ MeshFile read(std::string_view bytes, const std::string& source) {
     f.mesh3.triangles = std::move(f.mesh.triangles);
     f.mesh.triangles.clear();
     if (r.metrics3) attach_metrics(f, std::move(*r.metrics3), source);
+    return std::move(r.f);
+  }
+  if (surface) {  // a surface: the triangles in space
+    MeshFile& f = r.f;
+    f.dimension = 3;
+    for (std::size_t i = 0; i < f.mesh.sites.size(); ++i)
+      f.mesh3.vertices.push_back({std::move(f.mesh.sites[i].x), std::move(f.mesh.sites[i].y), std::move(r.z[i])});
+    f.mesh.sites.clear();
+    f.mesh3.triangles = std::move(f.mesh.triangles);
+    f.mesh.triangles.clear();
     return std::move(r.f);
   }
   for (std::size_t i = 0; i < r.z.size(); ++i)
@@ -936,9 +946,9 @@ bool looks_like_gmsh(std::string_view head) {
   return head.substr(i).starts_with("$MeshFormat");
 }
 
-MeshFile read_gmsh(std::string_view bytes, const std::string& source) { return gmsh_format::read(bytes, source); }
+MeshFile read_gmsh(std::string_view bytes, const std::string& source, bool surface) { return gmsh_format::read(bytes, source, surface); }
 
-MeshFile read_gmsh_file(const std::string& path) { return read_gmsh(read_whole_file(path), path); }
+MeshFile read_gmsh_file(const std::string& path, bool surface) { return read_gmsh(read_whole_file(path), path, surface); }
 
 std::string gmsh_text(const MeshFile& m, GmshEncoding encoding) {
   return gmsh_format::write(m, encoding == GmshEncoding::binary);

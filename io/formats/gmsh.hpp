@@ -15,8 +15,9 @@
 namespace anisocert::io {
 
 bool looks_like_gmsh(std::string_view head);          // starts with "$MeshFormat"
-MeshFile read_gmsh(std::string_view bytes, const std::string& source);
-MeshFile read_gmsh_file(const std::string& path);
+// surface: a file with triangles and no tetrahedra is a surface in space, read into mesh3.
+MeshFile read_gmsh(std::string_view bytes, const std::string& source, bool surface = false);
+MeshFile read_gmsh_file(const std::string& path, bool surface = false);
 
 enum class GmshEncoding { ascii, binary };
 std::string gmsh_text(const MeshFile& m, GmshEncoding encoding = GmshEncoding::ascii);

@@ -281,6 +281,13 @@ MeshFile read_medit(std::string_view bytes, const std::string& source, const Med
       f.mesh.triangles.clear();
       return f;
     }
+    if (o.allow_surface) {
+      f.dimension = 3;
+      f.mesh3.vertices = std::move(vertices3);
+      f.mesh3.triangles = std::move(f.mesh.triangles);
+      f.mesh.triangles.clear();
+      return f;
+    }
     const auto lifted = std::find_if(vertices3.begin(), vertices3.end(), [](const auto& p) { return p.z != 0; });
     if (lifted != vertices3.end())
       s.fail("Dimension 3 with no Tetrahedra, and vertex " + std::to_string(lifted - vertices3.begin() + 1) +

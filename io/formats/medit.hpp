@@ -18,6 +18,7 @@ namespace anisocert::io {
 
 struct MeditOptions {
   bool allow_planar_3d = false;   // Dimension 3 with every z exactly 0
+  bool allow_surface = false;     // Dimension 3, Triangles and no Tetrahedra: a surface, in mesh3
 };
 
 MeshFile read_medit(std::string_view bytes, const std::string& source, const MeditOptions& o = {});

@@ -77,9 +77,9 @@ const std::vector<MeshFormat>& mesh_formats() {
   static const std::vector<MeshFormat> formats{
       {"json", "anisocert's own JSON (sites, metrics, domain, segments, triangles)", {".json"}, nullptr, read_json, write_json},
       {"medit", "Medit .mesh/.meshb (MMG, libMeshb), versions 1-4; metrics in .sol/.solb", {".mesh", ".meshb"}, nullptr,
-       [](const std::string& p, const ReadOptions& o) { return read_medit_file(p, {o.planar_3d}); }, write_medit_file},
+       [](const std::string& p, const ReadOptions& o) { return read_medit_file(p, {o.planar_3d, o.surface}); }, write_medit_file},
       {"gmsh", "Gmsh .msh 4.1 (ASCII, binary) or 2.2 (ASCII); metrics in $NodeData", {".msh"}, looks_like_gmsh,
-       [](const std::string& p, const ReadOptions&) { return read_gmsh_file(p); }, write_gmsh_file},
+       [](const std::string& p, const ReadOptions& o) { return read_gmsh_file(p, o.surface); }, write_gmsh_file},
       {"freefem", "FreeFem++ .msh (nv nt nbe); metrics in BAMG .mtr", {".msh"}, looks_like_freefem,
        [](const std::string& p, const ReadOptions&) { return read_freefem_file(p); }, write_freefem_file},
       {"triangle", "Triangle .node/.ele/.poly (boundary markers, holes); TetGen .node/.ele/.face (3D)", {".node", ".ele", ".poly", ".face"}, nullptr,

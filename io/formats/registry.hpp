@@ -13,6 +13,9 @@ namespace anisocert::io {
 // What a user may allow a reader beyond the format's strict reading.
 struct ReadOptions {
   bool planar_3d = false;   // a 3D file (Medit Dimension 3) whose every z is 0 is read as 2D
+  // A 3D file with triangles and no tetrahedra (a closed surface: `refine --domain`, issue 40) is
+  // read into mesh3 (dimension 3, its triangles in mesh3.triangles); Medit and Gmsh only.
+  bool surface = false;
 };
 
 struct MeshFormat {

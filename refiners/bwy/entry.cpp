@@ -84,7 +84,9 @@ RefinerEntry entry() {
             std::vector<std::string> lines = report(r, p);
             return Run{std::move(r), std::move(lines)};
           },
-          /*dual_of_diagram=*/true};
+          /*dual_of_diagram=*/true,
+          /*seeded=*/false,
+          /*run3=*/{}};
 }
 
 }  // namespace anisocert::refiners::bwy

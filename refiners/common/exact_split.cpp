@@ -45,21 +45,37 @@ int exact_halvings(const predicates::Point2<double>& a, const predicates::Point2
   return std::min(halvings(a.x, b.x), halvings(a.y, b.y));
 }
 
+int exact_halvings(const predicates::Point3<double>& a, const predicates::Point3<double>& b) {
+  return std::min({halvings(a.x, b.x), halvings(a.y, b.y), halvings(a.z, b.z)});
+}
+
+namespace {
+
+// (u + w)/2 when it is a double: an exact sum halved without loss (no underflow into
+// subnormals), or, when the sum overflows (both beyond 2⁹⁷⁰, so their halves are exact), an
+// exact sum of the halves.
+std::optional<double> half_sum(double u, double w) {
+  if (!std::isfinite(u) || !std::isfinite(w)) return std::nullopt;
+  if (const auto [s, e] = two_sum(u, w); std::isfinite(s)) {
+    if (e != 0 || (s / 2) * 2 != s) return std::nullopt;
+    return s / 2;
+  }
+  const auto [s, e] = two_sum(u / 2, w / 2);
+  if (e != 0) return std::nullopt;
+  return s;
+}
+
+}  // namespace
+
+std::optional<predicates::Point3<double>> exact_midpoint(const predicates::Point3<double>& a,
+                                                         const predicates::Point3<double>& b) {
+  const auto x = half_sum(a.x, b.x), y = half_sum(a.y, b.y), z = half_sum(a.z, b.z);
+  if (!x || !y || !z) return std::nullopt;
+  return predicates::Point3<double>{*x, *y, *z};
+}
+
 std::optional<predicates::Point2<double>> exact_midpoint(const predicates::Point2<double>& a,
                                                          const predicates::Point2<double>& b) {
-  // (u + w)/2 when it is a double: an exact sum halved without loss (no underflow into
-  // subnormals), or, when the sum overflows (both beyond 2⁹⁷⁰, so their halves are exact), an
-  // exact sum of the halves.
-  auto half_sum = [](double u, double w) -> std::optional<double> {
-    if (!std::isfinite(u) || !std::isfinite(w)) return std::nullopt;
-    if (const auto [s, e] = two_sum(u, w); std::isfinite(s)) {
-      if (e != 0 || (s / 2) * 2 != s) return std::nullopt;
-      return s / 2;
-    }
-    const auto [s, e] = two_sum(u / 2, w / 2);
-    if (e != 0) return std::nullopt;
-    return s;
-  };
   const auto x = half_sum(a.x, b.x), y = half_sum(a.y, b.y);
   if (!x || !y) return std::nullopt;
   return predicates::Point2<double>{*x, *y};

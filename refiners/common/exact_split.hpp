@@ -22,5 +22,10 @@ int exact_halvings(const predicates::Point2<double>& a, const predicates::Point2
 // The midpoint of ab when it is a double (exactly on ab), else nothing.
 std::optional<predicates::Point2<double>> exact_midpoint(const predicates::Point2<double>& a,
                                                          const predicates::Point2<double>& b);
+// The same in space (issue 40: a boundary facet's edge is halved; the midpoint of two points of a
+// plane lies on it, so a double midpoint lies exactly on every input facet holding both ends).
+int exact_halvings(const predicates::Point3<double>& a, const predicates::Point3<double>& b);
+std::optional<predicates::Point3<double>> exact_midpoint(const predicates::Point3<double>& a,
+                                                         const predicates::Point3<double>& b);
 
 }  // namespace anisocert::refiners::common

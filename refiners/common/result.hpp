@@ -2,6 +2,7 @@
 // What every refiner returns (DESIGN.md § Layers, refiners/): the mesh in the one mesh shape, how
 // the run stopped, and what it did, rule by rule and insertion by insertion.
 #include "geometry/mesh.hpp"
+#include "geometry/mesh3.hpp"
 
 #include <string>
 #include <utility>
@@ -34,16 +35,25 @@ struct Insertion {
   int for_rule = 0;
 };
 
-struct RefineResult {
-  geometry::Mesh<double> mesh;
+// How a run ended and what it did, in any dimension.
+struct RunOutcome {
   // The run finished (no rule applies anywhere: not stopped by a budget or a stall) and the
-  // refiner's output condition holds (star sets: every star triangle is in its vertices' stars).
+  // refiner's output condition holds (star sets: every star simplex is in its vertices' stars).
   bool consistent = false;
   std::string stop_reason;      // that condition's name, the budget that stopped it, or why it cannot go on
   std::string last_rule = "none";                            // the rule of the last insertion (a stall may be another's)
   std::vector<std::pair<std::string, std::size_t>> rule_counts;  // insertions per rule, in priority order
   double seconds = 0;
+};
+
+struct RefineResult : RunOutcome {
+  geometry::Mesh<double> mesh;
   std::vector<Insertion> trace;
+};
+
+// A 3D run (issue 40): the tetrahedral mesh, its boundary triangles declared.
+struct RefineResult3 : RunOutcome {
+  geometry::Mesh3<double> mesh;
 };
 
 }  // namespace anisocert::refiners::common

@@ -2,6 +2,7 @@
 
 #include "refiners/common/summary.hpp"
 #include "refiners/star/star_refiner.hpp"
+#include "refiners/star/star_refiner3.hpp"
 #include "theory/lu_theorem45.hpp"
 
 #include <cmath>
@@ -37,6 +38,43 @@ RefineParameters parameters(const ParameterValues& v, const common::Budget& budg
 
 const char* yes(bool b) { return b ? "yes" : "no"; }
 
+std::string pick_line(std::size_t rejected, std::size_t exhausted, std::size_t refinements, const RefineParameters& p, const char* kind) {
+  std::ostringstream o;
+  o << "  Pick_valid: " << rejected << " picked points discarded as γ₀-" << kind << ", " << exhausted << " of " << refinements
+    << " refinements kept a forbidden point after " << p.pick_attempts << " discards";
+  if (p.pick_attempts > 0 && 2 * exhausted > refinements)
+    o << " (most: at this γ₀ the forbidden set covers most of each picking region; LU Lemma 3.15 needs γ₀ close to 1)";
+  return o.str();
+}
+
+std::string parameters_line(const RefineParameters& p) {
+  std::ostringstream o;
+  o << "  parameters: ρ₀ = " << p.rho0 << ", γ₀ = " << p.gamma0 << ", δ = " << p.delta << ", β = " << p.beta << ", size = " << p.size;
+  return o.str();
+}
+
+// LU Theorem 4.5's conditions on the parameters, decided exactly by theory/.
+std::string theorem45_line(const RefineParameters& p) {
+  const theory::LuConditions c = theory::lu_t45_conditions(
+      {rational_from_double(p.rho0), rational_from_double(p.gamma0), rational_from_double(p.delta), rational_from_double(p.beta)});
+  return std::string("  LU Theorem 4.5 conditions (decided exactly): ρ₀ > 2 ") + yes(c.rho0_above_2) + ", (1−δ)³ρ₀ > 2 " +
+         yes(c.delta_rho0) + ", (1−δ)³β > 2 " + yes(c.delta_beta) + ", (1−δ)³ρ₀ > 2γ₀³ " + yes(c.lemma43) + ", (1−δ)³β > 2γ₀³ " +
+         yes(c.lemma44);
+}
+
+std::vector<std::string> report3(const StarResult3& r, const RefineParameters& p) {
+  std::vector<std::string> lines{
+      common::size_line(r, "star refiner (3D)"),
+      common::stop_line(r, "inconsistent star tetrahedra: " + std::to_string(r.inconsistent_tetrahedra) +
+                               (r.empty_stars ? ", empty stars: " + std::to_string(r.empty_stars) : "")),
+      "  boundary: " + std::to_string(r.subfacets) + " subfacets after " + std::to_string(r.boundary_splits) +
+          " edge splits at exact midpoints (rule 1 and Insert_or_snap); the mesh's " + std::to_string(r.mesh.triangles.size()) +
+          " boundary faces, " + std::to_string(r.faces_off_boundary) + " of them off ∂Ω",
+      pick_line(r.picks_rejected, r.picks_exhausted, r.refinements, p, "cospherical"), common::rule_counts_line(r), parameters_line(p),
+      theorem45_line(p)};
+  return lines;
+}
+
 std::vector<std::string> report(const StarResult& r, const RefineParameters& p) {
   std::vector<std::string> lines{common::size_line(r, "star refiner"),
                                  common::stop_line(r, "inconsistent star triangles: " + std::to_string(r.inconsistent_triangles) +
@@ -51,22 +89,10 @@ std::vector<std::string> report(const StarResult& r, const RefineParameters& p) 
     o << " (encroachment there may not end)";
   }
   lines.push_back(o.str());
-  o.str("");
-  o << "  Pick_valid: " << r.picks_rejected << " picked points discarded as γ₀-cocircular, " << r.picks_exhausted << " of "
-    << r.refinements << " refinements kept a forbidden point after " << p.pick_attempts << " discards";
-  if (p.pick_attempts > 0 && 2 * r.picks_exhausted > r.refinements)
-    o << " (most: at this γ₀ the forbidden set covers most of each picking region; LU Lemma 3.15 needs γ₀ close to 1)";
-  lines.push_back(o.str());
+  lines.push_back(pick_line(r.picks_rejected, r.picks_exhausted, r.refinements, p, "cocircular"));
   lines.push_back(common::rule_counts_line(r));
-  o.str("");
-  o << "  parameters: ρ₀ = " << p.rho0 << ", γ₀ = " << p.gamma0 << ", δ = " << p.delta << ", β = " << p.beta << ", size = " << p.size;
-  lines.push_back(o.str());
-  // LU Theorem 4.5's conditions on the parameters, decided exactly by theory/.
-  const theory::LuConditions c = theory::lu_t45_conditions(
-      {rational_from_double(p.rho0), rational_from_double(p.gamma0), rational_from_double(p.delta), rational_from_double(p.beta)});
-  lines.push_back(std::string("  LU Theorem 4.5 conditions (decided exactly): ρ₀ > 2 ") + yes(c.rho0_above_2) + ", (1−δ)³ρ₀ > 2 " +
-                  yes(c.delta_rho0) + ", (1−δ)³β > 2 " + yes(c.delta_beta) + ", (1−δ)³ρ₀ > 2γ₀³ " + yes(c.lemma43) +
-                  ", (1−δ)³β > 2γ₀³ " + yes(c.lemma44));
+  lines.push_back(parameters_line(p));
+  lines.push_back(theorem45_line(p));
   return lines;
 }
 
@@ -94,7 +120,14 @@ RefinerEntry entry() {
             return Run{std::move(r), std::move(lines)};
           },
           /*dual_of_diagram=*/false,
-          /*seeded=*/true};
+          /*seeded=*/true,
+          [](const common::Domain3& domain, const fields::MetricField3& field, const ParameterValues& values,
+             const common::Budget& budget, unsigned seed, const common::Progress& progress) {
+            const RefineParameters p = parameters(values, budget, seed);
+            StarResult3 r = refine_star3(domain, field, p, progress);
+            std::vector<std::string> lines = report3(r, p);
+            return Run3{std::move(r), std::move(lines)};
+          }};
 }
 
 }  // namespace anisocert::refiners::star

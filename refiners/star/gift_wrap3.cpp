@@ -27,18 +27,23 @@ class Wrap {
     return std::none_of(cand_.begin(), cand_.end(), [&](int e) { return e != a && e != b && e != c && inside(a, b, c, e); });
   }
 
-  // A tetrahedron (v, a, b, c) of the star, positively oriented, or nothing (coplanar sites).
+  // A tetrahedron (v, a, b, c) of the star, positively oriented, or nothing (coplanar sites): a
+  // the nearest candidate (va is a Delaunay edge); for b in order, the tetrahedra across the
+  // triangle vab on either side (beyond), the first one empty of every candidate. When vab is a
+  // Delaunay triangle, the tetrahedron beyond it on a side with candidates is Delaunay, so the
+  // search ends at the first b that makes one (O(k) predicates per b).
   std::optional<std::array<int, 3>> first(const std::vector<int>& order) const {
-    for (std::size_t i = 0; i < order.size(); ++i)
-      for (std::size_t k = 1; k < order.size(); ++k)
-        for (std::size_t j = 0; j < k; ++j) {
-          if (j == i || k == i) continue;
-          int a = order[i], b = order[j], c = order[k];
-          const Sign s = orientation(v_, a, b, c);
-          if (s == Sign::zero) continue;
-          if (s == Sign::negative) std::swap(b, c);
-          if (empty(a, b, c)) return std::array<int, 3>{a, b, c};
-        }
+    // (The order is by distances in doubles: should rounding put a non-neighbour first, the next
+    // candidates are tried as a.)
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const int a = order[i];
+      for (std::size_t j = 0; j < order.size(); ++j) {
+        const int b = order[j];
+        if (j == i) continue;
+        if (const int d = beyond(a, b); d >= 0 && empty(b, a, d)) return std::array<int, 3>{b, a, d};
+        if (const int d = beyond(b, a); d >= 0 && empty(a, b, d)) return std::array<int, 3>{a, b, d};
+      }
+    }
     return std::nullopt;
   }
 

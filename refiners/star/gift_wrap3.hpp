@@ -2,17 +2,20 @@
 // The star of a site v in 3D (LU Definition 3.1, issue 40): the tetrahedra at v of Del_M of v and
 // the candidates, perturbed symbolically where five are M-cospherical (predicates/
 // insphere_perturbed.hpp), by gift wrapping around v. Every decision is an exact predicate.
-//  - The first tetrahedron: for a = the candidates in order of their M-distance from v (the
-//    nearest first: the M-ball on va as diameter holds no other candidate, so va is an edge of
-//    every Delaunay tetrahedralization, perturbed or not), pairs b, c in the same order, until
-//    (v, a, b, c) is not flat and no candidate lies inside its M-sphere (checked against all: the
-//    order only makes the search short).
+//  - The first tetrahedron: a = the candidate M-nearest to v (the M-ball on va as diameter holds
+//    no other candidate, so va is an edge of every Delaunay tetrahedralization, perturbed or not);
+//    for b in order of M-distance from v, the tetrahedron beyond the triangle vab on each side
+//    (as below), until one is empty of every candidate (checked against all: the order only
+//    makes the search short). Some triangle vab is Delaunay, and beyond it on a side holding
+//    candidates lies a Delaunay tetrahedron, so one is found unless v and the candidates are
+//    coplanar.
 //  - Then across each face (v, a, b) of a tetrahedron (v, a, b, c): the next tetrahedron is
 //    (v, b, a, d) with d the candidate on the other side of the plane vab whose M-sphere through
 //    v, a, b holds no other candidate of that side (one scan: on that side the spheres through
 //    v, a, b are nested, and the perturbation orders them totally); none there: the face is on the
 //    hull of the candidates (v's star is open there).
-// Cost: O(k) predicates per face after the first tetrahedron, k candidates.
+// Cost: O(k) predicates per face, and per triangle vab tried for the first tetrahedron (usually
+// the first few), k candidates.
 #include "predicates/point.hpp"
 
 #include <array>

@@ -1,0 +1,193 @@
+#include "refiners/common/boundary3.hpp"
+
+#include "predicates/encroachment3.hpp"
+#include "refiners/common/exact_split.hpp"
+
+#include <algorithm>
+#include <iterator>
+
+namespace anisocert::refiners::common {
+namespace {
+
+// The diametral M-ball of the triangle abc (its centre in the plane abc, predicates/
+// encroachment3.hpp's formula), in doubles: its box (radius doubled) selects candidates.
+Box3 diametral_box(const Point3<double>& a, const Point3<double>& b, const Point3<double>& c, const Sym3<double>& M) {
+  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+  const double A = predicates::quadratic_form(M, ux, uy, uz), C = predicates::quadratic_form(M, vx, vy, vz);
+  const double B = predicates::bilinear_form(M, ux, uy, uz, vx, vy, vz), D = A * C - B * B;
+  const double al = C * (A - B) / (2 * D), be = A * (C - B) / (2 * D);
+  const Point3<double> o{a.x + al * ux + be * vx, a.y + al * uy + be * vy, a.z + al * uz + be * vz};
+  const double r2 = predicates::quadratic_form(M, a.x - o.x, a.y - o.y, a.z - o.z);
+  return metric_ball_box(o, M, 4 * r2);
+}
+
+Box3 hull(const Box3& p, const Box3& q) {
+  if (p.empty()) return q;
+  return {std::min(p.x0, q.x0), std::max(p.x1, q.x1), std::min(p.y0, q.y0), std::max(p.y1, q.y1), std::min(p.z0, q.z0), std::max(p.z1, q.z1)};
+}
+
+}  // namespace
+
+Boundary3::Boundary3(const Domain3& domain, const Sites3& sites) : domain_(domain), sites_(sites) {
+  boxes_.reset(sites_.grid);
+  site_facets_.resize(domain.vertices().size());
+  for (int f = 0; f < static_cast<int>(domain.facets().size()); ++f)
+    for (int v : domain.facets()[f]) site_facets_[v].push_back(domain.plane_of(f));
+  for (auto& planes : site_facets_) {
+    std::sort(planes.begin(), planes.end());
+    planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
+  }
+  for (int f = 0; f < static_cast<int>(domain.facets().size()); ++f) add_subfacet(domain.facets()[f], f);
+}
+
+int Boundary3::add_subfacet(const std::array<int, 3>& v, int facet) {
+  const int id = static_cast<int>(subfacets_.size());
+  subfacets_.push_back({v, facet, true});
+  for (int e = 0; e < 3; ++e) edges_[key(v[e], v[(e + 1) % 3])].push_back(id);
+  const auto& x = sites_.points;
+  Box3 box;
+  for (int w : v) box = hull(box, diametral_box(x[v[0]], x[v[1]], x[v[2]], sites_.metrics[w]));
+  boxes_.set(id, box, sites_.grid);
+  queue_.push_back(id);
+  return id;
+}
+
+void Boundary3::kill(int f) {
+  Subfacet& s = subfacets_[f];
+  s.alive = false;
+  for (int e = 0; e < 3; ++e) {
+    auto& list = edges_[key(s.v[e], s.v[(e + 1) % 3])];
+    std::erase(list, f);
+  }
+  boxes_.set(f, Box3{}, sites_.grid);
+}
+
+bool Boundary3::is_subsegment(int a, int b) const {
+  const auto it = edges_.find(key(a, b));
+  if (it == edges_.end() || it->second.size() != 2) return false;
+  return !domain_.coplanar(subfacets_[it->second[0]].facet, subfacets_[it->second[1]].facet);
+}
+
+bool Boundary3::encroaches(const Point3<double>& p, const Sym3<double>& Mp, int f, std::optional<Edge>* edge_of) const {
+  const auto& v = subfacets_[f].v;
+  const auto& x = sites_.points;
+  const auto& m = sites_.metrics;
+  for (int e = 0; e < 3; ++e) {
+    const int a = v[e], b = v[(e + 1) % 3];
+    if (!is_subsegment(a, b)) continue;
+    if (predicates::encroaches_edge(p, x[a], x[b], Mp) || predicates::encroaches_edge(p, x[a], x[b], m[a]) ||
+        predicates::encroaches_edge(p, x[a], x[b], m[b])) {
+      if (edge_of) *edge_of = Edge{std::min(a, b), std::max(a, b)};
+      return true;
+    }
+  }
+  if (predicates::encroaches_facet(p, x[v[0]], x[v[1]], x[v[2]], Mp)) return true;
+  for (int w : v)
+    if (predicates::encroaches_facet(p, x[v[0]], x[v[1]], x[v[2]], m[w])) return true;
+  return false;
+}
+
+std::pair<double, Boundary3::Edge> Boundary3::length(int a, int b) const {
+  const auto& x = sites_.points;
+  const double dx = x[b].x - x[a].x, dy = x[b].y - x[a].y, dz = x[b].z - x[a].z;
+  return {std::max(predicates::quadratic_form(sites_.metrics[a], dx, dy, dz), predicates::quadratic_form(sites_.metrics[b], dx, dy, dz)),
+          Edge{std::min(a, b), std::max(a, b)}};
+}
+
+Boundary3::Edge Boundary3::longest_edge(int f) const {
+  const auto& v = subfacets_[f].v;
+  return std::max({length(v[0], v[1]), length(v[1], v[2]), length(v[2], v[0])}).second;
+}
+
+Boundary3::Edge Boundary3::terminal(Edge e) const {
+  for (bool moved = true; moved;) {
+    moved = false;
+    for (int f : edges_.at(key(e[0], e[1])))
+      if (const Edge l = longest_edge(f); l != e) {
+        e = l, moved = true;
+        break;
+      }
+  }
+  return e;
+}
+
+std::optional<Boundary3::Edge> Boundary3::next_encroached() {
+  while (!queue_.empty()) {
+    const int f = queue_.front();
+    queue_.pop_front();
+    if (!subfacets_[f].alive) continue;
+    const auto& v = subfacets_[f].v;
+    for (int p : sites_.in(boxes_.box(f))) {
+      if (p == v[0] || p == v[1] || p == v[2]) continue;
+      std::optional<Edge> edge;
+      if (encroaches(sites_.points[p], sites_.metrics[p], f, &edge)) {
+        queue_.push_front(f);  // split at one of its edges; checked again if it survives (it does not)
+        return terminal(edge ? *edge : longest_edge(f));
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Boundary3::Edge> Boundary3::snap(const Point3<double>& q, const Sym3<double>& Mv, const Sym3<double>& Mq) const {
+  const std::vector<int> near = boxes_.holding(q, sites_.grid);  // a copy: the buffer is shared
+  std::optional<int> facet;
+  for (int f : near) {
+    std::optional<Edge> edge;
+    if (encroaches(q, Mq, f, &edge) || encroaches(q, Mv, f, &edge)) {
+      if (edge) return terminal(*edge);
+      if (!facet) facet = f;
+    }
+  }
+  if (facet) return terminal(longest_edge(*facet));
+  return std::nullopt;
+}
+
+std::variant<Point3<double>, std::string> Boundary3::midpoint(const Edge& e) const {
+  const auto& x = sites_.points;
+  if (const auto m = exact_midpoint(x[e[0]], x[e[1]])) return *m;
+  return "the boundary edge from site " + std::to_string(e[0]) + " " + point_text(x[e[0]]) + " to site " + std::to_string(e[1]) + " " +
+         point_text(x[e[1]]) + " has no midpoint in doubles: the boundary there is finer than doubles resolve";
+}
+
+void Boundary3::split(const Edge& e, int m) {
+  if (site_facets_.size() <= static_cast<std::size_t>(m)) site_facets_.resize(m + 1);
+  const auto& fa = site_facets_[e[0]];
+  const auto& fb = site_facets_[e[1]];
+  std::vector<int> both;
+  std::set_intersection(fa.begin(), fa.end(), fb.begin(), fb.end(), std::back_inserter(both));
+  site_facets_[m] = std::move(both);
+  const std::vector<int> at = edges_[key(e[0], e[1])];
+  for (int f : at) {
+    const std::array<int, 3> v = subfacets_[f].v;
+    const int facet = subfacets_[f].facet;
+    kill(f);
+    // Rotate so that the edge runs v[r] → v[r + 1] in f's (outward) order.
+    int r = 0;
+    while (!((v[r] == e[0] || v[r] == e[1]) && (v[(r + 1) % 3] == e[0] || v[(r + 1) % 3] == e[1]))) ++r;
+    const int x = v[r], y = v[(r + 1) % 3], z = v[(r + 2) % 3];
+    add_subfacet({x, m, z}, facet);
+    add_subfacet({m, y, z}, facet);
+  }
+}
+
+void Boundary3::site_added(int k) {
+  if (site_facets_.size() <= static_cast<std::size_t>(k)) site_facets_.resize(k + 1);
+  for (int f : boxes_.holding(sites_.points[k], sites_.grid)) queue_.push_back(f);
+}
+
+bool Boundary3::on_one_facet(int a, int b, int c) const {
+  const auto &fa = site_facets_[a], &fb = site_facets_[b], &fc = site_facets_[c];
+  for (int f : fa)
+    if (std::binary_search(fb.begin(), fb.end(), f) && std::binary_search(fc.begin(), fc.end(), f)) return true;
+  return false;
+}
+
+std::vector<std::array<int, 3>> Boundary3::subfacets() const {
+  std::vector<std::array<int, 3>> out;
+  for (const auto& s : subfacets_)
+    if (s.alive) out.push_back(s.v);
+  return out;
+}
+
+}  // namespace anisocert::refiners::common

@@ -1,0 +1,91 @@
+#pragma once
+// The surface level of the 3D refiner (issue 40; LU §4.1 rule (1) and Insert_or_snap_e/_f): Ω's
+// boundary as a triangulation of its facets, the subfacets, refined by splitting edges at their
+// midpoints. A midpoint of two points of a facet lies on it, and the refiner checks that it is a
+// double (exact_split.hpp), so every boundary vertex lies exactly on every input facet holding
+// both ends of its edge; each split cuts the (two) subfacets at the edge, so the surface stays a
+// conforming triangulation of ∂Ω. Its edges between subfacets of facets that are not coplanar are
+// the subsegments (Ω's ridges).
+// Encroachment (LU Definition 3.16, predicates/encroachment3.hpp, exact): a site p encroaches a
+// subsegment or a subfacet when it lies strictly inside its diametral M-ball for M = M_p or the
+// metric of one of its vertices. An encroached subsegment is split; an encroached subfacet has
+// its longest edge split, a subsegment first when p encroaches one of its edges that is one; each
+// by Rivara's longest-edge propagation (LEPP): while a subfacet at the edge has a longer edge, that
+// one is split first, so that every subfacet is cut across its longest edge and the surface's
+// angles stay bounded below (bisecting a neighbour across a shorter edge, repeatedly, made ever
+// thinner subfacets that encroach on ever more sites: a cascade without end). An edge's length is
+// the larger in its two ends' metrics, ties broken by the sites' indices (a strict order, so the
+// propagation ends). Candidates come from boxes (the diametral balls' in the vertices'
+// metrics, doubled: a floating-point choice of which pairs to test; the certifier judges the mesh).
+#include "refiners/common/sites3.hpp"
+
+#include <array>
+#include <deque>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+namespace anisocert::refiners::common {
+
+class Boundary3 {
+ public:
+  // The subfacets are Ω's facets; sites 0 … n − 1 must be Ω's vertices, in order.
+  Boundary3(const Domain3& domain, const Sites3& sites);
+
+  using Edge = std::array<int, 2>;  // sites, the lesser first
+  // The edge to split next for rule (1), if any.
+  std::optional<Edge> next_encroached();
+  // Insert_or_snap for a point q (metric Mq) picked to refine a simplex of the star of a site
+  // with metric Mv: the edge to split instead when q encroaches a subsegment, else when it
+  // encroaches a subfacet (in Mv or Mq).
+  std::optional<Edge> snap(const Point3<double>& q, const Sym3<double>& Mv, const Sym3<double>& Mq) const;
+  // The exact midpoint of e, or why there is none.
+  std::variant<Point3<double>, std::string> midpoint(const Edge& e) const;
+  // After site m (e's midpoint) was added: cuts the subfacets at e.
+  void split(const Edge& e, int m);
+  // After site k was added: queues the subfacets it encroaches.
+  void site_added(int k);
+  // After the site grid was rebuilt.
+  void refile() { boxes_.refile(sites_.grid); }
+
+  // Whether sites a, b, c lie in the plane of one input facet, each on a facet of it (the star of
+  // a boundary site may be open there).
+  bool on_one_facet(int a, int b, int c) const;
+  // The subfacets, outward (for the output's boundary triangles).
+  std::vector<std::array<int, 3>> subfacets() const;
+  std::size_t queued() const { return queue_.size(); }
+
+ private:
+  struct Subfacet {
+    std::array<int, 3> v;
+    int facet;
+    bool alive = true;
+  };
+  static std::uint64_t key(int a, int b) {
+    return a < b ? (std::uint64_t(a) << 32) | std::uint32_t(b) : (std::uint64_t(b) << 32) | std::uint32_t(a);
+  }
+  int add_subfacet(const std::array<int, 3>& v, int facet);
+  void kill(int f);
+  bool is_subsegment(int a, int b) const;
+  // Whether p (metric Mp, not a vertex of f) encroaches subfacet f; edge_of: set to a subsegment
+  // of f that p encroaches, if any.
+  bool encroaches(const Point3<double>& p, const Sym3<double>& Mp, int f, std::optional<Edge>* edge_of) const;
+  std::pair<double, Edge> length(int a, int b) const;
+  Edge longest_edge(int f) const;
+  // The edge LEPP splits first on the way to splitting e (e when e is the longest edge of both its subfacets).
+  Edge terminal(Edge e) const;
+
+  const Domain3& domain_;
+  const Sites3& sites_;
+  std::vector<Subfacet> subfacets_;
+  std::unordered_map<std::uint64_t, std::vector<int>> edges_;  // edge → its live subfacets
+  // Per site: the planes (Domain3::plane_of) of the input facets holding it, sorted. The midpoint
+  // of an edge lies on the planes of both ends.
+  std::vector<std::vector<int>> site_facets_;
+  FiledBoxes3 boxes_;
+  std::deque<int> queue_;  // subfacets to check
+};
+
+}  // namespace anisocert::refiners::common

@@ -1,0 +1,141 @@
+#include "refiners/common/domain3.hpp"
+
+#include "numbers/shortest_decimal.hpp"
+#include "refiners/common/exact_split.hpp"
+#include "predicates/orientation.hpp"
+#include "predicates/orientation3.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace anisocert::refiners::common {
+
+using anisocert::Sign;
+
+std::string point_text(const Point3<double>& p) {
+  return "(" + shortest_decimal(p.x) + ", " + shortest_decimal(p.y) + ", " + shortest_decimal(p.z) + ")";
+}
+
+namespace {
+
+double exact_double(const Rational& q, std::size_t v) {
+  const double d = q.convert_to<double>();
+  if (!std::isfinite(d) || rational_from_double(d) != q)
+    throw DomainError("vertex " + std::to_string(v) + ": a coordinate is not a double (the refiner works in doubles; round it)");
+  return d;
+}
+
+// Whether p, coplanar with the triangle abc, lies in it (closed), by the orientations of the
+// projections onto the coordinate plane where abc is not flat (exactly: its projected orientation
+// is not zero there, and projection keeps containment for coplanar points).
+bool in_coplanar_triangle(const Point3<double>& p, const Point3<double>& a, const Point3<double>& b, const Point3<double>& c) {
+  using P2 = predicates::Point2<double>;
+  const std::array<P2 (*)(const Point3<double>&), 3> projections{
+      [](const Point3<double>& q) { return P2{q.x, q.y}; }, [](const Point3<double>& q) { return P2{q.y, q.z}; },
+      [](const Point3<double>& q) { return P2{q.z, q.x}; }};
+  for (auto proj : projections) {
+    const Sign s = predicates::orientation(proj(a), proj(b), proj(c));
+    if (s == Sign::zero) continue;
+    const Sign s1 = predicates::orientation(proj(a), proj(b), proj(p)), s2 = predicates::orientation(proj(b), proj(c), proj(p)),
+               s3 = predicates::orientation(proj(c), proj(a), proj(p));
+    return s1 != -s && s2 != -s && s3 != -s;
+  }
+  return false;  // abc collinear: excluded by polyhedron_defect
+}
+
+// Directions for the parity test: no two parallel, none in a coordinate plane.
+constexpr std::array<std::array<double, 3>, 8> directions{{{0.5377, 0.3193, 0.7801},
+                                                           {-0.2917, 0.8713, 0.3944},
+                                                           {0.6611, -0.5419, 0.5189},
+                                                           {-0.4427, -0.3359, -0.8311},
+                                                           {0.1319, 0.9127, -0.3867},
+                                                           {-0.7717, 0.2281, -0.5939},
+                                                           {0.3187, -0.8231, -0.4699},
+                                                           {0.8663, 0.1777, -0.4667}}};
+
+}  // namespace
+
+Domain3::Domain3(const geometry::Polyhedron& p) {
+  vertices_.reserve(p.vertices.size());
+  for (std::size_t v = 0; v < p.vertices.size(); ++v)
+    vertices_.push_back({exact_double(p.vertices[v].x, v), exact_double(p.vertices[v].y, v), exact_double(p.vertices[v].z, v)});
+  if (const auto defect = geometry::polyhedron_defect(p)) throw DomainError(*defect);
+  facets_ = p.facets;
+  for (std::size_t f = 0; f < facets_.size(); ++f)
+    for (int e = 0; e < 3; ++e) {
+      const int a = facets_[f][e], b = facets_[f][(e + 1) % 3];
+      if (exact_halvings(vertices_[a], vertices_[b]) < min_halvings)
+        throw DomainError("facet " + std::to_string(f) + ": its edge from vertex " + std::to_string(a) + " to vertex " + std::to_string(b) +
+                          " cannot be halved exactly " + std::to_string(min_halvings) +
+                          " times in doubles (boundary vertices must lie exactly on the facets: round the coordinates to a coarser binary grid)");
+    }
+  box_ = {vertices_[0].x, vertices_[0].x, vertices_[0].y, vertices_[0].y, vertices_[0].z, vertices_[0].z};
+  for (const auto& q : vertices_) {
+    box_.x0 = std::min(box_.x0, q.x), box_.x1 = std::max(box_.x1, q.x);
+    box_.y0 = std::min(box_.y0, q.y), box_.y1 = std::max(box_.y1, q.y);
+    box_.z0 = std::min(box_.z0, q.z), box_.z1 = std::max(box_.z1, q.z);
+  }
+  const std::size_t n = facets_.size();
+  coplanar_.assign(n * n, false);
+  for (std::size_t f = 0; f < n; ++f)
+    for (std::size_t g = 0; g < n; ++g) {
+      const auto& a = facets_[f];
+      bool all = true;
+      for (int k : facets_[g])
+        all = all && predicates::orientation3(vertices_[a[0]], vertices_[a[1]], vertices_[a[2]], vertices_[k]) == Sign::zero;
+      coplanar_[f * n + g] = all;
+    }
+  for (std::size_t f = 0; f < n; ++f) {
+    std::size_t g = 0;
+    while (!coplanar_[f * n + g]) ++g;
+    plane_.push_back(static_cast<int>(g));
+  }
+  for (const auto& t : facets_)
+    for (const auto& q : vertices_)
+      convex_ = convex_ && predicates::orientation3(vertices_[t[0]], vertices_[t[1]], vertices_[t[2]], q) != Sign::positive;
+}
+
+bool Domain3::on_facet(const Point3<double>& p, int f) const {
+  const auto& t = facets_[f];
+  const auto &a = vertices_[t[0]], &b = vertices_[t[1]], &c = vertices_[t[2]];
+  return predicates::orientation3(a, b, c, p) == Sign::zero && in_coplanar_triangle(p, a, b, c);
+}
+
+Side Domain3::side(const Point3<double>& p) const {
+  if (p.x < box_.x0 || p.x > box_.x1 || p.y < box_.y0 || p.y > box_.y1 || p.z < box_.z0 || p.z > box_.z1) return Side::outside;
+  for (int f = 0; f < static_cast<int>(facets_.size()); ++f)
+    if (on_facet(p, f)) return Side::boundary;
+  // A far point beyond the box; the segment p → far crosses the surface an odd number of times
+  // iff p is inside (p is on no facet).
+  const double reach = 2 * ((box_.x1 - box_.x0) + (box_.y1 - box_.y0) + (box_.z1 - box_.z0)) + 1;
+  for (const auto& d : directions) {
+    const Point3<double> far{p.x + reach * d[0], p.y + reach * d[1], p.z + reach * d[2]};
+    bool degenerate = false, odd = false;
+    for (const auto& t : facets_) {
+      const auto &a = vertices_[t[0]], &b = vertices_[t[1]], &c = vertices_[t[2]];
+      const Sign sp = predicates::orientation3(a, b, c, p), sf = predicates::orientation3(a, b, c, far);
+      if (sf == Sign::zero) {
+        if (in_coplanar_triangle(far, a, b, c) || sp == Sign::zero) degenerate = true;
+        if (degenerate) break;
+        continue;
+      }
+      if (sp == Sign::zero) {  // p in the plane, off the facet: the segment touches the plane only at p
+        continue;
+      }
+      if (sp == sf) continue;
+      const Sign s1 = predicates::orientation3(p, far, a, b), s2 = predicates::orientation3(p, far, b, c),
+                 s3 = predicates::orientation3(p, far, c, a);
+      if (s1 == Sign::zero || s2 == Sign::zero || s3 == Sign::zero) {
+        degenerate = true;
+        break;
+      }
+      if (s1 == s2 && s2 == s3) odd = !odd;
+    }
+    if (!degenerate) return odd ? Side::inside : Side::outside;
+  }
+  // Eight directions all degenerate: impossible for a surface of finitely many facets but for
+  // contrived inputs; treat p as outside (it is then neither inserted nor used).
+  return Side::outside;
+}
+
+}  // namespace anisocert::refiners::common

@@ -1,0 +1,231 @@
+#include "refiners/star/star_refiner3.hpp"
+
+#include "geometry/circumellipsoid.hpp"
+#include "refiners/common/boundary3.hpp"
+#include "refiners/star/pick_valid3.hpp"
+#include "refiners/star/rules3.hpp"
+#include "refiners/star/star_set3.hpp"
+
+#include <cmath>
+#include <algorithm>
+#include <deque>
+#include <map>
+#include <variant>
+
+namespace anisocert::refiners::star {
+namespace {
+
+using predicates::Point3;
+using predicates::Sym3;
+
+// The faces of the tetrahedra (positively oriented) that only one of them has, outward.
+std::vector<std::array<int, 3>> boundary_faces(const std::vector<std::array<int, 4>>& tetrahedra) {
+  std::map<std::array<int, 3>, std::pair<int, std::array<int, 3>>> faces;  // sorted face → count, the outward face
+  for (const auto& t : tetrahedra) {
+    const auto [a, b, c, d] = t;
+    for (const std::array<int, 3>& f : {std::array<int, 3>{b, c, d}, {a, d, c}, {a, b, d}, {a, c, b}}) {
+      std::array<int, 3> k = f;
+      std::sort(k.begin(), k.end());
+      auto& [count, face] = faces[k];
+      ++count, face = f;
+    }
+  }
+  std::vector<std::array<int, 3>> out;
+  for (const auto& [k, entry] : faces)
+    if (entry.first == 1) out.push_back(entry.second);
+  return out;
+}
+
+common::Sites3 vertex_sites(const common::Domain3& domain, const fields::MetricField3& field) {
+  common::Sites3 sites(domain, field);
+  for (const auto& q : domain.vertices()) sites.add(q, sites.metric_at(q));
+  sites.grow_grid();
+  return sites;
+}
+
+// The refinement of a 3D star set: the Refinement interface of common::refine_until_done.
+class StarRefiner3 {
+ public:
+  StarRefiner3(const common::Domain3& domain, const fields::MetricField3& field, const RefineParameters& p)
+      : domain_(domain), p_(p), sites_(vertex_sites(domain, field)), boundary_(domain, sites_), stars_(domain, sites_, boundary_),
+        pick_(domain, sites_, p) {
+    const int n = static_cast<int>(sites_.size());
+    for (int v = 0; v < n; ++v) stars_.add(0), queued_.push_back(false);
+    for (int v = 0; v < n; ++v) stars_.recompute(v);
+    for (int v = 0; v < n; ++v) enqueue(v);
+  }
+
+  std::size_t vertices() const { return sites_.size(); }
+  std::size_t queued() const { return site_queue_.size() + boundary_.queued(); }
+  const std::string& stalled() const { return stalled_; }
+  std::string done() const {
+    if (const std::size_t n = stars_.empty_stars())
+      return std::to_string(n) + " stars have no tetrahedron in Ω: their search failed, the metric's scale is beyond what the "
+                                 "refiner resolves in doubles";
+    return "all stars consistent";
+  }
+
+  bool step() {
+    if (const auto e = boundary_.next_encroached()) {
+      split(*e);
+      return true;
+    }
+    while (!site_queue_.empty()) {
+      const int v = site_queue_.front();
+      site_queue_.pop_front();
+      queued_[v] = false;
+      const Action3 act = first_rule3(v, stars_, sites_, domain_, p_);
+      if (act.rule == Rule::none) continue;
+      refine(v, act);
+      enqueue(v);
+      return true;
+    }
+    return false;
+  }
+
+  StarResult3 result(std::string stop_reason, bool finished) const {
+    StarResult3 r;
+    r.mesh.tetrahedra = stars_.consistent_tetrahedra(r.inconsistent_tetrahedra);
+    r.empty_stars = stars_.empty_stars();
+    r.consistent = finished && r.inconsistent_tetrahedra == 0 && r.empty_stars == 0;
+    r.mesh.vertices = sites_.points, r.mesh.metrics = sites_.metrics;
+    r.mesh.triangles = boundary_faces(r.mesh.tetrahedra);
+    for (const auto& t : r.mesh.triangles) r.faces_off_boundary += !boundary_.on_one_facet(t[0], t[1], t[2]);
+    r.consistent = r.consistent && r.faces_off_boundary == 0;
+    r.subfacets = boundary_.subfacets().size();
+    r.stop_reason = std::move(stop_reason);
+    for (Rule rule : rules_by_priority) r.rule_counts.emplace_back(rule_name(rule), counts_[static_cast<int>(rule)]);
+    r.last_rule = rule_name(last_rule_);
+    r.picks_rejected = pick_.counts().rejected, r.picks_exhausted = pick_.counts().exhausted;
+    r.refinements = refinements_;
+    r.boundary_splits = splits_;
+    return r;
+  }
+
+ private:
+  // Inserts q (its metric the field's at q): the stars whose conflict zone holds q change (LU
+  // Lemma 3.5), and so may their neighbours' consistency; queues them, the new star and its
+  // neighbours; the surface level queues the subfacets q may encroach. reach2: the new star's
+  // first search radius (squared, in its metric). split: the boundary edge q is the midpoint of
+  // (cut before the stars are updated, which ask which facets hold q).
+  int insert(const Point3<double>& q, const Sym3<double>& Mq, Rule rule, double reach2,
+             const common::Boundary3::Edge* split = nullptr) {
+    ++counts_[static_cast<int>(rule)];
+    last_rule_ = rule;
+    const int k = sites_.add(q, Mq);
+    stars_.add(reach2);
+    queued_.push_back(false);
+    if (sites_.grow_grid()) {
+      stars_.refile();
+      boundary_.refile();
+    }
+    if (split) boundary_.split(*split, k);
+    boundary_.site_added(k);
+    zone_ = stars_.near(q);  // a copy: updates edit the index
+    for (int v : zone_) {
+      before_ = stars_.neighbours(v);
+      const Star3Update change = stars_.update(v, k);
+      if (change == Star3Update::unchanged) continue;
+      if (change == Star3Update::recompute) stars_.recompute(v);
+      enqueue(v);
+      for (int w : before_) enqueue(w);
+    }
+    stars_.recompute(k);
+    enqueue(k);
+    for (int w : stars_.neighbours(k)) enqueue(w);
+    return k;
+  }
+
+  void split(const common::Boundary3::Edge& e) {
+    const auto m = boundary_.midpoint(e);
+    if (const auto* why = std::get_if<std::string>(&m)) {
+      stalled_ = *why;
+      return;
+    }
+    const Point3<double> q = std::get<Point3<double>>(m);
+    const Sym3<double> Mq = sites_.metric_at(q);
+    const auto& a = sites_.points[e[0]];
+    const double half2 = predicates::quadratic_form(Mq, q.x - a.x, q.y - a.y, q.z - a.z);
+    ++splits_;
+    insert(q, Mq, Rule::encroachment, 16 * half2, &e);
+  }
+
+  // Refine(τ) for the tetrahedron τ = (v, t) of S_v: Pick_valid, then Insert_or_snap.
+  void refine(int v, const Action3& act) {
+    ++refinements_;
+    const auto& x = sites_.points;
+    const Sym3<double> M = sites_.metrics[v];
+    const std::array<int, 4> q{v, act.t[0], act.t[1], act.t[2]};
+    const auto c = geometry::circumellipsoid(x[v], x[q[1]], x[q[2]], x[q[3]], M);
+    const Point3<double> o{x[v].x + c.x[0], x[v].y + c.x[1], x[v].z + c.x[2]};
+    Point3<double> p = pick_.pick(o, c.r2, M, q);
+    // Outside Ω the field need not be defined: M_v stands in for M_p to choose the split.
+    const bool inside = domain_.side(p) == common::Side::inside;
+    const Sym3<double> Mp = inside ? sites_.metric_at(p) : M;
+    if (const auto e = boundary_.snap(p, M, Mp)) {
+      split(*e);
+      return;
+    }
+    if (!inside) {
+      // Outside Ω and encroaching nothing (a picking region beyond a facet the boundary's boxes
+      // missed): the tetrahedron's centroid, inside Ω, instead.
+      p = {0, 0, 0};
+      for (int w : q) p = {p.x + x[w].x / 4, p.y + x[w].y / 4, p.z + x[w].z / 4};
+      if (domain_.side(p) != common::Side::inside) {
+        stalled_ = "refining a tetrahedron of the star of site " + std::to_string(v) + " found no point inside Ω to insert (" +
+                   rule_name(act.rule) + ")";
+        return;
+      }
+      const Sym3<double> Mg = sites_.metric_at(p);
+      if (const auto e = boundary_.snap(p, M, Mg)) {
+        split(*e);
+        return;
+      }
+      return add_refinement(v, act, p, Mg, c.r2);
+    }
+    add_refinement(v, act, p, Mp, c.r2);
+  }
+
+  void add_refinement(int v, const Action3& act, const Point3<double>& p, const Sym3<double>& Mp, double r2) {
+    const common::Box3 here{p.x, p.x, p.y, p.y, p.z, p.z};
+    if (!sites_.in(here).empty()) {
+      stalled_ = "refining a tetrahedron of the star of site " + std::to_string(v) + " near " + common::point_text(p) +
+                 " picked an existing site: the mesh there is finer than doubles resolve (" + rule_name(act.rule) + ")";
+      return;
+    }
+    insert(p, Mp, act.rule, 4 * r2);
+  }
+
+  void enqueue(int v) {
+    if (!queued_[v]) queued_[v] = true, site_queue_.push_back(v);
+  }
+
+  const common::Domain3& domain_;
+  const RefineParameters& p_;
+  common::Sites3 sites_;
+  common::Boundary3 boundary_;
+  StarSet3 stars_;
+  PickValid3 pick_;
+  std::deque<int> site_queue_;
+  std::vector<bool> queued_;
+  std::array<std::size_t, rules_by_priority.size() + 1> counts_{};
+  Rule last_rule_ = Rule::none;
+  std::size_t refinements_ = 0, splits_ = 0;
+  std::string stalled_;
+  std::vector<int> zone_, before_;
+};
+
+}  // namespace
+
+StarResult3 refine_star3(const common::Domain3& domain, const fields::MetricField3& field, const RefineParameters& p,
+                         const common::Progress& progress) {
+  const common::Stopwatch clock;
+  StarRefiner3 r(domain, field, p);
+  const common::Stop stop = common::refine_until_done(r, p, clock, progress);
+  const bool finished = stop.finished && r.stalled().empty() && r.queued() == 0;
+  StarResult3 result = r.result(stop.reason, finished);
+  result.seconds = clock.seconds();
+  return result;
+}
+
+}  // namespace anisocert::refiners::star
