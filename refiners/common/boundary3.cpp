@@ -1,6 +1,7 @@
 #include "refiners/common/boundary3.hpp"
 
 #include "predicates/encroachment3.hpp"
+#include "predicates/orientation3.hpp"
 #include "refiners/common/exact_split.hpp"
 
 #include <algorithm>
@@ -81,6 +82,7 @@ bool Boundary3::encroaches(const Point3<double>& p, const Sym3<double>& Mp, int 
       return true;
     }
   }
+  if (predicates::orientation3(x[v[0]], x[v[1]], x[v[2]], p) == Sign::zero) return false;  // in f's plane (see boundary3.hpp)
   if (predicates::encroaches_facet(p, x[v[0]], x[v[1]], x[v[2]], Mp)) return true;
   for (int w : v)
     if (predicates::encroaches_facet(p, x[v[0]], x[v[1]], x[v[2]], m[w])) return true;

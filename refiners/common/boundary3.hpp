@@ -8,7 +8,12 @@
 // the subsegments (Ω's ridges).
 // Encroachment (LU Definition 3.16, predicates/encroachment3.hpp, exact): a site p encroaches a
 // subsegment or a subfacet when it lies strictly inside its diametral M-ball for M = M_p or the
-// metric of one of its vertices. An encroached subsegment is split; an encroached subfacet has
+// metric of one of its vertices; a site in a subfacet's own plane does not encroach it (the
+// surface's triangulation of a plane need not be that plane's Delaunay one, which no bisection
+// makes it in every metric: counting those sites refined the faces of a cube without end under
+// UGAWG's linear field; the mesh's boundary faces are the tetrahedra's, which the stars make
+// Delaunay, and the subfacets only say where the boundary must be split). An encroached
+// subsegment is split; an encroached subfacet has
 // its longest edge split, a subsegment first when p encroaches one of its edges that is one; each
 // by Rivara's longest-edge propagation (LEPP): while a subfacet at the edge has a longer edge, that
 // one is split first, so that every subfacet is cut across its longest edge and the surface's

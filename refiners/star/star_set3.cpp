@@ -86,7 +86,9 @@ void StarSet3::recompute(int v) {
 Star3Update StarSet3::update(int v, int k) {
   Entry& e = stars_[v];
   const Star3Update u = insert_into_star3(e.star, v, k, sites_.points, sites_.metrics[v]);
-  if (u == Star3Update::updated) refresh(v, e.reach2);
+  // A star updated into one that does not fit its reach (an open face off Ω's facets: v's hull
+  // grew where a search may have missed sites) is wrapped again.
+  if (u == Star3Update::updated && !refresh(v, e.reach2)) return Star3Update::recompute;
   return u;
 }
 
