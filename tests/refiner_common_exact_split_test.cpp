@@ -55,35 +55,35 @@ TEST(ExactSplit, HalvingCountIsALowerBound) {
 TEST(ExactSplit, ClosedForms) {
   // The unit square's edges: multiples of 2⁻ʲ in [0, 1] are doubles for j ≤ 52 (hand count:
   // E = 1, t_d = 0, so 53 − 1 + 0).
-  EXPECT_EQ(exact_halvings({0, 0}, {1, 0}), 52);
+  EXPECT_EQ(exact_halvings(Point2<double>{0, 0}, Point2<double>{1, 0}), 52);
   // 0.375 = 3/8 and 1: the grid 2⁻³ at depth 0, multiples of 5/8 · 2⁻ʲ: 53 − 1 − 3 = 49.
-  EXPECT_EQ(exact_halvings({1, 0.375}, {0.375, 1}), 49);
+  EXPECT_EQ(exact_halvings(Point2<double>{1, 0.375}, Point2<double>{0.375, 1}), 49);
   // An end with all 53 bits (u = 1 + 2⁻⁵², E − t_u = 53 exactly) and w = u + 2⁻²⁰: the points
   // u + k 2⁻²⁰⁻ʲ are multiples of 2⁻⁵² in [1, 2), doubles, for j ≤ 32 (53 − 1 − 20; campaign mutant
   // 170 refused every halving when E − t_u = 53).
-  EXPECT_EQ(exact_halvings({1 + 0x1p-52, 0}, {1 + 0x1p-52 + 0x1p-20, 0}), 32);
+  EXPECT_EQ(exact_halvings(Point2<double>{1 + 0x1p-52, 0}, Point2<double>{1 + 0x1p-52 + 0x1p-20, 0}), 32);
   const Rational full = rational_from_double(1 + 0x1p-52);
   EXPECT_TRUE(is_double(full + rational_from_double(0x1p-52)));    // the first point of level 32
   EXPECT_FALSE(is_double(full + rational_from_double(0x1p-53)));   // and of level 33
   // 0.4 (an odd multiple of 2⁻⁵⁴) and 1: no double point with y ∈ [1/2, 1), so not even once.
-  EXPECT_EQ(exact_halvings({1, 0.4}, {0.4, 1}), 0);
-  EXPECT_FALSE(exact_midpoint({1, 0.4}, {0.4, 1}));
+  EXPECT_EQ(exact_halvings(Point2<double>{1, 0.4}, Point2<double>{0.4, 1}), 0);
+  EXPECT_FALSE(exact_midpoint(Point2<double>{1, 0.4}, Point2<double>{0.4, 1}));
   EXPECT_FALSE(level_is_exact({1, 0.4}, {0.4, 1}, 1));
   // Review findings: subnormal coordinates (2⁻¹⁰⁷⁵ is not a double), non-finite ones, a
   // difference beyond the doubles, and a sum that overflows although the midpoint is a double.
-  EXPECT_EQ(exact_halvings({0, 0}, {0x1p-1074, 0}), 0);
-  EXPECT_EQ(exact_halvings({0, 0}, {0x1p-1070, 0}), 4);  // multiples of 2⁻¹⁰⁷⁴ below 2⁻¹⁰⁷⁰
-  EXPECT_EQ(exact_halvings({0, 0}, {INFINITY, 0}), 0);
-  EXPECT_EQ(exact_halvings({INFINITY, 0}, {INFINITY, 1}), 0);  // equal but not finite: no halving
-  EXPECT_EQ(exact_halvings({NAN, 0}, {1, 1}), 0);
-  EXPECT_EQ(exact_halvings({-0x1p1023, 0}, {0x1p1023, 0}), 0);
-  EXPECT_FALSE(exact_midpoint({0, 0}, {0x1p-1074, 0}));
-  EXPECT_FALSE(exact_midpoint({0, 0}, {NAN, 0}));
+  EXPECT_EQ(exact_halvings(Point2<double>{0, 0}, Point2<double>{0x1p-1074, 0}), 0);
+  EXPECT_EQ(exact_halvings(Point2<double>{0, 0}, Point2<double>{0x1p-1070, 0}), 4);  // multiples of 2⁻¹⁰⁷⁴ below 2⁻¹⁰⁷⁰
+  EXPECT_EQ(exact_halvings(Point2<double>{0, 0}, Point2<double>{INFINITY, 0}), 0);
+  EXPECT_EQ(exact_halvings(Point2<double>{INFINITY, 0}, Point2<double>{INFINITY, 1}), 0);  // equal but not finite: no halving
+  EXPECT_EQ(exact_halvings(Point2<double>{NAN, 0}, Point2<double>{1, 1}), 0);
+  EXPECT_EQ(exact_halvings(Point2<double>{-0x1p1023, 0}, Point2<double>{0x1p1023, 0}), 0);
+  EXPECT_FALSE(exact_midpoint(Point2<double>{0, 0}, Point2<double>{0x1p-1074, 0}));
+  EXPECT_FALSE(exact_midpoint(Point2<double>{0, 0}, Point2<double>{NAN, 0}));
   const double big = std::numeric_limits<double>::max();
-  const auto m = exact_midpoint({big, 0}, {big, 0});
+  const auto m = exact_midpoint(Point2<double>{big, 0}, Point2<double>{big, 0});
   ASSERT_TRUE(m);
   EXPECT_EQ(m->x, big);
-  const auto m2 = exact_midpoint({big, 0}, {std::nextafter(std::nextafter(big, 0), 0), 0});
+  const auto m2 = exact_midpoint(Point2<double>{big, 0}, Point2<double>{std::nextafter(std::nextafter(big, 0), 0), 0});
   ASSERT_TRUE(m2);
   EXPECT_EQ(m2->x, std::nextafter(big, 0));
 }
@@ -119,8 +119,8 @@ TEST(ExactSplit, MidpointIsExactlyOnTheSegmentOrRefused) {
 TEST(ExactSplit, DomainAtTheHalvingBoundIsAccepted) {
   using anisocert::refiners::common::Domain;
   const double at = 1 + std::ldexp(1.0, -22), below = 1 + std::ldexp(1.0, -23);
-  EXPECT_EQ(exact_halvings({0, 0}, {at, 0}), 30);
-  EXPECT_EQ(exact_halvings({0, 0}, {below, 0}), 29);
+  EXPECT_EQ(exact_halvings(Point2<double>{0, 0}, Point2<double>{at, 0}), 30);
+  EXPECT_EQ(exact_halvings(Point2<double>{0, 0}, Point2<double>{below, 0}), 29);
   EXPECT_NO_THROW(Domain({{0, 0}, {at, 0}, {0, 1}}));
   try {
     Domain({{0, 0}, {below, 0}, {0, 1}});

@@ -31,7 +31,7 @@ Box3 hull(const Box3& p, const Box3& q) {
 
 Boundary3::Boundary3(const Domain3& domain, const Sites3& sites) : domain_(domain), sites_(sites) {
   boxes_.reset(sites_.grid);
-  site_facets_.resize(domain.vertices().size());
+  site_facets_.resize(sites.size());  // the vertices' planes below; sites after them (seeds) are inside
   for (int f = 0; f < static_cast<int>(domain.facets().size()); ++f)
     for (int v : domain.facets()[f]) site_facets_[v].push_back(domain.plane_of(f));
   for (auto& planes : site_facets_) {
@@ -49,7 +49,8 @@ int Boundary3::add_subfacet(const std::array<int, 3>& v, int facet) {
   Box3 box;
   for (int w : v) box = hull(box, diametral_box(x[v[0]], x[v[1]], x[v[2]], sites_.metrics[w]));
   boxes_.set(id, box, sites_.grid);
-  queue_.push_back(id);
+  queued_.push_back(false);
+  enqueue(id);
   return id;
 }
 
@@ -69,20 +70,30 @@ bool Boundary3::is_subsegment(int a, int b) const {
   return !domain_.coplanar(subfacets_[it->second[0]].facet, subfacets_[it->second[1]].facet);
 }
 
-bool Boundary3::encroaches(const Point3<double>& p, const Sym3<double>& Mp, int f, std::optional<Edge>* edge_of) const {
+bool Boundary3::beyond(int f, const Point3<double>& p) const {
+  const auto& v = subfacets_[f].v;
+  const auto& x = sites_.points;
+  return predicates::orientation3(x[v[0]], x[v[1]], x[v[2]], p) == Sign::positive;
+}
+
+bool Boundary3::encroaches(const Point3<double>& p, bool on_boundary, const Sym3<double>& Mp, int f, std::optional<Edge>* edge_of) const {
   const auto& v = subfacets_[f].v;
   const auto& x = sites_.points;
   const auto& m = sites_.metrics;
   for (int e = 0; e < 3; ++e) {
     const int a = v[e], b = v[(e + 1) % 3];
     if (!is_subsegment(a, b)) continue;
+    if (on_boundary) {
+      const auto& at = edges_.at(key(a, b));
+      if (!beyond(at[0], p) && !beyond(at[1], p)) continue;
+    }
     if (predicates::encroaches_edge(p, x[a], x[b], Mp) || predicates::encroaches_edge(p, x[a], x[b], m[a]) ||
         predicates::encroaches_edge(p, x[a], x[b], m[b])) {
       if (edge_of) *edge_of = Edge{std::min(a, b), std::max(a, b)};
       return true;
     }
   }
-  if (predicates::orientation3(x[v[0]], x[v[1]], x[v[2]], p) == Sign::zero) return false;  // in f's plane (see boundary3.hpp)
+  if (on_boundary ? !beyond(f, p) : predicates::orientation3(x[v[0]], x[v[1]], x[v[2]], p) == Sign::zero) return false;  // see boundary3.hpp
   if (predicates::encroaches_facet(p, x[v[0]], x[v[1]], x[v[2]], Mp)) return true;
   for (int w : v)
     if (predicates::encroaches_facet(p, x[v[0]], x[v[1]], x[v[2]], m[w])) return true;
@@ -117,13 +128,14 @@ std::optional<Boundary3::Edge> Boundary3::next_encroached() {
   while (!queue_.empty()) {
     const int f = queue_.front();
     queue_.pop_front();
+    queued_[f] = false;
     if (!subfacets_[f].alive) continue;
     const auto& v = subfacets_[f].v;
     for (int p : sites_.in(boxes_.box(f))) {
       if (p == v[0] || p == v[1] || p == v[2]) continue;
       std::optional<Edge> edge;
-      if (encroaches(sites_.points[p], sites_.metrics[p], f, &edge)) {
-        queue_.push_front(f);  // split at one of its edges; checked again if it survives (it does not)
+      if (encroaches(sites_.points[p], !site_facets_[p].empty(), sites_.metrics[p], f, &edge)) {
+        queue_.push_front(f), queued_[f] = true;  // checked again if the split (LEPP's first) left it
         return terminal(edge ? *edge : longest_edge(f));
       }
     }
@@ -133,15 +145,29 @@ std::optional<Boundary3::Edge> Boundary3::next_encroached() {
 
 std::optional<Boundary3::Edge> Boundary3::snap(const Point3<double>& q, const Sym3<double>& Mv, const Sym3<double>& Mq) const {
   const std::vector<int> near = boxes_.holding(q, sites_.grid);  // a copy: the buffer is shared
-  std::optional<int> facet;
+  // The encroached subsegment, else subfacet, nearest to q (its centroid's M_v-distance): the
+  // element between q and the simplex refined, not one it encroaches far away.
+  const auto& x = sites_.points;
+  const auto distance = [&](const auto& vertices) {
+    double cx = 0, cy = 0, cz = 0;
+    for (int w : vertices) cx += x[w].x / vertices.size(), cy += x[w].y / vertices.size(), cz += x[w].z / vertices.size();
+    return predicates::quadratic_form(Mv, cx - q.x, cy - q.y, cz - q.z);
+  };
+  std::optional<std::pair<double, Edge>> edge_best, facet_best;
   for (int f : near) {
     std::optional<Edge> edge;
-    if (encroaches(q, Mq, f, &edge) || encroaches(q, Mv, f, &edge)) {
-      if (edge) return terminal(*edge);
-      if (!facet) facet = f;
+    if (encroaches(q, false, Mq, f, &edge) || encroaches(q, false, Mv, f, &edge)) {
+      if (edge) {
+        const std::pair<double, Edge> c{distance(*edge), *edge};
+        if (!edge_best || c < *edge_best) edge_best = c;
+      } else {
+        const std::pair<double, Edge> c{distance(subfacets_[f].v), longest_edge(f)};
+        if (!facet_best || c < *facet_best) facet_best = c;
+      }
     }
   }
-  if (facet) return terminal(longest_edge(*facet));
+  if (edge_best) return terminal(edge_best->second);
+  if (facet_best) return terminal(facet_best->second);
   return std::nullopt;
 }
 
@@ -175,7 +201,7 @@ void Boundary3::split(const Edge& e, int m) {
 
 void Boundary3::site_added(int k) {
   if (site_facets_.size() <= static_cast<std::size_t>(k)) site_facets_.resize(k + 1);
-  for (int f : boxes_.holding(sites_.points[k], sites_.grid)) queue_.push_back(f);
+  for (int f : boxes_.holding(sites_.points[k], sites_.grid)) enqueue(f);
 }
 
 bool Boundary3::on_one_facet(int a, int b, int c) const {

@@ -8,11 +8,15 @@
 // the subsegments (Ω's ridges).
 // Encroachment (LU Definition 3.16, predicates/encroachment3.hpp, exact): a site p encroaches a
 // subsegment or a subfacet when it lies strictly inside its diametral M-ball for M = M_p or the
-// metric of one of its vertices; a site in a subfacet's own plane does not encroach it (the
-// surface's triangulation of a plane need not be that plane's Delaunay one, which no bisection
-// makes it in every metric: counting those sites refined the faces of a cube without end under
-// UGAWG's linear field; the mesh's boundary faces are the tetrahedra's, which the stars make
-// Delaunay, and the subfacets only say where the boundary must be split). An encroached
+// metric of one of its vertices. A site on ∂Ω encroaches a subfacet (a subsegment) only from
+// strictly beyond its plane (one of its two subfacets' planes): across a reflex ridge, where it
+// could make a tetrahedron cross the boundary. Within a plane the surface's triangulation need not
+// be the Delaunay one, which no bisection makes it in every metric, and across a convex ridge of
+// 90° (a cube's) the diametral M-balls of the two faces' subfacets take each other's vertices as
+// soon as the metrics of the sites differ (LU Lemma 4.1 needs boundary angles above 90°):
+// counting those sites refined the faces of a cube without end under UGAWG's linear field. The
+// mesh's boundary faces are its tetrahedra's, which the stars make Delaunay; whether each lies on
+// ∂Ω is checked (StarResult3::faces_off_boundary) and the certifier checks the mesh. An encroached
 // subsegment is split; an encroached subfacet has
 // its longest edge split, a subsegment first when p encroaches one of its edges that is one; each
 // by Rivara's longest-edge propagation (LEPP): while a subfacet at the edge has a longer edge, that
@@ -76,7 +80,10 @@ class Boundary3 {
   bool is_subsegment(int a, int b) const;
   // Whether p (metric Mp, not a vertex of f) encroaches subfacet f; edge_of: set to a subsegment
   // of f that p encroaches, if any.
-  bool encroaches(const Point3<double>& p, const Sym3<double>& Mp, int f, std::optional<Edge>* edge_of) const;
+  // on_boundary: p is a site on ∂Ω (which counts only beyond the planes, see above).
+  bool encroaches(const Point3<double>& p, bool on_boundary, const Sym3<double>& Mp, int f, std::optional<Edge>* edge_of) const;
+  // Whether p is strictly beyond subfacet f's plane (on its outward side).
+  bool beyond(int f, const Point3<double>& p) const;
   std::pair<double, Edge> length(int a, int b) const;
   Edge longest_edge(int f) const;
   // The edge LEPP splits first on the way to splitting e (e when e is the longest edge of both its subfacets).
@@ -90,7 +97,11 @@ class Boundary3 {
   // of an edge lies on the planes of both ends.
   std::vector<std::vector<int>> site_facets_;
   FiledBoxes3 boxes_;
-  std::deque<int> queue_;  // subfacets to check
+  void enqueue(int f) {
+    if (!queued_[f]) queued_[f] = true, queue_.push_back(f);
+  }
+  std::deque<int> queue_;      // subfacets to check, each once
+  std::vector<char> queued_;
 };
 
 }  // namespace anisocert::refiners::common

@@ -10,6 +10,8 @@ struct RefineParameters : common::Budget {
   // Pick_valid: how many picked points may be discarded as γ₀-cocircular before one is kept
   // (0 turns the test off). The test is only selective for γ₀ near 1, as LU Theorem 4.5 assumes.
   int pick_attempts = 3;
+  // 3D: begin with sites inside Ω about `size` apart in the metric (star_refiner3.cpp).
+  bool seed_interior = true;
   unsigned seed = 1;
 };
 

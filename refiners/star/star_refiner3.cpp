@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <deque>
 #include <map>
+#include <random>
 #include <variant>
 
 namespace anisocert::refiners::star {
@@ -36,9 +37,51 @@ std::vector<std::array<int, 3>> boundary_faces(const std::vector<std::array<int,
   return out;
 }
 
-common::Sites3 vertex_sites(const common::Domain3& domain, const fields::MetricField3& field) {
+// The first sites: Ω's vertices, then (p.seed_interior) one site in each cell of an adaptive
+// subdivision of Ω's box whose sides are at most √2 `size` long in the metric at its centre (a cell
+// is halved across its longest side in that metric), at a random point of the cell's middle half
+// (a lattice would make five sites cospherical everywhere, each a tie the perturbation decides in
+// exact arithmetic), for the cells Ω holds. Without interior sites, rule 1 refines the surface first
+// among tetrahedra that span Ω, whose huge spheres make every new star's search reach every
+// site (15 vertices/s on the cube under UGAWG's linear field); seeded, stars are local from the
+// start. A choice of where to begin, not a decision: the run refines from there by LU's rules and
+// the certifier judges the result.
+common::Sites3 initial_sites(const common::Domain3& domain, const fields::MetricField3& field, const RefineParameters& p) {
   common::Sites3 sites(domain, field);
   for (const auto& q : domain.vertices()) sites.add(q, sites.metric_at(q));
+  if (p.seed_interior) {
+    std::mt19937 rng(p.seed);
+    std::uniform_real_distribution<double> middle(0.25, 0.75);
+    const common::Box3& b = domain.bounding_box();
+    std::vector<std::array<double, 6>> cells{{b.x0, b.x1, b.y0, b.y1, b.z0, b.z1}};
+    const double size2 = 2 * p.size * p.size;  // sides in (0.7, 1.4] × size: about size apart
+    while (!cells.empty() && sites.size() < p.max_vertices / 2) {
+      const auto c = cells.back();
+      cells.pop_back();
+      const Point3<double> o{(c[0] + c[1]) / 2, (c[2] + c[3]) / 2, (c[4] + c[5]) / 2};
+      // Outside Ω the field need not be defined: the nearest vertex's metric stands in.
+      const bool inside = domain.side(o) == common::Side::inside;
+      const Sym3<double> M = inside ? sites.metric_at(o) : sites.metrics[0];
+      const std::array<double, 3> side{predicates::quadratic_form(M, c[1] - c[0], 0.0, 0.0), predicates::quadratic_form(M, 0.0, c[3] - c[2], 0.0),
+                                       predicates::quadratic_form(M, 0.0, 0.0, c[5] - c[4])};
+      const int axis = static_cast<int>(std::max_element(side.begin(), side.end()) - side.begin());
+      if (side[axis] > size2) {
+        auto lo = c, hi = c;
+        const double mid = (c[2 * axis] + c[2 * axis + 1]) / 2;
+        lo[2 * axis + 1] = mid, hi[2 * axis] = mid;
+        cells.push_back(lo), cells.push_back(hi);
+        continue;
+      }
+      // Only cells inside Ω, corners and all (a seed near ∂Ω would have rule 1 refine the surface
+      // to its distance, finer than the metric asks).
+      bool within = true;
+      for (int k = 0; k < 8 && within; ++k)
+        within = domain.side({c[k & 1], c[2 + ((k >> 1) & 1)], c[4 + ((k >> 2) & 1)]}) == common::Side::inside;
+      if (!within) continue;
+      const Point3<double> q{c[0] + middle(rng) * (c[1] - c[0]), c[2] + middle(rng) * (c[3] - c[2]), c[4] + middle(rng) * (c[5] - c[4])};
+      sites.add(q, sites.metric_at(q));
+    }
+  }
   sites.grow_grid();
   return sites;
 }
@@ -47,10 +90,11 @@ common::Sites3 vertex_sites(const common::Domain3& domain, const fields::MetricF
 class StarRefiner3 {
  public:
   StarRefiner3(const common::Domain3& domain, const fields::MetricField3& field, const RefineParameters& p)
-      : domain_(domain), p_(p), sites_(vertex_sites(domain, field)), boundary_(domain, sites_), stars_(domain, sites_, boundary_),
+      : domain_(domain), p_(p), sites_(initial_sites(domain, field, p)), boundary_(domain, sites_), stars_(domain, sites_, boundary_),
         pick_(domain, sites_, p) {
     const int n = static_cast<int>(sites_.size());
-    for (int v = 0; v < n; ++v) stars_.add(0), queued_.push_back(false);
+    // The seeds are about `size` apart: a first search of M-distance 2 size holds their neighbours.
+    for (int v = 0; v < n; ++v) stars_.add(p.seed_interior ? 4 * p.size * p.size : 0), queued_.push_back(false);
     for (int v = 0; v < n; ++v) stars_.recompute(v);
     for (int v = 0; v < n; ++v) enqueue(v);
   }

@@ -1,0 +1,81 @@
+// `anisocert refine` on a 3D domain (issue 40), as a user runs it: the built-in cube under a
+// constant field, its files read back by `anisocert certify` (the certificate is of the numbers
+// written), and what is refused with exit 2, one line, nothing written: an open surface, an
+// inward one, a coordinate that is not a double, a refiner that meshes polygons only, a field
+// with no metric at a vertex of the domain.
+#include "cli_run.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / ("cli_refine3_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// The unit cube as OFF text, its facets outward, or (inward) every facet reversed, or (open) the
+// last facet left out; `x1`: the text of the coordinate 1 of vertex 1.
+std::string cube_off(bool inward = false, bool open = false, const std::string& x1 = "1") {
+  std::string s = "OFF\n8 " + std::string(open ? "11" : "12") + " 0\n";
+  for (int k = 0; k < 8; ++k)
+    s += (k == 1 ? x1 : std::to_string(k & 1)) + " " + std::to_string((k >> 1) & 1) + " " + std::to_string((k >> 2) & 1) + "\n";
+  const int f[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  for (int i = 0; i < (open ? 11 : 12); ++i)
+    s += "3 " + std::to_string(f[i][0]) + " " + std::to_string(inward ? f[i][2] : f[i][1]) + " " + std::to_string(inward ? f[i][1] : f[i][2]) + "\n";
+  return s;
+}
+
+}  // namespace
+
+TEST(CliRefine3, TheCubeIsRefinedCertifiedAndReadBack) {
+  const fs::path d = fresh("cube");
+  const std::string mesh = (d / "cube.mesh").string(), json = (d / "cube.json").string();
+  const Outcome r = run("refine --domain cube --field constant --param m11=16 --param m22=16 --param m33=16 --quiet -o " + mesh +
+                        " --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("star refiner (3D)"), std::string::npos);
+  EXPECT_NE(r.out.find("stopped: all stars consistent"), std::string::npos);
+  EXPECT_NE(r.out.find("\ncertified"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(d / "cube.sol"));
+  EXPECT_TRUE(fs::exists(json));
+  // The files as another program reads them.
+  const Outcome c = run("certify " + mesh + " --rho0 3 --gamma0 1.5");
+  EXPECT_EQ(c.exit_code, 0) << c.out << c.err;
+  // The same cube from an OFF file.
+  std::ofstream(d / "cube.off") << cube_off();
+  const Outcome o = run("refine --domain " + (d / "cube.off").string() + " --field constant --param m11=16 --param m22=16 --param m33=16 --quiet");
+  EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
+}
+
+TEST(CliRefine3, BadDomainsAndFieldsGetOneLineAndExit2) {
+  const fs::path d = fresh("bad");
+  std::ofstream(d / "open.off") << cube_off(false, true);
+  std::ofstream(d / "inward.off") << cube_off(true);
+  std::ofstream(d / "decimal.off") << cube_off(false, false, "1.1");
+  std::ofstream(d / "cube.off") << cube_off();
+  const std::string out = (d / "out.mesh").string();
+  const struct {
+    std::string args, says;
+  } cases[] = {
+      {"--domain " + (d / "open.off").string(), "the surface is open"},
+      {"--domain " + (d / "inward.off").string(), "inward"},
+      {"--domain " + (d / "decimal.off").string(), "not a double"},
+      {"--domain " + (d / "missing.off").string(), "missing.off"},
+      {"--domain cube --algo ls", "meshes polygons only"},
+      {"--domain cube --field ugawg-polar2", "no metric"},
+      {"--domain cube --field constant --param m11=-1", "positive definite"},
+  };
+  for (const auto& c : cases) {
+    const Outcome r = run("refine " + c.args + " --quiet -o " + out);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.args;
+  }
+}

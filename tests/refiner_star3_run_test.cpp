@@ -1,0 +1,222 @@
+// The 3D star refiner (issue 40) and what it stands on, against independent computations:
+//  - Domain3's exact side of a point (ray parity) against the cube's and the cube-cylinder's
+//    definitions in rationals (inside the box and outside the arc's polygon, decided by the
+//    test's own determinants), on random dyadic points and on points exactly on the facets;
+//  - the built-in polyhedra are solids (polyhedron_defect) of the volume their definition gives
+//    (the cube 1; the cube-cylinder 1 minus the area of the arc's polygon, by the shoelace
+//    formula here);
+//  - a finished run on the cube with constant fields (isotropic, anisotropic and rotated): stars
+//    consistent, the certifier certifies the mesh (valid, locally uniform, ρ₀ and γ₀), the
+//    tetrahedra fill the cube (their exact volumes sum to 1, each positive), every vertex is in
+//    the closed cube and every boundary face lies in a face of it, every tetrahedron's M_v-sphere
+//    holds no vertex strictly inside by the test's own rational 5 × 5 determinant, and the
+//    tetrahedra at each vertex v are exactly v's star wrapped from scratch among all the vertices
+//    (the brute-force star the incremental stars must equal).
+#include "geometry/builtin_polyhedra.hpp"
+#include "oracle/certify/mesh_certifier3.hpp"
+#include "refiners/common/domain3.hpp"
+#include "refiners/star/gift_wrap3.hpp"
+#include "refiners/star/star_refiner3.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <set>
+
+namespace {
+
+using anisocert::Rational;
+using anisocert::rational_from_double;
+using anisocert::predicates::Point3;
+using anisocert::predicates::Sym3;
+namespace common = anisocert::refiners::common;
+
+Rational R(double d) { return rational_from_double(d); }
+
+// det of a square rational matrix by Gaussian elimination (the test's own).
+Rational determinant(std::vector<std::vector<Rational>> a) {
+  const std::size_t n = a.size();
+  Rational det = 1;
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t pivot = c;
+    while (pivot < n && a[pivot][c] == 0) ++pivot;
+    if (pivot == n) return 0;
+    if (pivot != c) std::swap(a[pivot], a[c]), det = -det;
+    det *= a[c][c];
+    for (std::size_t r = c + 1; r < n; ++r) {
+      const Rational f = a[r][c] / a[c][c];
+      for (std::size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
+    }
+  }
+  return det;
+}
+
+Rational volume6(const Point3<double>& a, const Point3<double>& b, const Point3<double>& c, const Point3<double>& d) {
+  return determinant({{R(b.x) - R(a.x), R(b.y) - R(a.y), R(b.z) - R(a.z)},
+                      {R(c.x) - R(a.x), R(c.y) - R(a.y), R(c.z) - R(a.z)},
+                      {R(d.x) - R(a.x), R(d.y) - R(a.y), R(d.z) - R(a.z)}});
+}
+
+// The arc's polygon of the cube-cylinder in the plane: its points from (0.5, 0) to (0, 0.5) and the
+// origin, counter-clockwise; (x, y) is strictly inside it when strictly left of every edge.
+std::vector<std::array<Rational, 2>> arc_polygon(const anisocert::geometry::Polyhedron& p) {
+  std::vector<std::array<Rational, 2>> poly{{Rational(0), Rational(0)}};
+  for (const auto& v : p.vertices)
+    if (v.z == 0 && (v.x * v.x + v.y * v.y) * 4 <= Rational(101, 100) && !(v.x == 0 && v.y == 0)) poly.push_back({v.x, v.y});
+  // The arc's points by angle: by decreasing x.
+  std::sort(poly.begin() + 1, poly.end(), [](const auto& a, const auto& b) { return a[0] > b[0]; });
+  return poly;
+}
+
+Rational cross(const std::array<Rational, 2>& o, const std::array<Rational, 2>& a, const Rational& x, const Rational& y) {
+  return (a[0] - o[0]) * (y - o[1]) - (a[1] - o[1]) * (x - o[0]);
+}
+
+}  // namespace
+
+TEST(Domain3, SideIsTheCubesAndTheCubeCylindersDefinition) {
+  const auto cube = anisocert::geometry::cube_polyhedron();
+  const auto cc = anisocert::geometry::cube_cylinder_polyhedron();
+  ASSERT_FALSE(anisocert::geometry::polyhedron_defect(cube));
+  ASSERT_FALSE(anisocert::geometry::polyhedron_defect(cc));
+  const common::Domain3 dcube(cube), dcc(cc);
+  EXPECT_TRUE(dcube.convex());
+  EXPECT_FALSE(dcc.convex());
+  const auto poly = arc_polygon(cc);
+  ASSERT_EQ(poly.size(), 18u);  // the origin and the 17 points of 16 strips
+  // Exact volumes: the cube's tetrahedra from a centre, the cube-cylinder's likewise.
+  const auto volume = [](const anisocert::geometry::Polyhedron& p) {
+    Rational v = 0;
+    for (const auto& t : p.facets) {
+      const auto &a = p.vertices[t[0]], &b = p.vertices[t[1]], &c = p.vertices[t[2]];
+      v += a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+    }
+    return v / 6;
+  };
+  EXPECT_EQ(volume(cube), 1);
+  Rational area = 0;  // the arc polygon's, by the shoelace formula
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const auto &a = poly[i], &b = poly[(i + 1) % poly.size()];
+    area += a[0] * b[1] - a[1] * b[0];
+  }
+  EXPECT_EQ(volume(cc), 1 - area / 2);
+  std::mt19937 rng(40);
+  std::uniform_int_distribution<int> coordinate(-8, 72);  // k / 64: outside, on and inside [0, 1]
+  std::size_t seen[2][3] = {};
+  for (int n = 0; n < 4000; ++n) {
+    const Point3<double> q{coordinate(rng) / 64.0, coordinate(rng) / 64.0, coordinate(rng) / 64.0};
+    const Rational x = R(q.x), y = R(q.y), z = R(q.z);
+    const bool in_box = x >= 0 && x <= 1 && y >= 0 && y <= 1 && z >= 0 && z <= 1;
+    const bool interior_box = x > 0 && x < 1 && y > 0 && y < 1 && z > 0 && z < 1;
+    const auto cube_side = !in_box ? common::Side::outside : interior_box ? common::Side::inside : common::Side::boundary;
+    EXPECT_EQ(dcube.side(q), cube_side) << q.x << " " << q.y << " " << q.z;
+    ++seen[0][static_cast<int>(cube_side)];
+    // The cube-cylinder: the box minus the open prism over the arc polygon (convex: strictly left
+    // of every edge is inside it; on an edge of it, with x, y ≥ 0, is on the curved face).
+    // The polygon's edges: origin → arc → origin; the first and the last are not the solid's (its
+    // points with x, y < 0.5 on them are in the hole), the arc's are the curved face.
+    int left = 0, on = 0;
+    bool on_arc = false;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const Rational s = cross(poly[i], poly[(i + 1) % poly.size()], x, y);
+      left += s > 0, on += s == 0;
+      on_arc = on_arc || (s == 0 && i >= 1 && i + 1 < poly.size());
+    }
+    const bool in_closed_prism = left + on == static_cast<int>(poly.size());
+    const bool in_prism = left == static_cast<int>(poly.size());
+    const auto cc_side = !in_box || in_prism || (in_closed_prism && !on_arc) ? common::Side::outside
+                         : in_closed_prism || !interior_box                 ? common::Side::boundary
+                                                                             : common::Side::inside;
+    EXPECT_EQ(dcc.side(q), cc_side) << q.x << " " << q.y << " " << q.z;
+    ++seen[1][static_cast<int>(cc_side)];
+  }
+  for (const auto& s : seen)
+    for (std::size_t k : s) EXPECT_GT(k, 100u);  // inside, on the boundary and outside, each often
+}
+
+// A finished run on the cube, checked independently (see the head of this file).
+TEST(StarRefiner3, CubeRunsAreCertifiedAndEqualTheBruteForceStars) {
+  const common::Domain3 cube(anisocert::geometry::cube_polyhedron());
+  // Isotropic, axis-anisotropic, and rotated (LLᵀ with L lower triangular, integers).
+  const std::vector<Sym3<double>> metrics{{16, 0, 0, 16, 0, 16}, {9, 0, 0, 16, 0, 36}, {9, 6, 3, 20, 4, 11}};
+  for (const Sym3<double>& M : metrics) {
+    anisocert::fields::MetricField3 field{"constant", {}, [M](double, double, double) { return M; }};
+    anisocert::refiners::star::RefineParameters p;
+    p.max_seconds = 60;
+    const auto r = anisocert::refiners::star::refine_star3(cube, field, p);
+    ASSERT_TRUE(r.consistent) << r.stop_reason;
+    EXPECT_EQ(r.faces_off_boundary, 0u);
+    const auto& m = r.mesh;
+    ASSERT_GT(m.vertices.size(), 50u);
+    // The certifier.
+    anisocert::geometry::Mesh3<Rational> exact;
+    for (const auto& q : m.vertices) exact.vertices.push_back({R(q.x), R(q.y), R(q.z)});
+    for (const auto& N : m.metrics) exact.metrics.push_back({R(N.m11), R(N.m12), R(N.m13), R(N.m22), R(N.m23), R(N.m33)});
+    exact.tetrahedra = m.tetrahedra, exact.triangles = m.triangles;
+    anisocert::oracle::Certify3Options o;
+    o.rho0 = R(p.rho0), o.gamma0 = R(p.gamma0), o.threads = 1;
+    const auto report = anisocert::oracle::certify_mesh3(exact, o);
+    EXPECT_TRUE(report.holds(o));
+    // The tetrahedra fill the cube.
+    Rational total = 0;
+    for (const auto& t : m.tetrahedra) {
+      const Rational v = volume6(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], m.vertices[t[3]]);
+      EXPECT_GT(v, 0);
+      total += v;
+    }
+    EXPECT_EQ(total, 6);
+    for (const auto& q : m.vertices) EXPECT_NE(cube.side(q), common::Side::outside);
+    for (const auto& f : m.triangles) {
+      const auto &a = m.vertices[f[0]], &b = m.vertices[f[1]], &c = m.vertices[f[2]];
+      const bool on_a_face = (a.x == b.x && b.x == c.x && (a.x == 0 || a.x == 1)) || (a.y == b.y && b.y == c.y && (a.y == 0 || a.y == 1)) ||
+                             (a.z == b.z && b.z == c.z && (a.z == 0 || a.z == 1));
+      EXPECT_TRUE(on_a_face);
+    }
+    // Local uniformity by the test's own determinant, and the stars from scratch.
+    std::map<int, std::set<std::array<int, 3>>> at_vertex;  // v → its tetrahedra's other vertices, sorted
+    for (const auto& t : m.tetrahedra)
+      for (int i = 0; i < 4; ++i) {
+        std::array<int, 3> o3;
+        for (int j = 0, k = 0; j < 4; ++j)
+          if (j != i) o3[k++] = t[j];
+        std::sort(o3.begin(), o3.end());
+        at_vertex[t[i]].insert(o3);
+      }
+    const auto Q = [&](const Sym3<double>& N, const Point3<double>& q) {
+      const Rational x = R(q.x), y = R(q.y), z = R(q.z);
+      return R(N.m11) * x * x + R(N.m22) * y * y + R(N.m33) * z * z + 2 * (R(N.m12) * x * y + R(N.m13) * x * z + R(N.m23) * y * z);
+    };
+    const int n = static_cast<int>(m.vertices.size());
+    std::size_t checked = 0;
+    for (int v = 0; v < n; v += 3) {  // a third of the vertices: all their tetrahedra against all vertices
+      const auto& N = m.metrics[v];
+      for (const auto& o3 : at_vertex[v]) {
+        std::array<int, 4> t{v, o3[0], o3[1], o3[2]};
+        const Rational orient = volume6(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], m.vertices[t[3]]);
+        for (int e = 0; e < n; ++e) {
+          if (std::find(t.begin(), t.end(), e) != t.end()) continue;
+          std::vector<std::vector<Rational>> rows;
+          for (int w : {t[0], t[1], t[2], t[3], e})
+            rows.push_back({R(m.vertices[w].x), R(m.vertices[w].y), R(m.vertices[w].z), Q(N, m.vertices[w]), Rational(1)});
+          // e strictly inside the M_v-sphere of t: −det₅ has the sign of t's orientation.
+          const Rational in = -determinant(rows) * (orient > 0 ? 1 : -1);
+          EXPECT_LE(in, 0) << "vertex " << e << " inside the sphere of a tetrahedron at " << v;
+          ++checked;
+        }
+      }
+      std::vector<int> others;
+      for (int w = 0; w < n; ++w)
+        if (w != v) others.push_back(w);
+      const auto star = anisocert::refiners::star::gift_wrap_star3(v, others, m.vertices, N);
+      std::set<std::array<int, 3>> wrapped;
+      for (auto t : star.link) {
+        std::sort(t.begin(), t.end());
+        wrapped.insert(t);
+      }
+      EXPECT_EQ(wrapped, at_vertex[v]) << "the mesh's tetrahedra at " << v << " are not its star among all vertices";
+    }
+    EXPECT_GT(checked, 10000u);
+  }
+}
