@@ -83,10 +83,6 @@ bool Boundary3::encroaches(const Point3<double>& p, bool on_boundary, const Sym3
   for (int e = 0; e < 3; ++e) {
     const int a = v[e], b = v[(e + 1) % 3];
     if (!is_subsegment(a, b)) continue;
-    if (on_boundary) {
-      const auto& at = edges_.at(key(a, b));
-      if (!beyond(at[0], p) && !beyond(at[1], p)) continue;
-    }
     if (predicates::encroaches_edge(p, x[a], x[b], Mp) || predicates::encroaches_edge(p, x[a], x[b], m[a]) ||
         predicates::encroaches_edge(p, x[a], x[b], m[b])) {
       if (edge_of) *edge_of = Edge{std::min(a, b), std::max(a, b)};
@@ -136,7 +132,7 @@ std::optional<Boundary3::Edge> Boundary3::next_encroached() {
       std::optional<Edge> edge;
       if (encroaches(sites_.points[p], !site_facets_[p].empty(), sites_.metrics[p], f, &edge)) {
         queue_.push_front(f), queued_[f] = true;  // checked again if the split (LEPP's first) left it
-        return terminal(edge ? *edge : longest_edge(f));
+        return edge ? *edge : terminal(longest_edge(f));
       }
     }
   }
@@ -166,7 +162,7 @@ std::optional<Boundary3::Edge> Boundary3::snap(const Point3<double>& q, const Sy
       }
     }
   }
-  if (edge_best) return terminal(edge_best->second);
+  if (edge_best) return edge_best->second;
   if (facet_best) return terminal(facet_best->second);
   return std::nullopt;
 }

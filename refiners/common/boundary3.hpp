@@ -8,23 +8,25 @@
 // the subsegments (Ω's ridges).
 // Encroachment (LU Definition 3.16, predicates/encroachment3.hpp, exact): a site p encroaches a
 // subsegment or a subfacet when it lies strictly inside its diametral M-ball for M = M_p or the
-// metric of one of its vertices. A site on ∂Ω encroaches a subfacet (a subsegment) only from
-// strictly beyond its plane (one of its two subfacets' planes): across a reflex ridge, where it
-// could make a tetrahedron cross the boundary. Within a plane the surface's triangulation need not
+// metric of one of its vertices. A site on ∂Ω encroaches a subfacet only from strictly beyond its
+// plane: across a reflex ridge, where it could make a tetrahedron cross the boundary. (Every site
+// counts for a subsegment: a ridge coarser than the faces beside it leaves the hull of the sites
+// chamfered there, a corner of Ω no tetrahedron covers.) Within a plane the surface's triangulation need not
 // be the Delaunay one, which no bisection makes it in every metric, and across a convex ridge of
 // 90° (a cube's) the diametral M-balls of the two faces' subfacets take each other's vertices as
 // soon as the metrics of the sites differ (LU Lemma 4.1 needs boundary angles above 90°):
 // counting those sites refined the faces of a cube without end under UGAWG's linear field. The
 // mesh's boundary faces are its tetrahedra's, which the stars make Delaunay; whether each lies on
-// ∂Ω is checked (StarResult3::faces_off_boundary) and the certifier checks the mesh. An encroached
-// subsegment is split; an encroached subfacet has
-// its longest edge split, a subsegment first when p encroaches one of its edges that is one; each
-// by Rivara's longest-edge propagation (LEPP): while a subfacet at the edge has a longer edge, that
-// one is split first, so that every subfacet is cut across its longest edge and the surface's
-// angles stay bounded below (bisecting a neighbour across a shorter edge, repeatedly, made ever
-// thinner subfacets that encroach on ever more sites: a cascade without end). An edge's length is
-// the larger in its two ends' metrics, ties broken by the sites' indices (a strict order, so the
-// propagation ends). Candidates come from boxes (the diametral balls' in the vertices'
+// ∂Ω is checked (StarResult3::faces_off_boundary) and the certifier checks the mesh.
+// An encroached subsegment is split at once (first when p encroaches one of a subfacet's edges
+// that is one): propagating from it split an edge from the ridge towards p, whose midpoint lay
+// nearer the ridge and encroached it again, a sequence converging to the ridge. An encroached
+// subfacet has its longest edge split by Rivara's longest-edge propagation (LEPP): while a
+// subfacet at the edge has a longer edge, that one is split first, so that subfacets are cut
+// across their longest edges and the surface's angles stay bounded below (bisecting a neighbour
+// across a shorter edge, repeatedly, made ever thinner subfacets that encroach on ever more
+// sites: a cascade without end). An edge's length is the larger in its two ends' metrics, ties
+// broken by the sites' indices (a strict order, so the propagation ends). Candidates come from boxes (the diametral balls' in the vertices'
 // metrics, doubled: a floating-point choice of which pairs to test; the certifier judges the mesh).
 #include "refiners/common/sites3.hpp"
 
