@@ -4,9 +4,18 @@
 // corners cospherical under I and diag(1, 4, 9): the perturbation decides) or the lattice moved
 // at random by up to 0.3 (generic). Issue 40's target is 20,000 vertices/s for the whole refiner;
 // an insertion changes a few dozen stars and wraps one.
+// And the whole refiner (star_refiner3.hpp) on the cube, side by side: a constant isotropic field
+// (100 I: edges of 0.1) and UGAWG's linear field with h0 = 0.1, 0.08, 0.06 (its README's 10⁻³
+// does not finish: docs/refiners.md), each run to the end; counters: vertices per second, and the
+// tetrahedra against a unit mesh's (∫√det M over the cube, closed form here, divided by the
+// volume of the unit regular tetrahedron, √2/12).
 // Run: build/bin/star3_bench (figures in docs/bench.md).
+#include "geometry/builtin_polyhedra.hpp"
 #include "refiners/star/gift_wrap3.hpp"
+#include "refiners/star/star_refiner3.hpp"
 #include "refiners/star/star_update3.hpp"
+
+#include <cmath>
 
 #include <benchmark/benchmark.h>
 
@@ -65,6 +74,34 @@ void insert(benchmark::State& state) {
 
 }  // namespace
 
+// range(0): 0 the constant field 100 I; else UGAWG linear with h0 = range(0) / 100.
+void refine(benchmark::State& state) {
+  static const anisocert::refiners::common::Domain3 cube(anisocert::geometry::cube_polyhedron());
+  const double h0 = state.range(0) / 100.0;
+  anisocert::fields::MetricField3 field{"bench", {}, [h0](double, double, double z) {
+                                          const double hz = h0 > 0 ? h0 + 2 * (0.1 - h0) * std::abs(z - 0.5) : 0.1;
+                                          return Sym3<double>{100, 0, 0, 100, 0, 1 / (hz * hz)};
+                                        }};
+  // ∫√det M = 100 ∫ dz / hz: 1000 for hz = 0.1, else 2 · 100 · ln(0.1 / h0) / (2 (0.1 − h0)).
+  const double integral = h0 > 0 && h0 < 0.1 ? 100 * std::log(0.1 / h0) / (0.1 - h0) : 1000;
+  const double unit_tetrahedra = integral / (std::sqrt(2.0) / 12);
+  RefineParameters p;
+  p.max_seconds = 600;
+  std::size_t vertices = 0, tetrahedra = 0;
+  bool consistent = true;
+  for (auto _ : state) {
+    const StarResult3 r = refine_star3(cube, field, p);
+    vertices += r.mesh.vertices.size(), tetrahedra += r.mesh.tetrahedra.size();
+    consistent = consistent && r.consistent;
+  }
+  const double runs = static_cast<double>(state.iterations());
+  state.counters["vertices"] = vertices / runs;
+  state.counters["vertices/s"] = benchmark::Counter(static_cast<double>(vertices), benchmark::Counter::kIsRate);
+  state.counters["tets/unit"] = tetrahedra / runs / unit_tetrahedra;
+  state.counters["consistent"] = consistent;
+}
+
 BENCHMARK(wrap)->ArgNames({"jitter", "metric"})->Args({0, 0})->Args({1, 0})->Args({0, 1})->Args({1, 1})->Unit(benchmark::kMicrosecond);
 BENCHMARK(insert)->ArgNames({"jitter", "metric"})->Args({0, 0})->Args({1, 0})->Args({1, 1})->Unit(benchmark::kMicrosecond);
+BENCHMARK(refine)->ArgName("h0x100")->Arg(0)->Arg(10)->Arg(8)->Arg(6)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK_MAIN();

@@ -67,6 +67,12 @@ put("diagram_filtered_vs_exact", "corner-site", bytes([2, 1, 0, 0, 0, 3, 0, 4, 4
 
 # refiners_certified: refiner, field, shape, stretch, seed, then field and refiner parameter scales (2 = x1).
 put("refiners_certified", "constant-square", bytes([0, 0, 0, 2, 1] + [2] * 12))
+# refiner3_certified: shape, three sizes, six metric entries (L's diagonal, then below it), seed, rho0 and gamma0 scales.
+put("refiner3_certified", "box-isotropic", bytes([0, 1, 1, 1, 3, 3, 3, 2, 2, 2, 1, 0, 1]))
+put("refiner3_certified", "box-stretched", bytes([0, 3, 1, 0, 1, 3, 0, 2, 2, 2, 2, 0, 1]))
+put("refiner3_certified", "triangular-prism-rotated", bytes([1, 1, 2, 1, 2, 1, 3, 3, 1, 4, 3, 1, 1]))
+put("refiner3_certified", "l-prism-reflex-ridge", bytes([2, 3, 3, 1, 3, 3, 2, 2, 2, 2, 4, 0, 1]))
+put("refiner3_certified", "cube-cylinder", bytes([3, 0, 0, 0, 1, 1, 1, 2, 2, 2, 5, 0, 1]))
 put("refiners_certified", "linear-l-shape", bytes([0, 1, 3, 2, 2] + [2] * 12))
 put("refiners_certified", "field-2-pentagon", bytes([0, 2, 4, 2, 3] + [2] * 12))
 put("refiners_certified", "field-3-triangle", bytes([0, 3, 2, 2, 4] + [1] * 12))
