@@ -18,6 +18,8 @@
 #include "refiners/star/gift_wrap3.hpp"
 #include "refiners/star/star_refiner3.hpp"
 
+#include "rational_determinant.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,23 +37,7 @@ namespace common = anisocert::refiners::common;
 
 Rational R(double d) { return rational_from_double(d); }
 
-// det of a square rational matrix by Gaussian elimination (the test's own).
-Rational determinant(std::vector<std::vector<Rational>> a) {
-  const std::size_t n = a.size();
-  Rational det = 1;
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t pivot = c;
-    while (pivot < n && a[pivot][c] == 0) ++pivot;
-    if (pivot == n) return 0;
-    if (pivot != c) std::swap(a[pivot], a[c]), det = -det;
-    det *= a[c][c];
-    for (std::size_t r = c + 1; r < n; ++r) {
-      const Rational f = a[r][c] / a[c][c];
-      for (std::size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
-    }
-  }
-  return det;
-}
+using anisocert::testing::determinant;
 
 Rational volume6(const Point3<double>& a, const Point3<double>& b, const Point3<double>& c, const Point3<double>& d) {
   return determinant({{R(b.x) - R(a.x), R(b.y) - R(a.y), R(b.z) - R(a.z)},

@@ -8,6 +8,8 @@
 #include "refiners/star/gift_wrap3.hpp"
 #include "refiners/star/star_update3.hpp"
 
+#include "rational_determinant.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,23 +26,7 @@ using anisocert::predicates::Point3;
 using anisocert::predicates::Sym3;
 using anisocert::refiners::star::gift_wrap_star3;
 
-// det of a square rational matrix by Gaussian elimination (written here, not the kernels').
-Rational determinant(std::vector<std::vector<Rational>> a) {
-  const std::size_t n = a.size();
-  Rational det = 1;
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t pivot = c;
-    while (pivot < n && a[pivot][c] == 0) ++pivot;
-    if (pivot == n) return 0;
-    if (pivot != c) std::swap(a[pivot], a[c]), det = -det;
-    det *= a[c][c];
-    for (std::size_t r = c + 1; r < n; ++r) {
-      const Rational f = a[r][c] / a[c][c];
-      for (std::size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
-    }
-  }
-  return det;
-}
+using anisocert::testing::determinant;
 
 Sign sign_of(const Rational& x) { return x > 0 ? Sign::positive : x < 0 ? Sign::negative : Sign::zero; }
 

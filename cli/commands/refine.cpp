@@ -117,6 +117,23 @@ refiners::common::Budget budget_of(const RefineOptions& o) {
   return b;
 }
 
+// The files of `file` in `format` at `path`, added to `files` (their paths to `paths`); their
+// names, joined for the report. A number the format cannot hold is bad input.
+std::string mesh_files(const io::MeshFormat& format, const io::MeshFile& file, const std::string& path, std::vector<OutputFile>& files,
+                       std::vector<std::string>& paths) {
+  std::string written;
+  try {
+    for (io::FileText& f : format.write(file, path)) {
+      written += (written.empty() ? "" : ", ") + f.path;
+      paths.push_back(f.path);
+      files.push_back({std::move(f.path), std::move(f.content)});
+    }
+  } catch (const io::InputError& e) {
+    throw UsageError(e.what());
+  }
+  return written;
+}
+
 // Whether --domain names a 3D domain: a built-in polyhedron, or a surface file (.off, .mesh,
 // .meshb, .msh); JSON domains are polygons.
 bool domain_is_3d(const std::string& domain) {
@@ -182,15 +199,7 @@ int run_refine3(const RefineOptions& o, const refiners::RefinerEntry& entry, con
   std::string written;
   std::vector<std::string> paths;
   if (format) {
-    try {
-      for (io::FileText& f : format->write(file, o.output)) {
-        written += (written.empty() ? "" : ", ") + f.path;
-        paths.push_back(f.path);
-        files.push_back({std::move(f.path), std::move(f.content)});
-      }
-    } catch (const io::InputError& e) {
-      throw UsageError(e.what());
-    }
+    written = mesh_files(*format, file, o.output, files, paths);
   }
   if (!o.json.empty()) files.push_back({o.json, "", [&](std::ostream& out) { io::write_json(out, verdict, report); }});
   if (!o.svg.empty())
@@ -262,15 +271,7 @@ int run_refine(const RefineOptions& o) {
     io::MeshFile file;
     file.mesh = geometry::exact(m);
     file.mesh.edges = file.mesh.segments;  // the boundary subsegments, as every mesher's file declares them
-    try {
-      for (io::FileText& f : format->write(file, o.output)) {
-        written += (written.empty() ? "" : ", ") + f.path;
-        paths.push_back(f.path);
-        files.push_back({std::move(f.path), std::move(f.content)});
-      }
-    } catch (const io::InputError& e) {
-      throw UsageError(e.what());
-    }
+    written = mesh_files(*format, file, o.output, files, paths);
   }
   Picture drawn;
   if (!o.svg.empty()) {

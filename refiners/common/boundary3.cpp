@@ -11,7 +11,7 @@ namespace anisocert::refiners::common {
 namespace {
 
 // The diametral M-ball of the triangle abc (its centre in the plane abc, predicates/
-// encroachment3.hpp's formula), in doubles: its box (radius doubled) selects candidates.
+// encroachment3.hpp's formula), in doubles: its box, the radius times √2, selects candidates.
 Box3 diametral_box(const Point3<double>& a, const Point3<double>& b, const Point3<double>& c, const Sym3<double>& M) {
   const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
   const double A = predicates::quadratic_form(M, ux, uy, uz), C = predicates::quadratic_form(M, vx, vy, vz);
@@ -19,7 +19,7 @@ Box3 diametral_box(const Point3<double>& a, const Point3<double>& b, const Point
   const double al = C * (A - B) / (2 * D), be = A * (C - B) / (2 * D);
   const Point3<double> o{a.x + al * ux + be * vx, a.y + al * uy + be * vy, a.z + al * uz + be * vz};
   const double r2 = predicates::quadratic_form(M, a.x - o.x, a.y - o.y, a.z - o.z);
-  return metric_ball_box(o, M, 4 * r2);
+  return metric_ball_box(o, M, 2 * r2);
 }
 
 Box3 hull(const Box3& p, const Box3& q) {

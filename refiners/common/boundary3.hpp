@@ -27,7 +27,8 @@
 // across a shorter edge, repeatedly, made ever thinner subfacets that encroach on ever more
 // sites: a cascade without end). An edge's length is the larger in its two ends' metrics, ties
 // broken by the sites' indices (a strict order, so the propagation ends). Candidates come from boxes (the diametral balls' in the vertices'
-// metrics, doubled: a floating-point choice of which pairs to test; the certifier judges the mesh).
+// metrics, the radius times √2: a floating-point choice of which pairs to test, which may miss a
+// site whose own metric makes the ball larger; the certifier judges the mesh).
 #include "refiners/common/sites3.hpp"
 
 #include <array>
