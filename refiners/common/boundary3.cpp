@@ -99,8 +99,7 @@ bool Boundary3::encroaches(const Point3<double>& p, bool on_boundary, const Sym3
 std::pair<double, Boundary3::Edge> Boundary3::length(int a, int b) const {
   const auto& x = sites_.points;
   const double dx = x[b].x - x[a].x, dy = x[b].y - x[a].y, dz = x[b].z - x[a].z;
-  return {std::max(predicates::quadratic_form(sites_.metrics[a], dx, dy, dz), predicates::quadratic_form(sites_.metrics[b], dx, dy, dz)),
-          Edge{std::min(a, b), std::max(a, b)}};
+  return {dx * dx + dy * dy + dz * dz, Edge{std::min(a, b), std::max(a, b)}};
 }
 
 Boundary3::Edge Boundary3::longest_edge(int f) const {

@@ -25,8 +25,10 @@
 // subfacet at the edge has a longer edge, that one is split first, so that subfacets are cut
 // across their longest edges and the surface's angles stay bounded below (bisecting a neighbour
 // across a shorter edge, repeatedly, made ever thinner subfacets that encroach on ever more
-// sites: a cascade without end). An edge's length is the larger in its two ends' metrics, ties
-// broken by the sites' indices (a strict order, so the propagation ends). Candidates come from boxes (the diametral balls' in the vertices'
+// sites: a cascade without end). An edge's length is Euclidean, ties broken by the sites' indices: a
+// strict order that a split does not change (lengths in the ends' metrics changed with each new
+// site's metric, and on a face under a field varying 25-fold the propagation alternated between
+// two edges without end, its midpoints converging to z = 1/3 and 2/3). Candidates come from boxes (the diametral balls' in the vertices'
 // metrics, the radius times √2: a floating-point choice of which pairs to test, which may miss a
 // site whose own metric makes the ball larger; the certifier judges the mesh).
 #include "refiners/common/sites3.hpp"

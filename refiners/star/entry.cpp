@@ -68,7 +68,8 @@ std::vector<std::string> report3(const StarResult3& r, const RefineParameters& p
       common::stop_line(r, "inconsistent star tetrahedra: " + std::to_string(r.inconsistent_tetrahedra) +
                                (r.empty_stars ? ", empty stars: " + std::to_string(r.empty_stars) : "")),
       "  boundary: " + std::to_string(r.subfacets) + " subfacets after " + std::to_string(r.boundary_splits) +
-          " edge splits at exact midpoints (rule 1 and Insert_or_snap); the mesh's " + std::to_string(r.mesh.triangles.size()) +
+          " edge splits at exact midpoints (" + std::to_string(r.boundary_splits - r.snap_splits) +
+          " for rule 1, " + std::to_string(r.snap_splits) + " by Insert_or_snap); the mesh's " + std::to_string(r.mesh.triangles.size()) +
           " boundary faces, " + std::to_string(r.faces_off_boundary) + " of them off ∂Ω",
       pick_line(r.picks_rejected, r.picks_exhausted, r.refinements, p, "cospherical"), common::rule_counts_line(r), parameters_line(p),
       theorem45_line(p)};

@@ -111,7 +111,7 @@ class StarRefiner3 {
 
   bool step() {
     if (const auto e = boundary_.next_encroached()) {
-      split(*e);
+      split(*e, true);
       return true;
     }
     while (!site_queue_.empty()) {
@@ -143,6 +143,7 @@ class StarRefiner3 {
     r.picks_rejected = pick_.counts().rejected, r.picks_exhausted = pick_.counts().exhausted;
     r.refinements = refinements_;
     r.boundary_splits = splits_;
+    r.snap_splits = splits_ - rule1_splits_;
     return r;
   }
 
@@ -180,7 +181,8 @@ class StarRefiner3 {
     return k;
   }
 
-  void split(const common::Boundary3::Edge& e) {
+  // rule1: for rule 1 (else Insert_or_snap's).
+  void split(const common::Boundary3::Edge& e, bool rule1 = false) {
     const auto m = boundary_.midpoint(e);
     if (const auto* why = std::get_if<std::string>(&m)) {
       stalled_ = *why;
@@ -190,7 +192,7 @@ class StarRefiner3 {
     const Sym3<double> Mq = sites_.metric_at(q);
     const auto& a = sites_.points[e[0]];
     const double half2 = predicates::quadratic_form(Mq, q.x - a.x, q.y - a.y, q.z - a.z);
-    ++splits_;
+    ++splits_, rule1_splits_ += rule1;
     insert(q, Mq, Rule::encroachment, 16 * half2, &e);
   }
 
@@ -254,7 +256,7 @@ class StarRefiner3 {
   std::vector<bool> queued_;
   std::array<std::size_t, rules_by_priority.size() + 1> counts_{};
   Rule last_rule_ = Rule::none;
-  std::size_t refinements_ = 0, splits_ = 0;
+  std::size_t refinements_ = 0, splits_ = 0, rule1_splits_ = 0;
   std::string stalled_;
   std::vector<int> zone_, before_;
 };

@@ -23,6 +23,7 @@ struct StarResult3 : common::RefineResult3 {
   std::size_t picks_rejected = 0, picks_exhausted = 0;
   std::size_t refinements = 0;  // calls of Refine(τ) (rules 2–5)
   std::size_t boundary_splits = 0;  // rule 1 and Insert_or_snap's splits
+  std::size_t snap_splits = 0;      // of those, Insert_or_snap's (a picked point encroached)
   std::size_t subfacets = 0;        // of the surface level when the run ended
   // The mesh's boundary triangles (mesh.triangles: the faces of one tetrahedron) whose three
   // vertices lie in no one plane of Ω's facets: where the mesh does not conform to Ω (0 for a
