@@ -64,8 +64,11 @@ class Boundary3 {
   // After the site grid was rebuilt.
   void refile() { boxes_.refile(sites_.grid); }
 
-  // Whether sites a, b, c lie in the plane of one input facet, each on a facet of it (the star of
-  // a boundary site may be open there).
+  // Whether sites a, b, c lie in one plane of Ω's facets (the star of a boundary site may be open
+  // there). A site is tagged with the planes of the facets holding the ends of its edge, so a
+  // midpoint may be tagged with a plane none of whose facets holds it (between two facets of one
+  // plane, past a taller part of Ω): exact for convex Ω, a floating-point-free approximation
+  // otherwise.
   bool on_one_facet(int a, int b, int c) const;
   // The subfacets, outward (for the output's boundary triangles).
   std::vector<std::array<int, 3>> subfacets() const;

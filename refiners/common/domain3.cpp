@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
 
 namespace anisocert::refiners::common {
 
@@ -108,7 +110,18 @@ Side Domain3::side(const Point3<double>& p) const {
   // A far point beyond the box; the segment p → far crosses the surface an odd number of times
   // iff p is inside (p is on no facet).
   const double reach = 2 * ((box_.x1 - box_.x0) + (box_.y1 - box_.y0) + (box_.z1 - box_.z0)) + 1;
-  for (const auto& d : directions) {
+  std::uint64_t state = 0x9e3779b97f4a7c15ULL;  // the pseudo-random directions after the fixed ones
+  const auto next = [&state] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1p-53 * 2 - 1;  // in [−1, 1)
+  };
+  for (int attempt = 0; attempt < 1008; ++attempt) {
+    std::array<double, 3> d = attempt < 8 ? directions[static_cast<std::size_t>(attempt)] : std::array<double, 3>{next(), next(), next()};
+    if (attempt >= 8) {  // normalised so that the far point is beyond the box
+      const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (!(n > 0.1)) continue;
+      d = {d[0] / n, d[1] / n, d[2] / n};
+    }
     const Point3<double> far{p.x + reach * d[0], p.y + reach * d[1], p.z + reach * d[2]};
     bool degenerate = false, odd = false;
     for (const auto& t : facets_) {
@@ -133,9 +146,7 @@ Side Domain3::side(const Point3<double>& p) const {
     }
     if (!degenerate) return odd ? Side::inside : Side::outside;
   }
-  // Eight directions all degenerate: impossible for a surface of finitely many facets but for
-  // contrived inputs; treat p as outside (it is then neither inserted nor used).
-  return Side::outside;
+  throw std::logic_error("Domain3::side: every direction from " + point_text(p) + " met a facet's edge or plane");
 }
 
 }  // namespace anisocert::refiners::common

@@ -41,7 +41,7 @@ std::vector<std::array<int, 3>> boundary_faces(const std::vector<std::array<int,
 // subdivision of Ω's box whose sides are at most √2 `size` long in the metric at its centre (a cell
 // is halved across its longest side in that metric), at a random point of the cell's middle half
 // (a lattice would make five sites cospherical everywhere, each a tie the perturbation decides in
-// exact arithmetic), for the cells Ω holds. Without interior sites, rule 1 refines the surface first
+// exact arithmetic), for the cells whose corners Ω holds, when Ω holds the seed. Without interior sites, rule 1 refines the surface first
 // among tetrahedra that span Ω, whose huge spheres make every new star's search reach every
 // site (15 vertices/s on the cube under UGAWG's linear field); seeded, stars are local from the
 // start. A choice of where to begin, not a decision: the run refines from there by LU's rules and
@@ -72,14 +72,15 @@ common::Sites3 initial_sites(const common::Domain3& domain, const fields::Metric
         cells.push_back(lo), cells.push_back(hi);
         continue;
       }
-      // Only cells inside Ω, corners and all (a seed near ∂Ω would have rule 1 refine the surface
-      // to its distance, finer than the metric asks).
+      // Only cells whose corners Ω holds (a seed near ∂Ω would have rule 1 refine the surface to
+      // its distance, finer than the metric asks), and a seed Ω holds (a non-convex Ω may hold a
+      // cell's corners and not all of it).
       bool within = true;
       for (int k = 0; k < 8 && within; ++k)
         within = domain.side({c[k & 1], c[2 + ((k >> 1) & 1)], c[4 + ((k >> 2) & 1)]}) == common::Side::inside;
       if (!within) continue;
       const Point3<double> q{c[0] + middle(rng) * (c[1] - c[0]), c[2] + middle(rng) * (c[3] - c[2]), c[4] + middle(rng) * (c[5] - c[4])};
-      sites.add(q, sites.metric_at(q));
+      if (domain.side(q) == common::Side::inside) sites.add(q, sites.metric_at(q));
     }
   }
   sites.grow_grid();

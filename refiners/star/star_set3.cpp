@@ -51,8 +51,11 @@ bool StarSet3::refresh(int v, double reach2) {
                         : common::Box3{std::min(zone.x0, b.x0), std::max(zone.x1, b.x1), std::min(zone.y0, b.y0),
                                        std::max(zone.y1, b.y1), std::min(zone.z0, b.z0), std::max(zone.z1, b.z1)};
     if (!convex_) {
-      const Point3<double> g{(x[v].x + x[t[0]].x + x[t[1]].x + x[t[2]].x) / 4, (x[v].y + x[t[0]].y + x[t[1]].y + x[t[2]].y) / 4,
-                             (x[v].z + x[t[0]].z + x[t[1]].z + x[t[2]].z) / 4};
+      // Summed by increasing site, so that the tetrahedron's four stars round it alike.
+      std::array<int, 4> s{v, t[0], t[1], t[2]};
+      std::sort(s.begin(), s.end());
+      const Point3<double> g{(x[s[0]].x + x[s[1]].x + x[s[2]].x + x[s[3]].x) / 4, (x[s[0]].y + x[s[1]].y + x[s[2]].y + x[s[3]].y) / 4,
+                             (x[s[0]].z + x[s[1]].z + x[s[2]].z + x[s[3]].z) / 4};
       e.in_domain[i] = domain_.side(g) == common::Side::inside;
     }
   }

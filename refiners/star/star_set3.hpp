@@ -6,8 +6,12 @@
 // restricted to Ω: the tetrahedra whose centroid Ω holds (all of them when Ω is convex). A
 // conflict-zone index (the boxes of the M_v-circumspheres) finds the stars a new site may change.
 // The candidate search is floating point (a reach in M_v-distance): a star is accepted when every
-// circumsphere lies 10⁻⁴ inside the reach and every open face lies on one facet of Ω (beyond it
-// is outside Ω); the reach grows fourfold until then, or until it holds every site. A star made
+// circumsphere lies 10⁻⁴ inside the reach and every open face lies in the plane of one of Ω's
+// facets; the reach grows fourfold until then, or until it holds every site. Beyond such a face
+// lies outside Ω when Ω is convex there; past a reflex ridge sites of Ω may lie beyond it out of
+// reach, and the conflict-zone index files the circumspheres only, not the half-spaces beyond the
+// open faces: for a non-convex Ω a star on ∂Ω may then miss tetrahedra, which would lie outside Ω
+// near that face. The certifier judges the mesh either way. A star made
 // wrong by a missed candidate (rounding in the reach, beyond about 10⁶ : 1 anisotropy) makes the
 // final mesh fail the certifier's exact local-uniformity check; it cannot go unnoticed.
 #include "refiners/common/boundary3.hpp"
