@@ -14,6 +14,8 @@
 //    (the brute-force star the incremental stars must equal).
 #include "geometry/builtin_polyhedra.hpp"
 #include "oracle/certify/mesh_certifier3.hpp"
+#include "predicates/orientation3.hpp"
+#include "refiners/common/boundary3.hpp"
 #include "refiners/common/domain3.hpp"
 #include "refiners/star/gift_wrap3.hpp"
 #include "refiners/star/star_refiner3.hpp"
@@ -205,4 +207,95 @@ TEST(StarRefiner3, CubeRunsAreCertifiedAndEqualTheBruteForceStars) {
     }
     EXPECT_GT(checked, 10000u);
   }
+}
+
+// LU Lemma 4.1 in 3D, its hypothesis (issue 40): Ω's ridges whose interior dihedral angle is not
+// above 90° in the metric (Boundary3::ridge_angles: outward normals and adj(M), exactly) against
+// an independent computation: with M = FᵀF (F an integer upper-triangular matrix), the angle at a
+// ridge ab between facets abc and abd is the Euclidean one after x ↦ Fx, above 90° iff the
+// components of c − a and d − a perpendicular to b − a have a negative dot product (rationals);
+// reflex ridges (the far vertex beyond the other facet's plane) are above 180°. On the cube (every
+// ridge exactly 90° under diagonal metrics, so none obtuse) and a prism over an octagon with 135°
+// corners (its 8 vertical ridges obtuse under I, its 16 horizontal ones right), under I, diagonal
+// and random sheared metrics; both answers seen.
+TEST(Boundary3, RidgeAnglesAreTheTransformedEuclideanAngles) {
+  using anisocert::geometry::Polyhedron;
+  // The octagon (1,0) (2,0) (3,1) (3,2) (2,3) (1,3) (0,2) (0,1), counter-clockwise, as a prism of height 1.
+  Polyhedron octagon;
+  const int ring[8][2] = {{1, 0}, {2, 0}, {3, 1}, {3, 2}, {2, 3}, {1, 3}, {0, 2}, {0, 1}};
+  for (int z = 0; z < 2; ++z)
+    for (const auto& p : ring) octagon.vertices.push_back({Rational(p[0]), Rational(p[1]), Rational(z)});
+  for (int i = 1; i + 1 < 8; ++i) octagon.facets.push_back({0, i + 1, i}), octagon.facets.push_back({8, 8 + i, 8 + i + 1});
+  for (int i = 0; i < 8; ++i) {
+    const int j = (i + 1) % 8;
+    octagon.facets.push_back({i, j, 8 + j}), octagon.facets.push_back({i, 8 + j, 8 + i});
+  }
+  ASSERT_FALSE(anisocert::geometry::polyhedron_defect(octagon));
+  std::mt19937 rng(41);
+  std::uniform_int_distribution<int> diagonal(1, 4), off(-3, 3);
+  std::size_t obtuse = 0, not_obtuse = 0;
+  for (const Polyhedron& shape : {anisocert::geometry::cube_polyhedron(), octagon}) {
+    const common::Domain3 domain(shape);
+    for (int round = 0; round < 12; ++round) {
+      // F upper triangular: I, then diagonal, then sheared.
+      std::array<std::array<int, 3>, 3> F{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+      if (round > 0) F = {{{diagonal(rng), 0, 0}, {0, diagonal(rng), 0}, {0, 0, diagonal(rng)}}};
+      if (round > 3) F[0][1] = off(rng), F[0][2] = off(rng), F[1][2] = off(rng);
+      Sym3<double> M{};
+      double m[3][3];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          m[i][j] = 0;
+          for (int k = 0; k < 3; ++k) m[i][j] += F[k][i] * F[k][j];
+        }
+      M = {m[0][0], m[0][1], m[0][2], m[1][1], m[1][2], m[2][2]};
+      anisocert::fields::MetricField3 field{"constant", {}, [M](double, double, double) { return M; }};
+      common::Sites3 sites(domain, field);
+      for (const auto& q : domain.vertices()) sites.add(q, M);
+      sites.grow_grid();
+      const common::Boundary3 boundary(domain, sites);
+      const auto angles = boundary.ridge_angles();
+      // The brute force over the facets' edges.
+      const auto& x = domain.vertices();
+      const auto Fx = [&](int v) {
+        std::array<Rational, 3> y{};
+        const std::array<Rational, 3> p{R(x[v].x), R(x[v].y), R(x[v].z)};
+        for (int i = 0; i < 3; ++i)
+          for (int k = 0; k < 3; ++k) y[i] += Rational(F[i][k]) * p[k];
+        return y;
+      };
+      const auto minus = [](const std::array<Rational, 3>& a, const std::array<Rational, 3>& b) {
+        return std::array<Rational, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+      };
+      const auto dot = [](const std::array<Rational, 3>& a, const std::array<Rational, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+      std::map<std::array<int, 2>, std::vector<int>> at;
+      const auto& facets = domain.facets();
+      for (int f = 0; f < static_cast<int>(facets.size()); ++f)
+        for (int e = 0; e < 3; ++e) at[{std::min(facets[f][e], facets[f][(e + 1) % 3]), std::max(facets[f][e], facets[f][(e + 1) % 3])}].push_back(f);
+      std::size_t ridges = 0;
+      std::vector<std::array<int, 2>> expected;
+      for (const auto& entry : at) {
+        const std::array<int, 2>& e = entry.first;
+        const std::vector<int>& fs = entry.second;
+        if (domain.coplanar(fs[0], fs[1])) continue;
+        ++ridges;
+        const auto third = [&](int f) {
+          for (int k : facets[f])
+            if (k != e[0] && k != e[1]) return k;
+          return -1;
+        };
+        const int c = third(fs[0]), d = third(fs[1]);
+        const auto& tf = facets[fs[0]];
+        if (anisocert::predicates::orientation3(x[tf[0]], x[tf[1]], x[tf[2]], x[d]) == anisocert::Sign::positive) continue;  // reflex
+        const auto t = minus(Fx(e[1]), Fx(e[0])), u = minus(Fx(c), Fx(e[0])), w = minus(Fx(d), Fx(e[0]));
+        const Rational s = dot(u, w) * dot(t, t) - dot(u, t) * dot(w, t);  // |t|² (u⊥ · w⊥)
+        if (s >= 0) expected.push_back(e);
+      }
+      EXPECT_EQ(angles.ridges, ridges);
+      EXPECT_EQ(angles.not_obtuse, expected) << "round " << round;
+      not_obtuse += expected.size(), obtuse += ridges - expected.size();
+    }
+  }
+  EXPECT_GT(obtuse, 50u);
+  EXPECT_GT(not_obtuse, 50u);
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <map>
 
 namespace anisocert::refiners::common {
 namespace {
@@ -197,6 +198,50 @@ void Boundary3::split(const Edge& e, int m) {
 void Boundary3::site_added(int k) {
   if (site_facets_.size() <= static_cast<std::size_t>(k)) site_facets_.resize(k + 1);
   for (int f : boxes_.holding(sites_.points[k], sites_.grid)) enqueue(f);
+}
+
+Boundary3::RidgeAngles Boundary3::ridge_angles() const {
+  std::map<Edge, std::vector<int>> at;  // Ω's edges → their facets
+  const auto& facets = domain_.facets();
+  for (int f = 0; f < static_cast<int>(facets.size()); ++f)
+    for (int e = 0; e < 3; ++e) {
+      const int a = facets[f][e], b = facets[f][(e + 1) % 3];
+      at[{std::min(a, b), std::max(a, b)}].push_back(f);
+    }
+  const auto& x = domain_.vertices();
+  const auto R = [](double d) { return rational_from_double(d); };
+  const auto normal = [&](int f) {  // (b − a) × (c − a), outward
+    const auto &a = x[facets[f][0]], &b = x[facets[f][1]], &c = x[facets[f][2]];
+    const Rational ux = R(b.x) - R(a.x), uy = R(b.y) - R(a.y), uz = R(b.z) - R(a.z);
+    const Rational vx = R(c.x) - R(a.x), vy = R(c.y) - R(a.y), vz = R(c.z) - R(a.z);
+    return std::array<Rational, 3>{uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+  };
+  RidgeAngles r;
+  for (const auto& [e, fs] : at) {
+    if (fs.size() != 2 || domain_.coplanar(fs[0], fs[1])) continue;
+    ++r.ridges;
+    const int f = fs[0], g = fs[1];
+    int w = facets[g][0];
+    for (int k : facets[g])
+      if (k != e[0] && k != e[1]) w = k;
+    if (predicates::orientation3(x[facets[f][0]], x[facets[f][1]], x[facets[f][2]], x[w]) == Sign::positive) continue;  // reflex
+    const auto nf = normal(f), ng = normal(g);
+    for (int end : e) {
+      const Sym3<double>& M = sites_.metrics[end];
+      const Rational m11 = R(M.m11), m12 = R(M.m12), m13 = R(M.m13), m22 = R(M.m22), m23 = R(M.m23), m33 = R(M.m33);
+      const std::array<std::array<Rational, 3>, 3> adj{{{m22 * m33 - m23 * m23, m13 * m23 - m12 * m33, m12 * m23 - m13 * m22},
+                                                        {m13 * m23 - m12 * m33, m11 * m33 - m13 * m13, m12 * m13 - m11 * m23},
+                                                        {m12 * m23 - m13 * m22, m12 * m13 - m11 * m23, m11 * m22 - m12 * m12}}};
+      Rational s = 0;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) s += nf[i] * adj[i][j] * ng[j];
+      if (s <= 0) {
+        r.not_obtuse.push_back(e);
+        break;
+      }
+    }
+  }
+  return r;
 }
 
 bool Boundary3::on_one_facet(int a, int b, int c) const {

@@ -138,6 +138,8 @@ class StarRefiner3 {
     for (const auto& t : r.mesh.triangles) r.faces_off_boundary += !boundary_.on_one_facet(t[0], t[1], t[2]);
     r.consistent = r.consistent && r.faces_off_boundary == 0;
     r.subfacets = boundary_.subfacets().size();
+    const common::Boundary3::RidgeAngles angles = boundary_.ridge_angles();
+    r.ridges = angles.ridges, r.right_or_acute_ridges = angles.not_obtuse;
     r.stop_reason = std::move(stop_reason);
     for (Rule rule : rules_by_priority) r.rule_counts.emplace_back(rule_name(rule), counts_[static_cast<int>(rule)]);
     r.last_rule = rule_name(last_rule_);

@@ -29,6 +29,10 @@ struct StarResult3 : common::RefineResult3 {
   // vertices lie in no one plane of Ω's facets: where the mesh does not conform to Ω (0 for a
   // consistent output).
   std::size_t faces_off_boundary = 0;
+  // LU Lemma 4.1 (rule 1 ends) needs every dihedral angle of Ω above 90° in the metric: Ω's
+  // ridges, and those where the angle in an end's metric is not (common::Boundary3::ridge_angles).
+  std::size_t ridges = 0;
+  std::vector<std::array<int, 2>> right_or_acute_ridges;
 };
 
 // Throws common::FieldError when the field is not a metric where a site is inserted.
