@@ -18,6 +18,7 @@
 #include "refiners/common/boundary3.hpp"
 #include "refiners/common/domain3.hpp"
 #include "refiners/star/gift_wrap3.hpp"
+#include "refiners/star/pick_valid3.hpp"
 #include "refiners/star/star_refiner3.hpp"
 
 #include "rational_determinant.hpp"
@@ -36,6 +37,7 @@ using anisocert::rational_from_double;
 using anisocert::predicates::Point3;
 using anisocert::predicates::Sym3;
 namespace common = anisocert::refiners::common;
+using anisocert::geometry::Polyhedron;
 
 Rational R(double d) { return rational_from_double(d); }
 
@@ -298,4 +300,36 @@ TEST(Boundary3, RidgeAnglesAreTheTransformedEuclideanAngles) {
   }
   EXPECT_GT(obtuse, 50u);
   EXPECT_GT(not_obtuse, 50u);
+}
+
+// Pick_valid in 3D (LU Definitions 3.6 and 3.9; refiners/star/pick_valid3.hpp): the picking region
+// (δ = 10⁻⁶) of a sphere centred at X = 0, with four sites p, q, r, s on the sphere of radius 1/2
+// through X (centre (1/2, 0, 0)): every point picked makes a new tetrahedron xpqr with s
+// cospherical up to 10⁻⁶, γ₀-cospherical for γ₀ = 1.01, with radius 1/2 < β r_τ and radius-edge
+// ratio below ρ₀: every draw is discarded (3 discards, then kept: one exhausted refinement). With s
+// moved from (1, 0, 0) to (5/4, 0, 0), a quarter of the radius off the sphere, the first draw is
+// kept (no discard).
+TEST(PickValid3, ForbiddenConfigurationIsRejectedAndOneJustOutsideAccepted) {
+  Polyhedron box = anisocert::geometry::cube_polyhedron();
+  for (auto& v : box.vertices) v = {v.x * 8 - 4, v.y * 8 - 4, v.z * 8 - 4};
+  const common::Domain3 domain(box);
+  const Sym3<double> I{1, 0, 0, 1, 0, 1};
+  anisocert::fields::MetricField3 field{"constant", {}, [I](double, double, double) { return I; }};
+  anisocert::refiners::star::RefineParameters p;
+  p.gamma0 = 1.01, p.delta = 1e-6, p.pick_attempts = 3;
+  for (const double sx : {1.0, 1.25}) {
+    common::Sites3 sites(domain, field);
+    for (const Point3<double>& q : {Point3<double>{0.5, 0.5, 0}, {0.5, 0, 0.5}, {0.5, -0.5, 0}, {sx, 0, 0}}) sites.add(q, I);
+    sites.grow_grid();
+    anisocert::refiners::star::PickValid3 pick(domain, sites, p);
+    const Point3<double> x = pick.pick({0, 0, 0}, 4, I, {0, 1, 2, 3});
+    EXPECT_LT(std::abs(x.x) + std::abs(x.y) + std::abs(x.z), 1e-5);
+    if (sx == 1.0) {
+      EXPECT_EQ(pick.counts().rejected, 3u);
+      EXPECT_EQ(pick.counts().exhausted, 1u);
+    } else {
+      EXPECT_EQ(pick.counts().rejected, 0u);
+      EXPECT_EQ(pick.counts().exhausted, 0u);
+    }
+  }
 }

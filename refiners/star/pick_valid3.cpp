@@ -48,7 +48,7 @@ bool PickValid3::forbidden(const Point3<double>& x, double r_tau) {
       const double from_centre = d2(w, o);
       if (from_centre * g4 < c.r2 || from_centre > c.r2 * g4) continue;
       if (!(c.r2 < rho2 * std::min({edges, d2(w, x), d2(w, p), d2(w, q), d2(w, r)}))) continue;
-      if (predicates::quasi_cospherical(x, p, q, r, w, M, k) == Sign::negative) return true;
+      if (predicates::quasi_cospherical(x, p, q, r, w, M, k) == Sign::positive) return true;  // strictly γ₀-cospherical
     }
   }
   return false;
