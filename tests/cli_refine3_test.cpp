@@ -43,7 +43,8 @@ TEST(CliRefine3, TheCubeIsRefinedCertifiedAndReadBack) {
   EXPECT_NE(r.out.find("stopped: all stars consistent"), std::string::npos);
   EXPECT_NE(r.out.find("\ncertified"), std::string::npos) << r.out;
   // The cube's twelve ridges are right angles (docs/refiners.md): LU Lemma 4.1's hypothesis fails.
-  EXPECT_NE(r.out.find("LU Lemma 4.1 (dihedral angles > 90° in the metric): fails at 12 of 12 ridges"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(dihedral angles > 90° in the metric, for rule 1 to end): not at 12 of 12 ridges"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("edge lengths"), std::string::npos) << r.out;  // the metric checks, measured
   EXPECT_TRUE(fs::exists(d / "cube.sol"));
   EXPECT_TRUE(fs::exists(json));
   // The files as another program reads them.
@@ -67,9 +68,10 @@ TEST(CliRefine3, BadDomainsAndFieldsGetOneLineAndExit2) {
   } cases[] = {
       {"--domain " + (d / "open.off").string(), "the surface is open"},
       {"--domain " + (d / "inward.off").string(), "inward"},
-      {"--domain " + (d / "decimal.off").string(), "not a double"},
+      {"--domain " + (d / "decimal.off").string(), "its x is not exactly a double"},
       {"--domain " + (d / "missing.off").string(), "missing.off"},
       {"--domain cube --algo ls", "meshes polygons only"},
+      {"--domain sphere --json " + (d / "c.json").string(), "no such built-in domain"},
       {"--domain cube --field ugawg-polar2", "no metric"},
       {"--domain cube --field constant --param m11=-1", "positive definite"},
   };

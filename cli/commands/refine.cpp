@@ -189,6 +189,7 @@ int run_refine3(const RefineOptions& o, const refiners::RefinerEntry& entry, con
   oracle::Certify3Options co;
   co.rho0 = rational_from_double(values.at("rho0")), co.gamma0 = rational_from_double(values.at("gamma0"));
   co.threads = o.threads;
+  co.metric = true;  // edge lengths, quality, dihedral angles and UGAWG's measures: measured, no bound
   if (!o.quiet) progress("refine: certifying the mesh (" + std::to_string(m.tetrahedra.size()) + " tetrahedra)");
   const oracle::Certify3Report report = oracle::certify_mesh3(file.mesh3, co);
   io::BoundTexts bounds;
@@ -241,6 +242,8 @@ int run_refine(const RefineOptions& o) {
   }
   check_outputs({o.output, o.svg, o.json});
   if (domain_is_3d(o.domain)) return run_refine3(o, *entry, values, budget, format);
+  if (o.domain != "square" && o.domain.find_first_of("./") == std::string::npos)
+    throw UsageError("--domain " + quoted_excerpt(o.domain) + ": no such built-in domain (square; in 3D: cube, cube-cylinder) and not a file name");
   if (!o.json.empty()) throw UsageError("--json: the certificate of a 3D run (a 2D run's mesh is certified by anisocert certify --json)");
   io::DomainFile input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, {}};
   if (o.domain != "square") {
@@ -306,6 +309,13 @@ std::string description() {
     o << ")\n";
   }
   o << "  " << background_field_help << "\n";
+  o << "3D fields (with --domain cube, cube-cylinder or a surface FILE):\n";
+  for (const auto& f : fields::builtin_fields3()) {
+    o << "  " << f.name << ": " << f.formula << " (";
+    const char* sep = "";
+    for (const auto& [name, value] : f.defaults) o << sep << name << " = " << value, sep = ", ";
+    o << ")\n";
+  }
   o << "Exit 0 when the refiner's output condition holds (star: all stars consistent), 1 when a budget or a stall\n"
        "stopped it (the mesh written is what it had), 2 bad input, 3 the diagram --svg draws contradicts Theorem 7\n"
        "(its preconditions hold and its dual is no triangulation: a bug or a counterexample, said on standard error).";

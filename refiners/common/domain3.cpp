@@ -20,10 +20,11 @@ std::string point_text(const Point3<double>& p) {
 
 namespace {
 
-double exact_double(const Rational& q, std::size_t v) {
+double exact_double(const Rational& q, std::size_t v, char axis) {
   const double d = q.convert_to<double>();
   if (!std::isfinite(d) || rational_from_double(d) != q)
-    throw DomainError("vertex " + std::to_string(v) + ": a coordinate is not a double (the refiner works in doubles; round it)");
+    throw DomainError("vertex " + std::to_string(v) + " (from 0): its " + axis + " is not exactly a double, as 0.1 and 1/6 are not (the refiner " +
+                      "puts boundary vertices exactly on the facets, in doubles: give coordinates such as multiples of 2⁻²⁰)");
   return d;
 }
 
@@ -60,7 +61,7 @@ constexpr std::array<std::array<double, 3>, 8> directions{{{0.5377, 0.3193, 0.78
 Domain3::Domain3(const geometry::Polyhedron& p) {
   vertices_.reserve(p.vertices.size());
   for (std::size_t v = 0; v < p.vertices.size(); ++v)
-    vertices_.push_back({exact_double(p.vertices[v].x, v), exact_double(p.vertices[v].y, v), exact_double(p.vertices[v].z, v)});
+    vertices_.push_back({exact_double(p.vertices[v].x, v, 'x'), exact_double(p.vertices[v].y, v, 'y'), exact_double(p.vertices[v].z, v, 'z')});
   if (const auto defect = geometry::polyhedron_defect(p)) throw DomainError(*defect);
   facets_ = p.facets;
   for (std::size_t f = 0; f < facets_.size(); ++f)

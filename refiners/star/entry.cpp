@@ -73,13 +73,13 @@ std::vector<std::string> report3(const StarResult3& r, const RefineParameters& p
           " boundary faces, " + std::to_string(r.faces_off_boundary) + " of them off ∂Ω",
       pick_line(r.picks_rejected, r.picks_exhausted, r.refinements, p, "cospherical"), common::rule_counts_line(r), parameters_line(p),
       theorem45_line(p)};
-  std::string lemma41 = "  LU Lemma 4.1 (dihedral angles > 90° in the metric): ";
+  std::string lemma41 = "  LU Lemma 4.1's hypothesis (dihedral angles > 90° in the metric, for rule 1 to end): ";
   if (r.right_or_acute_ridges.empty()) {
     lemma41 += "holds at every one of Ω's " + std::to_string(r.ridges) + " ridges";
   } else {
     const auto& e = r.right_or_acute_ridges.front();
-    lemma41 += "fails at " + std::to_string(r.right_or_acute_ridges.size()) + " of " + std::to_string(r.ridges) + " ridges (the first between vertices " +
-               std::to_string(e[0]) + " and " + std::to_string(e[1]) + "; encroachment there may not end)";
+    lemma41 += "not at " + std::to_string(r.right_or_acute_ridges.size()) + " of " + std::to_string(r.ridges) + " ridges (the first between vertices " +
+               std::to_string(e[0]) + " and " + std::to_string(e[1]) + "; rule 1 may not end there: the run's end and its certificate say)";
   }
   lines.insert(lines.begin() + 3, lemma41);
   return lines;
