@@ -22,12 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("cli_certify3_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh(const std::string& name) { return fresh_folder("cli_certify3", name); }
 
 // The n³ Kuhn grid (geometry/kuhn_grid.hpp) as Medit text, by the Medit writer; `flip`: the index
 // of a tetrahedron written reversed (−1: none).

@@ -12,12 +12,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("cli_refine3_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh(const std::string& name) { return fresh_folder("cli_refine3", name); }
 
 // The unit cube as OFF text, its facets outward, or (inward) every facet reversed, or (open) the
 // last facet left out; `x1`: the text of the coordinate 1 of vertex 1.

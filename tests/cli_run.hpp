@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -38,5 +39,13 @@ inline Outcome run_command(const std::string& command_line) {
 }
 
 inline Outcome run(const std::string& args) { return run_command(std::string(ANISOCERT_BIN) + " " + args); }
+
+// An empty folder of its own under the test temporary directory: PREFIX_NAME_PID.
+inline std::filesystem::path fresh_folder(const std::string& prefix, const std::string& name) {
+  const std::filesystem::path d = std::filesystem::path(::testing::TempDir()) / (prefix + "_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
 
 }  // namespace

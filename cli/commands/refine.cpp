@@ -296,26 +296,27 @@ int run_refine(const RefineOptions& o) {
   return run.result.consistent ? 0 : 1;
 }
 
+// One line per field of a registry: "  NAME: FORMULA (parameter = default, …)".
+template <class Entries>
+void list_fields(std::ostringstream& o, const Entries& entries) {
+  for (const auto& f : entries) {
+    o << "  " << f.name << ": " << f.formula << " (";
+    const char* sep = "";
+    for (const auto& [name, value] : f.defaults) o << sep << name << " = " << value, sep = ", ";
+    o << ")\n";
+  }
+}
+
 // The help, from the registries: every refiner with its summary, every field with its parameters.
 std::string description() {
   std::ostringstream o;
   o << "Anisotropic mesh refinement on a domain for a metric field.\n";
   for (const auto& e : refiners::registered_refiners()) o << "--algo " << e.name << ": " << e.summary << "\n";
   o << "Fields (--field NAME, --param name=value; formulas in docs/refiners.md):\n";
-  for (const auto& f : fields::builtin_fields()) {
-    o << "  " << f.name << ": " << f.formula << " (";
-    const char* sep = "";
-    for (const auto& [name, value] : f.defaults) o << sep << name << " = " << value, sep = ", ";
-    o << ")\n";
-  }
+  list_fields(o, fields::builtin_fields());
   o << "  " << background_field_help << "\n";
   o << "3D fields (with --domain cube, cube-cylinder or a surface FILE):\n";
-  for (const auto& f : fields::builtin_fields3()) {
-    o << "  " << f.name << ": " << f.formula << " (";
-    const char* sep = "";
-    for (const auto& [name, value] : f.defaults) o << sep << name << " = " << value, sep = ", ";
-    o << ")\n";
-  }
+  list_fields(o, fields::builtin_fields3());
   o << "Exit 0 when the refiner's output condition holds (star: all stars consistent), 1 when a budget or a stall\n"
        "stopped it (the mesh written is what it had), 2 bad input, 3 the diagram --svg draws contradicts Theorem 7\n"
        "(its preconditions hold and its dual is no triangulation: a bug or a counterexample, said on standard error).";

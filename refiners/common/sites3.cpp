@@ -1,5 +1,6 @@
 #include "refiners/common/sites3.hpp"
 
+#include "geometry/ellipse_box.hpp"
 #include "numbers/shortest_decimal.hpp"
 #include "predicates/metric.hpp"
 
@@ -25,10 +26,7 @@ Sym3<double> Sites3::metric_at(const Point3<double>& q) const {
 }
 
 Box3 metric_ball_box(const Point3<double>& c, const Sym3<double>& M, double r2) {
-  // The diagonal of M⁻¹: cofactors over the determinant.
-  const double c11 = M.m22 * M.m33 - M.m23 * M.m23, c22 = M.m11 * M.m33 - M.m13 * M.m13, c33 = M.m11 * M.m22 - M.m12 * M.m12;
-  const double det = M.m11 * c11 - M.m12 * (M.m12 * M.m33 - M.m23 * M.m13) + M.m13 * (M.m12 * M.m23 - M.m22 * M.m13);
-  const double hx = std::sqrt(r2 * c11 / det), hy = std::sqrt(r2 * c22 / det), hz = std::sqrt(r2 * c33 / det);
+  const auto [hx, hy, hz] = geometry::ellipsoid_half_widths(M, r2);
   return {c.x - hx, c.x + hx, c.y - hy, c.y + hy, c.z - hz, c.z + hz};
 }
 

@@ -62,8 +62,18 @@ std::string theorem45_line(const RefineParameters& p) {
          yes(c.lemma44);
 }
 
+// LU Lemma 4.1's hypothesis at Ω's ridges (StarResult3::right_or_acute_ridges).
+std::string lemma41_line(const StarResult3& r) {
+  std::string line = "  LU Lemma 4.1's hypothesis (dihedral angles > 90° in the metric, for rule 1 to end): ";
+  if (r.right_or_acute_ridges.empty()) return line + "holds at every one of Ω's " + std::to_string(r.ridges) + " ridges";
+  const auto& e = r.right_or_acute_ridges.front();
+  return line + "not at " + std::to_string(r.right_or_acute_ridges.size()) + " of " + std::to_string(r.ridges) +
+         " ridges (the first between vertices " + std::to_string(e[0]) + " and " + std::to_string(e[1]) +
+         "; rule 1 may not end there: the run's end and its certificate say)";
+}
+
 std::vector<std::string> report3(const StarResult3& r, const RefineParameters& p) {
-  std::vector<std::string> lines{
+  return {
       common::size_line(r, "star refiner (3D)"),
       common::stop_line(r, "inconsistent star tetrahedra: " + std::to_string(r.inconsistent_tetrahedra) +
                                (r.empty_stars ? ", empty stars: " + std::to_string(r.empty_stars) : "")),
@@ -71,18 +81,9 @@ std::vector<std::string> report3(const StarResult3& r, const RefineParameters& p
           " edge splits at exact midpoints (" + std::to_string(r.boundary_splits - r.snap_splits) +
           " for rule 1, " + std::to_string(r.snap_splits) + " by Insert_or_snap); the mesh's " + std::to_string(r.mesh.triangles.size()) +
           " boundary faces, " + std::to_string(r.faces_off_boundary) + " of them off ∂Ω",
+      lemma41_line(r),
       pick_line(r.picks_rejected, r.picks_exhausted, r.refinements, p, "cospherical"), common::rule_counts_line(r), parameters_line(p),
       theorem45_line(p)};
-  std::string lemma41 = "  LU Lemma 4.1's hypothesis (dihedral angles > 90° in the metric, for rule 1 to end): ";
-  if (r.right_or_acute_ridges.empty()) {
-    lemma41 += "holds at every one of Ω's " + std::to_string(r.ridges) + " ridges";
-  } else {
-    const auto& e = r.right_or_acute_ridges.front();
-    lemma41 += "not at " + std::to_string(r.right_or_acute_ridges.size()) + " of " + std::to_string(r.ridges) + " ridges (the first between vertices " +
-               std::to_string(e[0]) + " and " + std::to_string(e[1]) + "; rule 1 may not end there: the run's end and its certificate say)";
-  }
-  lines.insert(lines.begin() + 3, lemma41);
-  return lines;
 }
 
 std::vector<std::string> report(const StarResult& r, const RefineParameters& p) {
