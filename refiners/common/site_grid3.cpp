@@ -80,19 +80,4 @@ const std::vector<int>& FiledBoxes3::holding(const Point3<double>& q, const Site
   return found_;
 }
 
-const std::vector<int>& FiledBoxes3::meeting(const Box3& b, const SiteGrid3& grid) const {
-  found_.clear();
-  const Cells3 c = grid.cells_of(b);
-  for (int k = c.k0; k <= c.k1; ++k)
-    for (int j = c.j0; j <= c.j1; ++j)
-      for (int i = c.i0; i <= c.i1; ++i)
-        for (int id : index_[grid.cell(i, j, k)]) {
-          const Box3& o = boxes_[id];
-          if (o.x0 <= b.x1 && b.x0 <= o.x1 && o.y0 <= b.y1 && b.y0 <= o.y1 && o.z0 <= b.z1 && b.z0 <= o.z1) found_.push_back(id);
-        }
-  std::sort(found_.begin(), found_.end());
-  found_.erase(std::unique(found_.begin(), found_.end()), found_.end());
-  return found_;
-}
-
 }  // namespace anisocert::refiners::common

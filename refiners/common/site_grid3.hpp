@@ -56,8 +56,6 @@ class FiledBoxes3 {
   const Box3& box(int id) const { return boxes_[static_cast<std::size_t>(id)]; }
   // The ids whose closed boxes hold q, by increasing id, in a buffer reused across calls.
   const std::vector<int>& holding(const Point3<double>& q, const SiteGrid3& grid) const;
-  // The ids whose boxes meet b, by increasing id, in the same buffer.
-  const std::vector<int>& meeting(const Box3& b, const SiteGrid3& grid) const;
 
  private:
   void file(int id, const Cells3& c, const SiteGrid3& grid, bool add);

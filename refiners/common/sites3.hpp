@@ -41,7 +41,9 @@ struct Sites3 {
   std::vector<Point3<double>> points;
   std::vector<Sym3<double>> metrics;
   SiteGrid3 grid;
-  mutable std::vector<int> found_;
+
+ private:
+  mutable std::vector<int> found_;  // within's buffer
 };
 
 // The bounding box of the M-ball of squared radius r2 about c: half-widths √(r2 (M⁻¹)ᵢᵢ).
