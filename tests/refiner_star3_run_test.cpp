@@ -29,6 +29,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <variant>
 
 namespace {
 
@@ -300,6 +301,106 @@ TEST(Boundary3, RidgeAnglesAreTheTransformedEuclideanAngles) {
   }
   EXPECT_GT(obtuse, 50u);
   EXPECT_GT(not_obtuse, 50u);
+}
+
+// The surface level's LEPP–Delaunay splits (Boundary3::split, then Lawson's flips in the new
+// site's metric): under a constant metric M = FᵀF (F integer upper triangular, sheared), after
+// 300 splits of random subfacet edges at their midpoints every edge between two subfacets in one
+// plane is locally Delaunay in M: the far apex is not strictly inside the circumcircle of the
+// other subfacet after x ↦ Fx, its centre solved here in rationals (Cramer, the test's own
+// determinant). Bisection alone breaks it under a sheared metric (the cascade of thin subfacets
+// that made UGAWG's linear field at h0 = 0.05 refine the cube's faces to 10⁻⁷, regression
+// `StarRefiner3.UgawgLinearAtH0_005IsCertified`); the subfacets also tile each face (their exact
+// areas in the face sum to 1).
+TEST(Boundary3, SplitsKeepEachPlaneDelaunayInAConstantMetric) {
+  const common::Domain3 domain(anisocert::geometry::cube_polyhedron());
+  std::mt19937 rng(40);
+  std::uniform_int_distribution<int> diagonal(1, 4), off(-3, 3);
+  std::size_t checked = 0;
+  for (int round = 0; round < 4; ++round) {
+    const std::array<std::array<int, 3>, 3> F{{{diagonal(rng), off(rng), off(rng)}, {0, diagonal(rng), off(rng)}, {0, 0, diagonal(rng)}}};
+    double m[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        m[i][j] = 0;
+        for (int k = 0; k < 3; ++k) m[i][j] += F[k][i] * F[k][j];
+      }
+    const Sym3<double> M{m[0][0], m[0][1], m[0][2], m[1][1], m[1][2], m[2][2]};
+    anisocert::fields::MetricField3 field{"constant", {}, [M](double, double, double) { return M; }};
+    common::Sites3 sites(domain, field);
+    for (const auto& q : domain.vertices()) sites.add(q, M);
+    sites.grow_grid();
+    common::Boundary3 boundary(domain, sites);
+    for (int split = 0; split < 300; ++split) {
+      const auto faces = boundary.subfacets();
+      const auto& f = faces[std::uniform_int_distribution<std::size_t>(0, faces.size() - 1)(rng)];
+      const int e = std::uniform_int_distribution<int>(0, 2)(rng);
+      const common::Boundary3::Edge edge{std::min(f[e], f[(e + 1) % 3]), std::max(f[e], f[(e + 1) % 3])};
+      const auto mid = boundary.midpoint(edge);
+      ASSERT_TRUE(std::holds_alternative<Point3<double>>(mid));
+      const int k = sites.add(std::get<Point3<double>>(mid), M);
+      if (sites.grow_grid()) boundary.refile();
+      boundary.split(edge, k);
+      boundary.site_added(k);
+    }
+    const auto Fx = [&](int v) {
+      const auto& x = sites.points[v];
+      const std::array<Rational, 3> p{R(x.x), R(x.y), R(x.z)};
+      std::array<Rational, 3> y{};
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) y[i] += Rational(F[i][k]) * p[k];
+      return y;
+    };
+    const auto minus = [](const std::array<Rational, 3>& a, const std::array<Rational, 3>& b) {
+      return std::array<Rational, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    };
+    const auto dot = [](const std::array<Rational, 3>& a, const std::array<Rational, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const auto faces = boundary.subfacets();
+    std::map<std::array<int, 2>, std::vector<int>> at;
+    for (int t = 0; t < static_cast<int>(faces.size()); ++t)
+      for (int e = 0; e < 3; ++e) at[{std::min(faces[t][e], faces[t][(e + 1) % 3]), std::max(faces[t][e], faces[t][(e + 1) % 3])}].push_back(t);
+    for (const auto& [e, ts] : at) {
+      ASSERT_EQ(ts.size(), 2u) << "the subfacets are a closed surface";
+      const auto apex = [&](int t) {
+        for (int w : faces[t])
+          if (w != e[0] && w != e[1]) return w;
+        return -1;
+      };
+      const int c = apex(ts[0]), d = apex(ts[1]);
+      const auto& x = sites.points;
+      if (anisocert::predicates::orientation3(x[e[0]], x[e[1]], x[c], x[d]) != anisocert::Sign::zero) continue;  // a ridge
+      // The circumcentre o of Fa, Fb, Fc: (o − a)·u = |u|²/2, (o − a)·v = |v|²/2, (o − a)·n = 0.
+      const auto a = Fx(e[0]), u = minus(Fx(e[1]), a), v = minus(Fx(c), a);
+      const std::array<Rational, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      const std::vector<std::vector<Rational>> A{{u[0], u[1], u[2]}, {v[0], v[1], v[2]}, {n[0], n[1], n[2]}};
+      const std::array<Rational, 3> rhs{dot(u, u) / 2, dot(v, v) / 2, Rational(0)};
+      const Rational det = determinant(A);
+      std::array<Rational, 3> o{};
+      for (int j = 0; j < 3; ++j) {
+        auto Aj = A;
+        for (int i = 0; i < 3; ++i) Aj[i][j] = rhs[i];
+        o[j] = determinant(Aj) / det;
+      }
+      const auto w = minus(Fx(d), a);
+      EXPECT_GE(dot(minus(w, o), minus(w, o)), dot(o, o)) << "edge " << e[0] << "-" << e[1] << " is not Delaunay in M, round " << round;
+      ++checked;
+    }
+    // The subfacets tile the six faces: in each face the doubled areas |(b − a) × (c − a)| sum to 2.
+    std::map<std::pair<int, double>, Rational> area;  // (axis, side) → doubled area
+    for (const auto& t : faces) {
+      const auto& x = sites.points;
+      const auto coord = [&](int w, int i) { return i == 0 ? x[w].x : i == 1 ? x[w].y : x[w].z; };
+      int axis = 0;
+      while (!(coord(t[0], axis) == coord(t[1], axis) && coord(t[0], axis) == coord(t[2], axis))) ++axis;
+      const auto p = [&](int w) { return std::array<Rational, 3>{R(x[w].x), R(x[w].y), R(x[w].z)}; };
+      const auto b = minus(p(t[1]), p(t[0])), c = minus(p(t[2]), p(t[0]));
+      const Rational cr = b[(axis + 1) % 3] * c[(axis + 2) % 3] - b[(axis + 2) % 3] * c[(axis + 1) % 3];
+      area[{axis, coord(t[0], axis)}] += cr < 0 ? -cr : cr;
+    }
+    ASSERT_EQ(area.size(), 6u);
+    for (const auto& [face, doubled] : area) EXPECT_EQ(doubled, Rational(2));
+  }
+  EXPECT_GT(checked, 1000u);
 }
 
 // Pick_valid in 3D (LU Definitions 3.6 and 3.9; refiners/star/pick_valid3.hpp): the picking region

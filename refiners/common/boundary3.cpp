@@ -5,6 +5,7 @@
 #include "refiners/common/exact_split.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <map>
 
@@ -98,9 +99,21 @@ bool Boundary3::encroaches(const Point3<double>& p, bool on_boundary, const Sym3
 }
 
 std::pair<double, Boundary3::Edge> Boundary3::length(int a, int b) const {
-  const auto& x = sites_.points;
-  const double dx = x[b].x - x[a].x, dy = x[b].y - x[a].y, dz = x[b].z - x[a].z;
-  return {dx * dx + dy * dy + dz * dz, Edge{std::min(a, b), std::max(a, b)}};
+  const Edge e{std::min(a, b), std::max(a, b)};
+  const auto [it, fresh] = lengths_.try_emplace(key(a, b), 0.0);
+  if (fresh) {
+    // The composite midpoint rule with 8 samples of √(uᵀ M(p) u) for u = b − a, from the lesser
+    // site to the greater, so that an edge has one length.
+    const auto& p = sites_.points[e[0]];
+    const auto& q = sites_.points[e[1]];
+    const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z;
+    for (int i = 0; i < 8; ++i) {
+      const double t = (i + 0.5) / 8;
+      const Sym3<double> M = sites_.metric_at({p.x + t * ux, p.y + t * uy, p.z + t * uz});
+      it->second += std::sqrt(predicates::quadratic_form(M, ux, uy, uz)) / 8;
+    }
+  }
+  return {it->second, e};
 }
 
 Boundary3::Edge Boundary3::longest_edge(int f) const {
@@ -192,6 +205,41 @@ void Boundary3::split(const Edge& e, int m) {
     const int x = v[r], y = v[(r + 1) % 3], z = v[(r + 2) % 3];
     add_subfacet({x, m, z}, facet);
     add_subfacet({m, y, z}, facet);
+    legalize(z, x, m), legalize(y, z, m);
+  }
+}
+
+void Boundary3::legalize(int a, int b, int m) {
+  // Lawson's flips in M_m, one metric for the whole insertion: each flip lowers the lifted
+  // surface of the plane's triangulation in that metric, so they end.
+  const auto& x = sites_.points;
+  const Sym3<double>& M = sites_.metrics[m];
+  std::vector<Edge> stack{{a, b}};
+  while (!stack.empty()) {
+    const auto [p, q] = stack.back();
+    stack.pop_back();
+    const auto it = edges_.find(key(p, q));
+    if (it == edges_.end() || it->second.size() != 2) continue;
+    const int f = it->second[0], g = it->second[1];
+    if (!domain_.coplanar(subfacets_[f].facet, subfacets_[g].facet)) continue;  // a subsegment
+    const auto apex = [&](int h) {
+      for (int w : subfacets_[h].v)
+        if (w != p && w != q) return w;
+      return -1;
+    };
+    const int fm = apex(f) == m ? f : g, other = fm == f ? g : f, d = apex(other);
+    if (apex(fm) != m) continue;  // the edge's subfacets no longer both touch this insertion
+    // fm is (m, p, q) in outward order, up to rotation; its edge runs p → q or q → p.
+    const auto& v = subfacets_[fm].v;
+    int r = 0;
+    while (v[r] != m) ++r;
+    const int s = v[(r + 1) % 3], t = v[(r + 2) % 3];  // fm = (m, s, t), other = (t, s, d)
+    if (!predicates::encroaches_facet(x[d], x[m], x[s], x[t], M)) continue;
+    const int facet = subfacets_[fm].facet;
+    kill(fm), kill(other);
+    add_subfacet({m, s, d}, facet);
+    add_subfacet({m, d, t}, facet);
+    stack.push_back({s, d}), stack.push_back({d, t});
   }
 }
 

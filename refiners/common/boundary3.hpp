@@ -96,6 +96,10 @@ class Boundary3 {
   }
   int add_subfacet(const std::array<int, 3>& v, int facet);
   void kill(int f);
+  // LEPP–Delaunay (Rivara): after site m split an edge, the edge ab of the plane's triangulation
+  // opposite m is flipped while its other subfacet's apex lies strictly inside the M_m-circumcircle
+  // of m, a, b (encroaches_facet for a point in the plane, exact), and so on outwards.
+  void legalize(int a, int b, int m);
   bool is_subsegment(int a, int b) const;
   // Whether p (metric Mp, not a vertex of f) encroaches subfacet f; edge_of: set to a subsegment
   // of f that p encroaches, if any.
@@ -103,6 +107,8 @@ class Boundary3 {
   bool encroaches(const Point3<double>& p, bool on_boundary, const Sym3<double>& Mp, int f, std::optional<Edge>* edge_of) const;
   // Whether p is strictly beyond subfacet f's plane (on its outward side).
   bool beyond(int f, const Point3<double>& p) const;
+  // The edge ab's length in the field, ∫ √(uᵀ M(a + t u) u) dt over [0, 1] for u = b − a, by a
+  // quadrature in doubles (computed once per edge), and the edge: the order of LEPP.
   std::pair<double, Edge> length(int a, int b) const;
   Edge longest_edge(int f) const;
   // The edge LEPP splits first on the way to splitting e (e when e is the longest edge of both its subfacets).
@@ -116,6 +122,7 @@ class Boundary3 {
   // of an edge lies on the planes of both ends.
   std::vector<std::vector<int>> site_facets_;
   FiledBoxes3 boxes_;
+  mutable std::unordered_map<std::uint64_t, double> lengths_;  // length's, by edge
   void enqueue(int f) {
     if (!queued_[f]) queued_[f] = true, queue_.push_back(f);
   }
