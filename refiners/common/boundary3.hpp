@@ -21,14 +21,18 @@
 // An encroached subsegment is split at once (first when p encroaches one of a subfacet's edges
 // that is one): propagating from it split an edge from the ridge towards p, whose midpoint lay
 // nearer the ridge and encroached it again, a sequence converging to the ridge. An encroached
-// subfacet has its longest edge split by Rivara's longest-edge propagation (LEPP): while a
-// subfacet at the edge has a longer edge, that one is split first, so that subfacets are cut
-// across their longest edges and the surface's angles stay bounded below (bisecting a neighbour
-// across a shorter edge, repeatedly, made ever thinner subfacets that encroach on ever more
-// sites: a cascade without end). An edge's length is Euclidean, ties broken by the sites' indices: a
-// strict order that a split does not change (lengths in the ends' metrics changed with each new
-// site's metric, and on a face under a field varying 25-fold the propagation alternated between
-// two edges without end, its midpoints converging to z = 1/3 and 2/3). Candidates come from boxes (the diametral balls' in the vertices'
+// subfacet has its longest edge split by Rivara's LEPP–Delaunay: while a subfacet at the edge has
+// a longer edge, that one is split first, and after each split Lawson's flips (legalize) make the
+// plane's triangulation around the new site Delaunay in its metric. An edge's length is its
+// length in the field (the integral of √(uᵀ M u) along it, by quadrature in doubles, once per
+// edge), ties broken by the sites' indices: a strict order that no later split changes, and
+// additive up to the quadrature, so an edge's halves are shorter than it. Bisection alone (Euclidean lengths, no
+// flips) cut UGAWG's linear field's faces into subfacets whose smallest angle in the metric fell
+// to 7°: every tetrahedron on such a subfacet has a radius-edge ratio of at least 1/(2 sin 7°) > 3,
+// so refining them moved points towards the face without end (edges of 10⁻⁷ at h0 = 0.05;
+// Euclidean order also refines across the field's fine direction as finely as along it, 100
+// times too fine at h0 = 10⁻³). (Lengths in the metrics of a subfacet's vertices, tried
+// before, changed with each new site, and LEPP alternated between two edges without end.) Candidates come from boxes (the diametral balls' in the vertices'
 // metrics, the radius times √2: a floating-point choice of which pairs to test, which may miss a
 // site whose own metric makes the ball larger; the certifier judges the mesh).
 #include "refiners/common/sites3.hpp"

@@ -56,6 +56,21 @@ constexpr std::array<std::array<double, 3>, 8> directions{{{0.5377, 0.3193, 0.78
                                                            {0.3187, -0.8231, -0.4699},
                                                            {0.8663, 0.1777, -0.4667}}};
 
+// The least box holding the points (exact: comparisons of doubles).
+Box3 box_of(const std::vector<Point3<double>>& points) {
+  Box3 b{points[0].x, points[0].x, points[0].y, points[0].y, points[0].z, points[0].z};
+  for (const auto& q : points) {
+    b.x0 = std::min(b.x0, q.x), b.x1 = std::max(b.x1, q.x);
+    b.y0 = std::min(b.y0, q.y), b.y1 = std::max(b.y1, q.y);
+    b.z0 = std::min(b.z0, q.z), b.z1 = std::max(b.z1, q.z);
+  }
+  return b;
+}
+
+bool meet(const Box3& a, const Box3& b) {
+  return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1 && a.z0 <= b.z1 && b.z0 <= a.z1;
+}
+
 }  // namespace
 
 Domain3::Domain3(const geometry::Polyhedron& p) {
@@ -72,12 +87,8 @@ Domain3::Domain3(const geometry::Polyhedron& p) {
                           " cannot be halved exactly " + std::to_string(min_halvings) +
                           " times in doubles (boundary vertices must lie exactly on the facets: round the coordinates to a coarser binary grid)");
     }
-  box_ = {vertices_[0].x, vertices_[0].x, vertices_[0].y, vertices_[0].y, vertices_[0].z, vertices_[0].z};
-  for (const auto& q : vertices_) {
-    box_.x0 = std::min(box_.x0, q.x), box_.x1 = std::max(box_.x1, q.x);
-    box_.y0 = std::min(box_.y0, q.y), box_.y1 = std::max(box_.y1, q.y);
-    box_.z0 = std::min(box_.z0, q.z), box_.z1 = std::max(box_.z1, q.z);
-  }
+  box_ = box_of(vertices_);
+  for (const auto& t : facets_) facet_boxes_.push_back(box_of({vertices_[t[0]], vertices_[t[1]], vertices_[t[2]]}));
   const std::size_t n = facets_.size();
   coplanar_.assign(n * n, false);
   for (std::size_t f = 0; f < n; ++f)
@@ -107,7 +118,7 @@ bool Domain3::on_facet(const Point3<double>& p, int f) const {
 Side Domain3::side(const Point3<double>& p) const {
   if (p.x < box_.x0 || p.x > box_.x1 || p.y < box_.y0 || p.y > box_.y1 || p.z < box_.z0 || p.z > box_.z1) return Side::outside;
   for (int f = 0; f < static_cast<int>(facets_.size()); ++f)
-    if (on_facet(p, f)) return Side::boundary;
+    if (facet_boxes_[f].contains(p) && on_facet(p, f)) return Side::boundary;
   // A far point beyond the box; the segment p → far crosses the surface an odd number of times
   // iff p is inside (p is on no facet).
   const double reach = 2 * ((box_.x1 - box_.x0) + (box_.y1 - box_.y0) + (box_.z1 - box_.z0)) + 1;
@@ -116,16 +127,23 @@ Side Domain3::side(const Point3<double>& p) const {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     return static_cast<double>(state >> 11) * 0x1p-53 * 2 - 1;  // in [−1, 1)
   };
-  for (int attempt = 0; attempt < 1008; ++attempt) {
-    std::array<double, 3> d = attempt < 8 ? directions[static_cast<std::size_t>(attempt)] : std::array<double, 3>{next(), next(), next()};
+  // First along +x: the segment's box is thin, and the facets' boxes dismiss nearly every facet (a
+  // closed segment and a closed triangle in disjoint boxes do not meet: no crossing to count).
+  for (int attempt = -1; attempt < 1008; ++attempt) {
+    std::array<double, 3> d = attempt < 0   ? std::array<double, 3>{1, 0, 0}
+                              : attempt < 8 ? directions[static_cast<std::size_t>(attempt)]
+                                            : std::array<double, 3>{next(), next(), next()};
     if (attempt >= 8) {  // normalised so that the far point is beyond the box
       const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       if (!(n > 0.1)) continue;
       d = {d[0] / n, d[1] / n, d[2] / n};
     }
     const Point3<double> far{p.x + reach * d[0], p.y + reach * d[1], p.z + reach * d[2]};
+    const Box3 segment = box_of({p, far});
     bool degenerate = false, odd = false;
-    for (const auto& t : facets_) {
+    for (std::size_t f = 0; f < facets_.size(); ++f) {
+      if (!meet(segment, facet_boxes_[f])) continue;
+      const auto& t = facets_[f];
       const auto &a = vertices_[t[0]], &b = vertices_[t[1]], &c = vertices_[t[2]];
       const Sign sp = predicates::orientation3(a, b, c, p), sf = predicates::orientation3(a, b, c, far);
       if (sf == Sign::zero) {

@@ -40,9 +40,9 @@ class Domain3 {
   const Box3& bounding_box() const { return box_; }
   // Where p is, exactly: the parity of the facets a segment from p to a far point crosses, every
   // decision an exact orientation; a segment through a facet's edge or vertex, or along its plane,
-  // is replaced by another (the degenerate directions lie on finitely many planes through p: eight
-  // fixed directions, then up to 1,000 pseudo-random ones; throws std::logic_error should all
-  // fail).
+  // is replaced by another (the degenerate directions lie on finitely many planes through p: +x,
+  // eight fixed directions, then up to 1,000 pseudo-random ones; throws std::logic_error should
+  // all fail). Facets whose boxes miss the segment's are not tested.
   Side side(const Point3<double>& p) const;
   bool contains(const Point3<double>& p) const { return side(p) != Side::outside; }
   // Whether p lies on facet f (its closed triangle), exactly.
@@ -60,6 +60,7 @@ class Domain3 {
   std::vector<bool> coplanar_;
   std::vector<int> plane_;
   Box3 box_;
+  std::vector<Box3> facet_boxes_;
   bool convex_ = true;
 };
 
