@@ -26,6 +26,23 @@ Polyhedron cube_polyhedron() {
   return p;
 }
 
+Polyhedron prism_polyhedron(const std::vector<std::array<Rational, 2>>& p, const Rational& h) {
+  Polyhedron q;
+  const int n = static_cast<int>(p.size());
+  for (const Rational& z : {Rational(0), h})
+    for (const auto& v : p) q.vertices.push_back(P{v[0], v[1], z});
+  for (int i = 1; i + 1 < n; ++i) {
+    q.facets.push_back({0, i + 1, i});
+    q.facets.push_back({n, n + i, n + i + 1});
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    q.facets.push_back({i, j, n + j});
+    q.facets.push_back({i, n + j, n + i});
+  }
+  return q;
+}
+
 Polyhedron cube_cylinder_polyhedron(int segments) {
   // Per level z = 0 and z = 1: the arc's points from (0.5, 0) to (0, 0.5) (indices 0..n), then
   // (1, 0), (1, 1), (0, 1).

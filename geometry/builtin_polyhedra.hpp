@@ -8,12 +8,17 @@
 // midpoints stay exact doubles for about thirty halvings.
 #include "geometry/polyhedron.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
 namespace anisocert::geometry {
 
 Polyhedron cube_polyhedron();
+// The prism of height h over the counter-clockwise polygon p in z = 0, its end facets fanned from
+// p[0] (so p must be star-shaped from p[0]), every facet outward (the tests' and fuzz harnesses'
+// small polyhedra: boxes, a triangular prism, an L-shaped prism with a reflex ridge).
+Polyhedron prism_polyhedron(const std::vector<std::array<Rational, 2>>& p, const Rational& h);
 Polyhedron cube_cylinder_polyhedron(int segments = 16);
 
 // The built-in's name → its polyhedron; nullptr for another name.

@@ -25,32 +25,13 @@ using anisocert::geometry::Polyhedron;
 
 namespace {
 
-// The prism of height h over the counter-clockwise polygon p, fanned from p[0] (p star-shaped
-// from it), its facets outward.
-Polyhedron prism(const std::vector<std::array<Rational, 2>>& p, const Rational& h) {
-  Polyhedron q;
-  const int n = static_cast<int>(p.size());
-  for (const Rational& z : {Rational(0), h})
-    for (const auto& v : p) q.vertices.push_back({v[0], v[1], z});
-  for (int i = 1; i + 1 < n; ++i) {
-    q.facets.push_back({0, i + 1, i});
-    q.facets.push_back({n, n + i, n + i + 1});
-  }
-  for (int i = 0; i < n; ++i) {
-    const int j = (i + 1) % n;
-    q.facets.push_back({i, j, n + j});
-    q.facets.push_back({i, n + j, n + i});
-  }
-  return q;
-}
-
 Polyhedron shape(unsigned k, unsigned a, unsigned b, unsigned c) {
   const Rational w(1 + a % 4, 2), h(1 + b % 4, 2), d(1 + c % 4, 2);  // 1/2 … 2
   switch (k % 4) {
-    case 1: return prism({{0, 0}, {w, 0}, {w / 4, h}}, d);
-    case 2: return prism({{0, 0}, {w, 0}, {w, h / 2}, {w / 2, h / 2}, {w / 2, h}, {0, h}}, d);
+    case 1: return anisocert::geometry::prism_polyhedron({{0, 0}, {w, 0}, {w / 4, h}}, d);
+    case 2: return anisocert::geometry::prism_polyhedron({{0, 0}, {w, 0}, {w, h / 2}, {w / 2, h / 2}, {w / 2, h}, {0, h}}, d);
     case 3: return anisocert::geometry::cube_cylinder_polyhedron(4);
-    default: return prism({{0, 0}, {w, 0}, {w, h}, {0, h}}, d);
+    default: return anisocert::geometry::prism_polyhedron({{0, 0}, {w, 0}, {w, h}, {0, h}}, d);
   }
 }
 

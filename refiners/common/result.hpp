@@ -51,9 +51,22 @@ struct RefineResult : RunOutcome {
   std::vector<Insertion> trace;
 };
 
+// One insertion of a 3D run (issue 40), for the properties on traces: the point, the rule's
+// number, and for rules 2–5 the site whose star's tetrahedron was refined and that tetrahedron's
+// circumradius in its metric. `stand_in`: the tetrahedron's centroid, inserted because the point
+// picked lay outside Ω and encroached nothing (not LU's Refine(τ), so not bound by its lemmas).
+struct Insertion3 {
+  int rule;
+  predicates::Point3<double> p;
+  int site = -1;
+  double radius = 0;
+  bool stand_in = false;
+};
+
 // A 3D run (issue 40): the tetrahedral mesh, its boundary triangles declared.
 struct RefineResult3 : RunOutcome {
   geometry::Mesh3<double> mesh;
+  std::vector<Insertion3> trace;  // the insertions after Ω's vertices and the interior seeds, in order
 };
 
 }  // namespace anisocert::refiners::common

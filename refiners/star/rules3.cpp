@@ -50,12 +50,15 @@ Action3 first_rule3(int v, const StarSet3& stars, const common::Sites3& sites, c
     if (c.r2 > size2) consider(Rule::size, t);
   }
   if (best.rule != Rule::none) return best;
+  double largest = -1;
   for (std::size_t i = 0; i < s.link.size(); ++i) {
     if (!stars.in_domain(v, i)) continue;
     const auto& t = s.link[i];
     if (!stars.has_tetrahedron(t[0], {v, t[1], t[2]}) || !stars.has_tetrahedron(t[1], {v, t[0], t[2]}) ||
-        !stars.has_tetrahedron(t[2], {v, t[0], t[1]}))
-      return {Rule::inconsistency, t};
+        !stars.has_tetrahedron(t[2], {v, t[0], t[1]})) {
+      const double r2 = geometry::circumellipsoid(x[v], x[t[0]], x[t[1]], x[t[2]], M).r2;
+      if (r2 > largest) largest = r2, best = {Rule::inconsistency, t};
+    }
   }
   return best;
 }

@@ -136,7 +136,11 @@ class StarRefiner3 {
     r.mesh.vertices = sites_.points, r.mesh.metrics = sites_.metrics;
     r.mesh.triangles = boundary_faces(r.mesh.tetrahedra);
     for (const auto& t : r.mesh.triangles) r.faces_off_boundary += !boundary_.on_one_facet(t[0], t[1], t[2]);
-    r.consistent = r.consistent && r.faces_off_boundary == 0;
+    if (r.consistent && r.faces_off_boundary > 0) {
+      r.consistent = false;
+      stop_reason = "the stars are consistent, but " + std::to_string(r.faces_off_boundary) +
+                    " boundary faces of their tetrahedra lie in no plane of Ω's facets: the mesh does not conform to Ω there";
+    }
     r.subfacets = boundary_.subfacets().size();
     const common::Boundary3::RidgeAngles angles = boundary_.ridge_angles();
     r.ridges = angles.ridges, r.right_or_acute_ridges = angles.not_obtuse;
@@ -147,6 +151,7 @@ class StarRefiner3 {
     r.refinements = refinements_;
     r.boundary_splits = splits_;
     r.snap_splits = splits_ - rule1_splits_;
+    r.trace = trace_;
     return r;
   }
 
@@ -156,9 +161,10 @@ class StarRefiner3 {
   // neighbours; the surface level queues the subfacets q may encroach. reach2: the new star's
   // first search radius (squared, in its metric). split: the boundary edge q is the midpoint of
   // (cut before the stars are updated, which ask which facets hold q).
-  int insert(const Point3<double>& q, const Sym3<double>& Mq, Rule rule, double reach2,
+  int insert(const Point3<double>& q, const Sym3<double>& Mq, Rule rule, double reach2, const common::Insertion3& record,
              const common::Boundary3::Edge* split = nullptr) {
     ++counts_[static_cast<int>(rule)];
+    trace_.push_back(record);
     last_rule_ = rule;
     const int k = sites_.add(q, Mq);
     stars_.add(reach2);
@@ -196,7 +202,7 @@ class StarRefiner3 {
     const auto& a = sites_.points[e[0]];
     const double half2 = predicates::quadratic_form(Mq, q.x - a.x, q.y - a.y, q.z - a.z);
     ++splits_, rule1_splits_ += rule1;
-    insert(q, Mq, Rule::encroachment, 16 * half2, &e);
+    insert(q, Mq, Rule::encroachment, 16 * half2, {static_cast<int>(Rule::encroachment), q}, &e);
   }
 
   // Refine(τ) for the tetrahedron τ = (v, t) of S_v: Pick_valid, then Insert_or_snap.
@@ -230,19 +236,19 @@ class StarRefiner3 {
         split(*e);
         return;
       }
-      return add_refinement(v, act, p, Mg, c.r2);
+      return add_refinement(v, act, p, Mg, c.r2, true);
     }
-    add_refinement(v, act, p, Mp, c.r2);
+    add_refinement(v, act, p, Mp, c.r2, false);
   }
 
-  void add_refinement(int v, const Action3& act, const Point3<double>& p, const Sym3<double>& Mp, double r2) {
+  void add_refinement(int v, const Action3& act, const Point3<double>& p, const Sym3<double>& Mp, double r2, bool stand_in) {
     const common::Box3 here{p.x, p.x, p.y, p.y, p.z, p.z};
     if (!sites_.in(here).empty()) {
       stalled_ = "refining a tetrahedron of the star of site " + std::to_string(v) + " near " + common::point_text(p) +
                  " picked an existing site: the mesh there is finer than doubles resolve (" + rule_name(act.rule) + ")";
       return;
     }
-    insert(p, Mp, act.rule, 4 * r2);
+    insert(p, Mp, act.rule, 4 * r2, {static_cast<int>(act.rule), p, v, std::sqrt(r2), stand_in});
   }
 
   void enqueue(int v) {
@@ -262,6 +268,7 @@ class StarRefiner3 {
   std::size_t refinements_ = 0, splits_ = 0, rule1_splits_ = 0;
   std::string stalled_;
   std::vector<int> zone_, before_;
+  std::vector<common::Insertion3> trace_;
 };
 
 }  // namespace
