@@ -45,7 +45,6 @@ bool StarSet3::refresh(int v, double reach2) {
     for (int w : t) e.neighbours.push_back(w);
     const auto c = geometry::circumellipsoid(x[v], x[t[0]], x[t[1]], x[t[2]], M);
     const Point3<double> o{x[v].x + c.x[0], x[v].y + c.x[1], x[v].z + c.x[2]};
-    if (!(2 * std::sqrt(c.r2) <= limit)) fits = false;  // v is on the sphere: its far side is at 2r
     const common::Box3 b = std::isfinite(c.r2) ? common::metric_ball_box(o, M, c.r2) : domain_.bounding_box();
     zone = zone.empty() ? b
                         : common::Box3{std::min(zone.x0, b.x0), std::max(zone.x1, b.x1), std::min(zone.y0, b.y0),
@@ -58,6 +57,8 @@ bool StarSet3::refresh(int v, double reach2) {
                              (x[s[0]].z + x[s[1]].z + x[s[2]].z + x[s[3]].z) / 4};
       e.in_domain[i] = domain_.side(g) == common::Side::inside;
     }
+    // v is on the sphere: its far side is at 2r. Only the tetrahedra in Ω must fit.
+    if (e.in_domain[i] && !(2 * std::sqrt(c.r2) <= limit)) fits = false;
   }
   for (const auto& f : e.star.open)
     if (!boundary_.on_one_facet(v, f[0], f[1])) fits = false;

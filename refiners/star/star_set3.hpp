@@ -5,9 +5,12 @@
 // the sites within a reach and kept by Bowyer–Watson as sites are added (star_update3.hpp);
 // restricted to Ω: the tetrahedra whose centroid Ω holds (all of them when Ω is convex). A
 // conflict-zone index (the boxes of the M_v-circumspheres) finds the stars a new site may change.
-// The candidate search is floating point (a reach in M_v-distance): a star is accepted when every
-// circumsphere lies 10⁻⁴ inside the reach and every open face lies in the plane of one of Ω's
-// facets; the reach grows fourfold until then, or until it holds every site. Beyond such a face
+// The candidate search is floating point (a reach in M_v-distance): a star is accepted when the
+// circumsphere of every tetrahedron in Ω lies 10⁻⁴ inside the reach and every open face lies in
+// the plane of one of Ω's facets; the reach grows fourfold until then, or until it holds every
+// site. (Tetrahedra outside Ω, across a non-convex Ω's hollows, have large spheres and are no
+// part of the mesh: requiring them to fit too made the cube-cylinder's stars search far more
+// sites, 12.2 s for a run that now takes 9.6 s.) Beyond such a face
 // lies outside Ω when Ω is convex there; past a reflex ridge sites of Ω may lie beyond it out of
 // reach, and the conflict-zone index files the circumspheres only, not the half-spaces beyond the
 // open faces: for a non-convex Ω a star on ∂Ω may then miss tetrahedra, which would lie outside Ω
