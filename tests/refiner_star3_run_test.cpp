@@ -310,13 +310,14 @@ TEST(Boundary3, RidgeAnglesAreTheTransformedEuclideanAngles) {
 // other subfacet after x ↦ Fx, its centre solved here in rationals (Cramer, the test's own
 // determinant). Bisection alone breaks it under a sheared metric (the cascade of thin subfacets
 // that made UGAWG's linear field at h0 = 0.05 refine the cube's faces to 10⁻⁷, regression
-// `StarRefiner3.UgawgLinearAtH0_005IsCertified`); the subfacets also tile each face (their exact
-// areas in the face sum to 1).
+// `CliRefine3.UgawgLinearAtH0_005IsCertified`); the subfacets also tile each face (their exact
+// areas in the face sum to 1), and the edge Insert_or_snap splits for a point just inside a face
+// is LEPP's terminal edge in M's lengths.
 TEST(Boundary3, SplitsKeepEachPlaneDelaunayInAConstantMetric) {
   const common::Domain3 domain(anisocert::geometry::cube_polyhedron());
   std::mt19937 rng(40);
   std::uniform_int_distribution<int> diagonal(1, 4), off(-3, 3);
-  std::size_t checked = 0;
+  std::size_t checked = 0, lepp_checked = 0;
   for (int round = 0; round < 4; ++round) {
     const std::array<std::array<int, 3>, 3> F{{{diagonal(rng), off(rng), off(rng)}, {0, diagonal(rng), off(rng)}, {0, 0, diagonal(rng)}}};
     double m[3][3];
@@ -399,8 +400,37 @@ TEST(Boundary3, SplitsKeepEachPlaneDelaunayInAConstantMetric) {
     }
     ASSERT_EQ(area.size(), 6u);
     for (const auto& [face, doubled] : area) EXPECT_EQ(doubled, Rational(2));
+    // LEPP's order: a point just inside a face, away from its ridges, encroaches subfacets there;
+    // the edge Insert_or_snap splits for it, unless a ridge, is the longest in M (uᵀMu in
+    // rationals) of both subfacets holding it (Rivara's terminal edge), not the longest in
+    // Euclidean length (a mutant ordering by Euclidean length fails here).
+    for (int probe = 0; probe < 40; ++probe) {
+      std::uniform_real_distribution<double> middle(0.25, 0.75), depth(0.001, 0.01);
+      const int axis = probe % 3;
+      std::array<double, 3> c{middle(rng), middle(rng), middle(rng)};
+      c[axis] = probe % 2 ? depth(rng) : 1 - depth(rng);
+      const auto edge = boundary.snap({c[0], c[1], c[2]}, M, M);
+      ASSERT_TRUE(edge) << "a point 0.01 inside a face encroaches no subfacet";
+      std::vector<std::array<int, 3>> holding;
+      for (const auto& t : faces)
+        if (std::count(t.begin(), t.end(), (*edge)[0]) && std::count(t.begin(), t.end(), (*edge)[1])) holding.push_back(t);
+      ASSERT_EQ(holding.size(), 2u);
+      const auto& x = sites.points;
+      const int c0 = holding[0][0] + holding[0][1] + holding[0][2] - (*edge)[0] - (*edge)[1];
+      const int c1 = holding[1][0] + holding[1][1] + holding[1][2] - (*edge)[0] - (*edge)[1];
+      if (anisocert::predicates::orientation3(x[(*edge)[0]], x[(*edge)[1]], x[c0], x[c1]) != anisocert::Sign::zero) continue;  // a ridge
+      const auto length2 = [&](int a, int b) {
+        const auto u = minus(Fx(b), Fx(a));
+        return dot(u, u);  // (b − a)ᵀ M (b − a)
+      };
+      const Rational e2 = length2((*edge)[0], (*edge)[1]);
+      for (const auto& t : holding)
+        for (int i = 0; i < 3; ++i) EXPECT_LE(length2(t[i], t[(i + 1) % 3]), e2) << "round " << round << ", probe " << probe;
+      ++lepp_checked;
+    }
   }
   EXPECT_GT(checked, 1000u);
+  EXPECT_GE(lepp_checked, 4u);
 }
 
 // Pick_valid in 3D (LU Definitions 3.6 and 3.9; refiners/star/pick_valid3.hpp): the picking region
