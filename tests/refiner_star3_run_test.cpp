@@ -44,6 +44,29 @@ Rational R(double d) { return rational_from_double(d); }
 
 using anisocert::testing::determinant;
 
+// Rational vectors, and metrics M = FᵀF for integer upper-triangular F (the tests' own algebra).
+using Vec3 = std::array<Rational, 3>;
+using IntMatrix3 = std::array<std::array<int, 3>, 3>;
+
+Vec3 image(const IntMatrix3& F, const Point3<double>& q) {  // F q in rationals
+  const Vec3 p{R(q.x), R(q.y), R(q.z)};
+  Vec3 y{};
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) y[i] += Rational(F[i][k]) * p[k];
+  return y;
+}
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Rational dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Sym3<double> metric_of(const IntMatrix3& F) {  // FᵀF, exact in doubles (small integers)
+  double m[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      m[i][j] = 0;
+      for (int k = 0; k < 3; ++k) m[i][j] += F[k][i] * F[k][j];
+    }
+  return {m[0][0], m[0][1], m[0][2], m[1][1], m[1][2], m[2][2]};
+}
+
 Rational volume6(const Point3<double>& a, const Point3<double>& b, const Point3<double>& c, const Point3<double>& d) {
   return determinant({{R(b.x) - R(a.x), R(b.y) - R(a.y), R(b.z) - R(a.z)},
                       {R(c.x) - R(a.x), R(c.y) - R(a.y), R(c.z) - R(a.z)},
@@ -241,17 +264,10 @@ TEST(Boundary3, RidgeAnglesAreTheTransformedEuclideanAngles) {
     const common::Domain3 domain(shape);
     for (int round = 0; round < 12; ++round) {
       // F upper triangular: I, then diagonal, then sheared.
-      std::array<std::array<int, 3>, 3> F{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+      IntMatrix3 F{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
       if (round > 0) F = {{{diagonal(rng), 0, 0}, {0, diagonal(rng), 0}, {0, 0, diagonal(rng)}}};
       if (round > 3) F[0][1] = off(rng), F[0][2] = off(rng), F[1][2] = off(rng);
-      Sym3<double> M{};
-      double m[3][3];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          m[i][j] = 0;
-          for (int k = 0; k < 3; ++k) m[i][j] += F[k][i] * F[k][j];
-        }
-      M = {m[0][0], m[0][1], m[0][2], m[1][1], m[1][2], m[2][2]};
+      const Sym3<double> M = metric_of(F);
       anisocert::fields::MetricField3 field{"constant", {}, [M](double, double, double) { return M; }};
       common::Sites3 sites(domain, field);
       for (const auto& q : domain.vertices()) sites.add(q, M);
@@ -260,17 +276,7 @@ TEST(Boundary3, RidgeAnglesAreTheTransformedEuclideanAngles) {
       const auto angles = boundary.ridge_angles();
       // The brute force over the facets' edges.
       const auto& x = domain.vertices();
-      const auto Fx = [&](int v) {
-        std::array<Rational, 3> y{};
-        const std::array<Rational, 3> p{R(x[v].x), R(x[v].y), R(x[v].z)};
-        for (int i = 0; i < 3; ++i)
-          for (int k = 0; k < 3; ++k) y[i] += Rational(F[i][k]) * p[k];
-        return y;
-      };
-      const auto minus = [](const std::array<Rational, 3>& a, const std::array<Rational, 3>& b) {
-        return std::array<Rational, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-      };
-      const auto dot = [](const std::array<Rational, 3>& a, const std::array<Rational, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+      const auto Fx = [&](int v) { return image(F, x[v]); };
       std::map<std::array<int, 2>, std::vector<int>> at;
       const auto& facets = domain.facets();
       for (int f = 0; f < static_cast<int>(facets.size()); ++f)
@@ -319,14 +325,8 @@ TEST(Boundary3, SplitsKeepEachPlaneDelaunayInAConstantMetric) {
   std::uniform_int_distribution<int> diagonal(1, 4), off(-3, 3);
   std::size_t checked = 0, lepp_checked = 0;
   for (int round = 0; round < 4; ++round) {
-    const std::array<std::array<int, 3>, 3> F{{{diagonal(rng), off(rng), off(rng)}, {0, diagonal(rng), off(rng)}, {0, 0, diagonal(rng)}}};
-    double m[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        m[i][j] = 0;
-        for (int k = 0; k < 3; ++k) m[i][j] += F[k][i] * F[k][j];
-      }
-    const Sym3<double> M{m[0][0], m[0][1], m[0][2], m[1][1], m[1][2], m[2][2]};
+    const IntMatrix3 F{{{diagonal(rng), off(rng), off(rng)}, {0, diagonal(rng), off(rng)}, {0, 0, diagonal(rng)}}};
+    const Sym3<double> M = metric_of(F);
     anisocert::fields::MetricField3 field{"constant", {}, [M](double, double, double) { return M; }};
     common::Sites3 sites(domain, field);
     for (const auto& q : domain.vertices()) sites.add(q, M);
@@ -344,23 +344,14 @@ TEST(Boundary3, SplitsKeepEachPlaneDelaunayInAConstantMetric) {
       boundary.split(edge, k);
       boundary.site_added(k);
     }
-    const auto Fx = [&](int v) {
-      const auto& x = sites.points[v];
-      const std::array<Rational, 3> p{R(x.x), R(x.y), R(x.z)};
-      std::array<Rational, 3> y{};
-      for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k) y[i] += Rational(F[i][k]) * p[k];
-      return y;
-    };
-    const auto minus = [](const std::array<Rational, 3>& a, const std::array<Rational, 3>& b) {
-      return std::array<Rational, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-    };
-    const auto dot = [](const std::array<Rational, 3>& a, const std::array<Rational, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const auto Fx = [&](int v) { return image(F, sites.points[v]); };
     const auto faces = boundary.subfacets();
     std::map<std::array<int, 2>, std::vector<int>> at;
     for (int t = 0; t < static_cast<int>(faces.size()); ++t)
       for (int e = 0; e < 3; ++e) at[{std::min(faces[t][e], faces[t][(e + 1) % 3]), std::max(faces[t][e], faces[t][(e + 1) % 3])}].push_back(t);
-    for (const auto& [e, ts] : at) {
+    for (const auto& entry : at) {
+      const std::array<int, 2>& e = entry.first;
+      const std::vector<int>& ts = entry.second;
       ASSERT_EQ(ts.size(), 2u) << "the subfacets are a closed surface";
       const auto apex = [&](int t) {
         for (int w : faces[t])

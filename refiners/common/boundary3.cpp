@@ -216,7 +216,7 @@ void Boundary3::legalize(int a, int b, int m) {
   const Sym3<double>& M = sites_.metrics[m];
   std::vector<Edge> stack{{a, b}};
   while (!stack.empty()) {
-    const auto [p, q] = stack.back();
+    const int p = stack.back()[0], q = stack.back()[1];
     stack.pop_back();
     const auto it = edges_.find(key(p, q));
     if (it == edges_.end() || it->second.size() != 2) continue;
