@@ -232,6 +232,46 @@ TEST(MeshCertifier3, FiltersNeverChangeTheUniformVerdict) {
   EXPECT_GT(tied, 30u);
 }
 
+// Nearly flat tetrahedra in stretched metrics, where intervals cannot bound the circumcentre (the
+// determinant's enclosure holds 0: the certifier encloses the exact centre instead of testing
+// every vertex): a, b, c = the unit points on the axes and d = g ± 2⁻ᵏ (1, 1, 1), g = (1/3, 1/3, 1/3)
+// their centroid, k = 40 … 90 (1/3 is no double: intervals, whose determinant cancels in the
+// tilted plane), whose huge sphere's centre lies far beyond the plane, under diag(1, 1, s) for
+// s = 1 … 10⁴; other vertices at g + (1, 1, 1)/2ʲ on d's side (outside: the sphere rises about
+// 2⁻ᵏ there) or on both (inside beyond the plane), and one in the plane off the circle; and the
+// same in the plane z = 1/3 (a centre far along z, whose side a wrong enclosure would mistake). The verdict per tetrahedron is
+// brute_force's (a centre enclosed on the wrong side, or too small a box, loses the violations).
+TEST(MeshCertifier3, NearlyFlatTetrahedraInStretchedMetricsAreSearchedExactly) {
+  std::size_t violated = 0, clean = 0;
+  for (int k = 40; k <= 90; k += 10)
+    for (const int sign : {1, -1})
+      for (const Rational& s : {Rational(1), Rational(100), Rational(10000)})
+        for (const bool both_sides : {false, true})
+          for (const bool tilted : {true, false}) {
+        Mesh3 m;
+        const Rational third(1, 3), tiny = Rational(sign) / Rational(anisocert::Integer(1) << k);
+        const auto on_axis = [&](const Rational& h) { return tilted ? Point{third + h, third + h, third + h} : Point{third, third, third + h}; };
+        if (tilted) {
+          m.vertices = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, on_axis(tiny)};
+        } else {
+          m.vertices = {{0, 0, third}, {1, 0, third}, {0, 1, third}, on_axis(tiny)};
+        }
+        for (int j = 1; j <= 6; ++j) m.vertices.push_back(on_axis(Rational(both_sides && j % 2 ? -sign : sign) / Rational(1 << j)));
+        m.vertices.push_back(tilted ? Point{1, 1, -1} : Point{1, 1, third});
+        m.tetrahedra = {{0, 1, 2, 3}};
+        m.metrics.assign(m.vertices.size(), Sym3<Rational>{1, 0, 0, 1, 0, s});
+        Certify3Options o;
+        o.valid = false;
+        o.described_witnesses = 10;
+        const Certify3Report r = certify_mesh3(m, o);
+        const bool inside = brute_force(m)[0].inside;
+        EXPECT_EQ(!r.uniform_violations.empty(), inside) << "k " << k << ", sign " << sign << ", s " << s;
+        (inside ? violated : clean) += 1;
+          }
+  EXPECT_GT(violated, 0u);
+  EXPECT_GT(clean, 0u);
+}
+
 // The mean ratio of tetrahedra, 12 (3 V_M)^(2/3) / Σ ℓ_M², by hand: a Kuhn tetrahedron has
 // |D| = 1 (six volumes) and edges 1, 1, 1, √2, √2, √3 (Σ ℓ² = 10), so q³ = 432 / 1000 and
 // q = 0.7560 for M = I: a bound of 3/4 (27/64 < 432/1000) holds and 19/25 (6859/15625 > 432/1000)

@@ -155,7 +155,16 @@ std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::ar
   const predicates::Sym3<I>& M = m.metric[static_cast<std::size_t>(v)];
   const auto at = [&](std::size_t i) -> const predicates::Point3<I>& { return m.vertex[static_cast<std::size_t>(t[i])]; };
   const auto fast = static_circumellipsoid(m, t, v);
-  const auto c = fast ? *fast : geometry::circumellipsoid(at(0), at(1), at(2), at(3), M);  // an unsure determinant: the whole line
+  auto c = fast ? *fast : geometry::circumellipsoid(at(0), at(1), at(2), at(3), M);  // an unsure determinant: the whole line
+  if (!std::isfinite(c.r2.lo) || !std::isfinite(c.r2.hi) || c.r2.lo < 0) {
+    // Intervals could not bound the centre (a nearly flat tetrahedron, a stretched metric: the
+    // determinant's enclosure holds 0); the exact centre and radius, each enclosed, rather than
+    // every vertex as a candidate (a graded mesh of a million tetrahedra at 100 : 1 took hours).
+    const auto& q = m.mesh.vertices;
+    const auto exact = geometry::circumellipsoid(q[static_cast<std::size_t>(t[0])], q[static_cast<std::size_t>(t[1])], q[static_cast<std::size_t>(t[2])],
+                                                 q[static_cast<std::size_t>(t[3])], m.mesh.metrics[static_cast<std::size_t>(v)]);
+    c = {{enclose(exact.x[0]), enclose(exact.x[1]), enclose(exact.x[2])}, enclose(exact.r2)};
+  }
   const auto& x = c.x;
   const I& r2 = c.r2;
   if (!std::isfinite(r2.lo) || !std::isfinite(r2.hi) || r2.lo < 0) return std::nullopt;
