@@ -60,8 +60,17 @@ bool StarSet3::refresh(int v, double reach2) {
     // v is on the sphere: its far side is at 2r. Only the tetrahedra in Ω must fit.
     if (e.in_domain[i] && !(2 * std::sqrt(c.r2) <= limit)) fits = false;
   }
-  for (const auto& f : e.star.open)
-    if (!boundary_.on_one_facet(v, f[0], f[1])) fits = false;
+  // An open face must lie in one of Ω's facet planes when its tetrahedron is in Ω (Ω convex: all).
+  for (const auto& f : e.star.open) {
+    if (boundary_.on_one_facet(v, f[0], f[1])) continue;
+    bool owner_in_domain = convex_;
+    for (std::size_t i = 0; i < e.star.link.size() && !owner_in_domain; ++i) {
+      const auto& t = e.star.link[i];
+      for (int k = 0; k < 3; ++k)
+        if (t[k] == f[0] && t[(k + 1) % 3] == f[1]) owner_in_domain = e.in_domain[i];
+    }
+    if (owner_in_domain) fits = false;
+  }
   std::sort(e.neighbours.begin(), e.neighbours.end());
   e.neighbours.erase(std::unique(e.neighbours.begin(), e.neighbours.end()), e.neighbours.end());
   zones_.set(v, zone, sites_.grid);

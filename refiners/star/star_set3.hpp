@@ -8,9 +8,11 @@
 // The candidate search is floating point (a reach in M_v-distance): a star is accepted when the
 // circumsphere of every tetrahedron in Ω lies 10⁻⁴ inside the reach and every open face lies in
 // the plane of one of Ω's facets; the reach grows fourfold until then, or until it holds every
-// site. (Tetrahedra outside Ω, across a non-convex Ω's hollows, have large spheres and are no
-// part of the mesh: requiring them to fit too made the cube-cylinder's stars search far more
-// sites, 12.2 s for a run that now takes 9.6 s.) Beyond such a face
+// site; an open face of a tetrahedron outside Ω need not lie in a facet plane. (Tetrahedra
+// outside Ω, across a non-convex Ω's hollows, have large spheres, and the hull of the candidates
+// there is open anywhere; they are no part of the mesh. Requiring them to fit too made the
+// cube-cylinder's stars search across the hollow: under UGAWG's linear field at h0 = 0.05 a run
+// took 12.2 s, 5.6 s now, and its polar-1 field did not finish in 180 s, 43.6 s now, certified.) Beyond such a face
 // lies outside Ω when Ω is convex there; past a reflex ridge sites of Ω may lie beyond it out of
 // reach, and the conflict-zone index files the circumspheres only, not the half-spaces beyond the
 // open faces: for a non-convex Ω a star on ∂Ω may then miss tetrahedra, which would lie outside Ω
