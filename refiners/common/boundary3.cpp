@@ -1,5 +1,6 @@
 #include "refiners/common/boundary3.hpp"
 
+#include "predicates/dihedral.hpp"
 #include "predicates/encroachment3.hpp"
 #include "predicates/orientation3.hpp"
 #include "refiners/common/exact_split.hpp"
@@ -257,33 +258,25 @@ Boundary3::RidgeAngles Boundary3::ridge_angles() const {
       at[{std::min(a, b), std::max(a, b)}].push_back(f);
     }
   const auto& x = domain_.vertices();
-  const auto R = [](double d) { return rational_from_double(d); };
-  const auto normal = [&](int f) {  // (b − a) × (c − a), outward
-    const auto &a = x[facets[f][0]], &b = x[facets[f][1]], &c = x[facets[f][2]];
-    const Rational ux = R(b.x) - R(a.x), uy = R(b.y) - R(a.y), uz = R(b.z) - R(a.z);
-    const Rational vx = R(c.x) - R(a.x), vy = R(c.y) - R(a.y), vz = R(c.z) - R(a.z);
-    return std::array<Rational, 3>{uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+  const auto third = [&](int f, const Edge& e) {
+    for (int k : facets[f])
+      if (k != e[0] && k != e[1]) return k;
+    return -1;
   };
   RidgeAngles r;
   for (const auto& [e, fs] : at) {
     if (fs.size() != 2 || domain_.coplanar(fs[0], fs[1])) continue;
     ++r.ridges;
-    const int f = fs[0], g = fs[1];
-    int w = facets[g][0];
-    for (int k : facets[g])
-      if (k != e[0] && k != e[1]) w = k;
-    if (predicates::orientation3(x[facets[f][0]], x[facets[f][1]], x[facets[f][2]], x[w]) == Sign::positive) continue;  // reflex
-    const auto nf = normal(f), ng = normal(g);
+    const int f = fs[0], c = third(fs[0], e), d = third(fs[1], e);
+    if (predicates::orientation3(x[facets[f][0]], x[facets[f][1]], x[facets[f][2]], x[d]) == Sign::positive) continue;  // reflex
+    // Convex: Ω's angle at the ridge is the dihedral angle between the half-planes through c and
+    // d, not above 90° iff the sign of n_cᵀ adj(M) n_d is not negative (predicates/dihedral.hpp).
     for (int end : e) {
       const Sym3<double>& M = sites_.metrics[end];
-      const Rational m11 = R(M.m11), m12 = R(M.m12), m13 = R(M.m13), m22 = R(M.m22), m23 = R(M.m23), m33 = R(M.m33);
-      const std::array<std::array<Rational, 3>, 3> adj{{{m22 * m33 - m23 * m23, m13 * m23 - m12 * m33, m12 * m23 - m13 * m22},
-                                                        {m13 * m23 - m12 * m33, m11 * m33 - m13 * m13, m12 * m13 - m11 * m23},
-                                                        {m12 * m23 - m13 * m22, m12 * m13 - m11 * m23, m11 * m22 - m12 * m12}}};
-      Rational s = 0;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) s += nf[i] * adj[i][j] * ng[j];
-      if (s <= 0) {
+      const auto &a = x[e[0]], &b = x[e[1]];
+      if (predicates::filtered_sign<predicates::DihedralDotKernel>(std::array<double, 18>{
+              a.x, a.y, a.z, b.x, b.y, b.z, x[c].x, x[c].y, x[c].z, x[d].x, x[d].y, x[d].z, M.m11, M.m12, M.m13, M.m22, M.m23, M.m33}) !=
+          Sign::negative) {
         r.not_obtuse.push_back(e);
         break;
       }

@@ -81,8 +81,8 @@ class Boundary3 {
   // Ω's ridges (edges between facets not in one plane) and those whose interior dihedral angle is
   // not above 90° in the metric of one of its two ends, decided exactly: a reflex ridge (the other
   // facet's far vertex beyond the first facet's plane) is above 180°; a convex one is above 90°
-  // iff the outward normals make an acute angle in the dual metric, n_fᵀ M⁻¹ n_g > 0, the sign of
-  // n_fᵀ adj(M) n_g in rationals (sites 0 … n − 1 are Ω's vertices, with their metrics).
+  // iff its dihedral angle's cosine in M is negative (predicates/dihedral.hpp's DihedralDotKernel,
+  // the certifier's; sites 0 … n − 1 are Ω's vertices, with their metrics).
   struct RidgeAngles {
     std::size_t ridges = 0;
     std::vector<Edge> not_obtuse;  // the ridges' vertices, the lesser first, in order
