@@ -159,7 +159,8 @@ std::optional<Ellipsoid> enclose_ellipsoid(const EnclosedMesh3& m, const std::ar
   if (!std::isfinite(c.r2.lo) || !std::isfinite(c.r2.hi) || c.r2.lo < 0) {
     // Intervals could not bound the centre (a nearly flat tetrahedron, a stretched metric: the
     // determinant's enclosure holds 0); the exact centre and radius, each enclosed, rather than
-    // every vertex as a candidate (a graded mesh of a million tetrahedra at 100 : 1 took hours).
+    // every vertex as a candidate (a graded mesh of a million tetrahedra at 100 : 1 was still being
+    // certified after 20 minutes; 40 s since).
     const auto& q = m.mesh.vertices;
     const auto exact = geometry::circumellipsoid(q[static_cast<std::size_t>(t[0])], q[static_cast<std::size_t>(t[1])], q[static_cast<std::size_t>(t[2])],
                                                  q[static_cast<std::size_t>(t[3])], m.mesh.metrics[static_cast<std::size_t>(v)]);

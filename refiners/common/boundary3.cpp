@@ -25,11 +25,6 @@ Box3 diametral_box(const Point3<double>& a, const Point3<double>& b, const Point
   return metric_ball_box(o, M, 2 * r2);
 }
 
-Box3 hull(const Box3& p, const Box3& q) {
-  if (p.empty()) return q;
-  return {std::min(p.x0, q.x0), std::max(p.x1, q.x1), std::min(p.y0, q.y0), std::max(p.y1, q.y1), std::min(p.z0, q.z0), std::max(p.z1, q.z1)};
-}
-
 }  // namespace
 
 Boundary3::Boundary3(const Domain3& domain, const Sites3& sites) : domain_(domain), sites_(sites) {
@@ -50,7 +45,7 @@ int Boundary3::add_subfacet(const std::array<int, 3>& v, int facet) {
   for (int e = 0; e < 3; ++e) edges_[key(v[e], v[(e + 1) % 3])].push_back(id);
   const auto& x = sites_.points;
   Box3 box;
-  for (int w : v) box = hull(box, diametral_box(x[v[0]], x[v[1]], x[v[2]], sites_.metrics[w]));
+  for (int w : v) box = box.hull(diametral_box(x[v[0]], x[v[1]], x[v[2]], sites_.metrics[w]));
   boxes_.set(id, box, sites_.grid);
   queued_.push_back(false);
   enqueue(id);

@@ -46,8 +46,10 @@ bool in_coplanar_triangle(const Point3<double>& p, const Point3<double>& a, cons
   return false;  // abc collinear: excluded by polyhedron_defect
 }
 
-// Directions for the parity test: no two parallel, none in a coordinate plane.
-constexpr std::array<std::array<double, 3>, 8> directions{{{0.5377, 0.3193, 0.7801},
+// Directions for the parity test, no two parallel: first +x, whose segment's box is thin, so that
+// the facets' boxes dismiss nearly every facet; then eight in no coordinate plane.
+constexpr std::array<std::array<double, 3>, 9> directions{{{1, 0, 0},
+                                                           {0.5377, 0.3193, 0.7801},
                                                            {-0.2917, 0.8713, 0.3944},
                                                            {0.6611, -0.5419, 0.5189},
                                                            {-0.4427, -0.3359, -0.8311},
@@ -65,10 +67,6 @@ Box3 box_of(const std::vector<Point3<double>>& points) {
     b.z0 = std::min(b.z0, q.z), b.z1 = std::max(b.z1, q.z);
   }
   return b;
-}
-
-bool meet(const Box3& a, const Box3& b) {
-  return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1 && a.z0 <= b.z1 && b.z0 <= a.z1;
 }
 
 }  // namespace
@@ -127,13 +125,10 @@ Side Domain3::side(const Point3<double>& p) const {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     return static_cast<double>(state >> 11) * 0x1p-53 * 2 - 1;  // in [−1, 1)
   };
-  // First along +x: the segment's box is thin, and the facets' boxes dismiss nearly every facet (a
-  // closed segment and a closed triangle in disjoint boxes do not meet: no crossing to count).
-  for (int attempt = -1; attempt < 1008; ++attempt) {
-    std::array<double, 3> d = attempt < 0   ? std::array<double, 3>{1, 0, 0}
-                              : attempt < 8 ? directions[static_cast<std::size_t>(attempt)]
-                                            : std::array<double, 3>{next(), next(), next()};
-    if (attempt >= 8) {  // normalised so that the far point is beyond the box
+  // A closed segment and a closed triangle in disjoint boxes do not meet: no crossing to count.
+  for (std::size_t attempt = 0; attempt < directions.size() + 1000; ++attempt) {
+    std::array<double, 3> d = attempt < directions.size() ? directions[attempt] : std::array<double, 3>{next(), next(), next()};
+    if (attempt >= directions.size()) {  // normalised so that the far point is beyond the box
       const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       if (!(n > 0.1)) continue;
       d = {d[0] / n, d[1] / n, d[2] / n};
@@ -142,7 +137,7 @@ Side Domain3::side(const Point3<double>& p) const {
     const Box3 segment = box_of({p, far});
     bool degenerate = false, odd = false;
     for (std::size_t f = 0; f < facets_.size(); ++f) {
-      if (!meet(segment, facet_boxes_[f])) continue;
+      if (!segment.meets(facet_boxes_[f])) continue;
       const auto& t = facets_[f];
       const auto &a = vertices_[t[0]], &b = vertices_[t[1]], &c = vertices_[t[2]];
       const Sign sp = predicates::orientation3(a, b, c, p), sf = predicates::orientation3(a, b, c, far);

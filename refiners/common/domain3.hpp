@@ -6,6 +6,7 @@
 #include "geometry/polyhedron.hpp"
 #include "refiners/common/errors.hpp"
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -22,6 +23,14 @@ struct Box3 {
     return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1 && p.z >= z0 && p.z <= z1;
   }
   bool empty() const { return x0 > x1; }
+  // Whether the two closed boxes share a point (exact: comparisons of doubles).
+  bool meets(const Box3& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1 && z0 <= o.z1 && o.z0 <= z1; }
+  // The least box holding both (either may be empty).
+  Box3 hull(const Box3& o) const {
+    if (empty()) return o;
+    if (o.empty()) return *this;
+    return {std::min(x0, o.x0), std::max(x1, o.x1), std::min(y0, o.y0), std::max(y1, o.y1), std::min(z0, o.z0), std::max(z1, o.z1)};
+  }
 };
 
 // "(x, y, z)" with the shortest decimals that read back as the doubles (for messages).

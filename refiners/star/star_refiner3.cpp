@@ -156,16 +156,16 @@ class StarRefiner3 {
   }
 
  private:
-  // Inserts q (its metric the field's at q): the stars whose conflict zone holds q change (LU
-  // Lemma 3.5), and so may their neighbours' consistency; queues them, the new star and its
-  // neighbours; the surface level queues the subfacets q may encroach. reach2: the new star's
+  // Inserts the record's point q (its metric Mq, the field's at q), kept in the trace: the stars
+  // whose conflict zone holds q change (LU Lemma 3.5), and so may their neighbours' consistency;
+  // queues them, the new star and its neighbours; the surface level queues the subfacets q may encroach. reach2: the new star's
   // first search radius (squared, in its metric). split: the boundary edge q is the midpoint of
   // (cut before the stars are updated, which ask which facets hold q).
-  int insert(const Point3<double>& q, const Sym3<double>& Mq, Rule rule, double reach2, const common::Insertion3& record,
-             const common::Boundary3::Edge* split = nullptr) {
-    ++counts_[static_cast<int>(rule)];
+  int insert(const common::Insertion3& record, const Sym3<double>& Mq, double reach2, const common::Boundary3::Edge* split = nullptr) {
+    const Point3<double>& q = record.p;
+    ++counts_[record.rule];
     trace_.push_back(record);
-    last_rule_ = rule;
+    last_rule_ = static_cast<Rule>(record.rule);
     const int k = sites_.add(q, Mq);
     stars_.add(reach2);
     queued_.push_back(false);
@@ -202,7 +202,7 @@ class StarRefiner3 {
     const auto& a = sites_.points[e[0]];
     const double half2 = predicates::quadratic_form(Mq, q.x - a.x, q.y - a.y, q.z - a.z);
     ++splits_, rule1_splits_ += rule1;
-    insert(q, Mq, Rule::encroachment, 16 * half2, {static_cast<int>(Rule::encroachment), q}, &e);
+    insert({static_cast<int>(Rule::encroachment), q}, Mq, 16 * half2, &e);
   }
 
   // Refine(τ) for the tetrahedron τ = (v, t) of S_v: Pick_valid, then Insert_or_snap.
@@ -248,7 +248,7 @@ class StarRefiner3 {
                  " picked an existing site: the mesh there is finer than doubles resolve (" + rule_name(act.rule) + ")";
       return;
     }
-    insert(p, Mp, act.rule, 4 * r2, {static_cast<int>(act.rule), p, v, std::sqrt(r2), stand_in});
+    insert({static_cast<int>(act.rule), p, v, std::sqrt(r2), stand_in}, Mp, 4 * r2);
   }
 
   void enqueue(int v) {

@@ -46,9 +46,7 @@ bool StarSet3::refresh(int v, double reach2) {
     const auto c = geometry::circumellipsoid(x[v], x[t[0]], x[t[1]], x[t[2]], M);
     const Point3<double> o{x[v].x + c.x[0], x[v].y + c.x[1], x[v].z + c.x[2]};
     const common::Box3 b = std::isfinite(c.r2) ? common::metric_ball_box(o, M, c.r2) : domain_.bounding_box();
-    zone = zone.empty() ? b
-                        : common::Box3{std::min(zone.x0, b.x0), std::max(zone.x1, b.x1), std::min(zone.y0, b.y0),
-                                       std::max(zone.y1, b.y1), std::min(zone.z0, b.z0), std::max(zone.z1, b.z1)};
+    zone = zone.hull(b);
     if (!convex_) {
       // Summed by increasing site, so that the tetrahedron's four stars round it alike.
       std::array<int, 4> s{v, t[0], t[1], t[2]};
