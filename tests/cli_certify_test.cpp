@@ -17,12 +17,7 @@ namespace fs = std::filesystem;
 
 const std::string peers = std::string(ANISOCERT_REGRESSIONS_DIR) + "/../formats/peers/";
 
-fs::path fresh(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("cli_certify_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh(const std::string& name) { return fresh_folder("cli_certify", name); }
 
 TEST(CliCertify, MetricChecksAsVerdictsOnARefinedMesh) {
   const fs::path d = fresh("refined");

@@ -18,12 +18,7 @@ namespace fs = std::filesystem;
 
 const std::string fixtures = std::string(ANISOCERT_REGRESSIONS_DIR) + "/../peers/fixtures/";
 
-fs::path fresh(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("cli_dual_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh(const std::string& name) { return fresh_folder("cli_dual", name); }
 
 std::string read(const fs::path& p) {
   std::ifstream in(p);
