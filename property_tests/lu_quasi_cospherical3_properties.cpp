@@ -333,8 +333,8 @@ TEST(LU_L311_3D, ShellFailsForSliversWhenBetaExceedsOne) {
 // least √2 apart (ε); each sliver with p is γ₀-cospherical (γ₀⁴ − 1 = 2⁻⁸, exact), its
 // Definition 3.9 radius is the sliver's own (≈ 1 < βr_τ = 3/2) and its radius-edge ratio below
 // ρ₀ = 3/4, yet its sites are 10 or more from p. More slivers farther out (h smaller) add more
-// configurations: their number is bounded by no packing of the ball of radius 2βr_τ, and no
-// K(ρ₀, β) bounds it.
+// configurations: their number is bounded by no packing of the ball of radius 2βr_τ; it grows
+// with how far Ω reaches in units of ε, which no constant K(ρ₀, β) bounds (argued, not tested).
 TEST(LU_L314_3D, ConfigurationsReachFartherThanTwoBetaRTau) {
   const double k = 0x1p-8, h = 0x1p-24;
   const Sym3<double> I{1, 0, 0, 1, 0, 1};

@@ -1,0 +1,268 @@
+"""anisocert: exact certification of anisotropic triangle and tetrahedral meshes (docs/python.md).
+
+    import anisocert
+    report = anisocert.certify(points, cells, metrics, rho0="3")
+    report.holds, report.valid.holds, report.metric.unit_edges, report.svg()
+
+Every number is exact: a float is the rational it is, a ``fractions.Fraction`` or an ``int`` is
+itself, a string is the decimal or fraction it spells ("0.1" is 1/10). Nothing is rounded on the
+way. The checks and the report are ``anisocert certify``'s (the same C++ code, the same JSON).
+Bad input raises ``ValueError`` with one line naming what is wrong and where.
+"""
+
+import decimal
+import fractions
+import json
+import numbers
+
+import numpy as np
+
+from . import _anisocert
+
+__all__ = ["certify", "certify_meshio", "read", "Mesh", "Report"]
+
+
+class Mesh:
+    """A mesh as `read` returns it: points (n, 2) or (n, 3), cells (m, 3) triangles or (m, 4)
+    tetrahedra, metrics (n, 3) or (n, 6) or None, the declared edges (2D) or boundary triangles
+    (3D). Numbers are float64 arrays when every one is a double, else object arrays of Fractions."""
+
+    def __init__(self, points, cells, metrics=None, edges=None, triangles=None, metric_source=""):
+        self.points, self.cells, self.metrics = points, cells, metrics
+        self.edges, self.triangles, self.metric_source = edges, triangles, metric_source
+
+    @property
+    def dimension(self):
+        return self.points.shape[1]
+
+    def __repr__(self):
+        kind = "triangles" if self.dimension == 2 else "tetrahedra"
+        metric = "with metrics" if self.metrics is not None else "no metric"
+        return f"<anisocert.Mesh: {len(self.points)} vertices, {len(self.cells)} {kind}, {metric}>"
+
+
+def _token(x, where):
+    """The exact text of one number (parse_input_number reads it back exactly)."""
+    if isinstance(x, (bool, np.bool_)):
+        raise ValueError(f"{where}: {x!r} is not a number")
+    if isinstance(x, str):
+        return x.strip()
+    if isinstance(x, numbers.Integral):
+        return str(int(x))
+    if isinstance(x, fractions.Fraction):
+        return f"{x.numerator}/{x.denominator}"
+    if isinstance(x, decimal.Decimal):
+        if not x.is_finite():
+            raise ValueError(f"{where}: {x} is not finite")
+        return str(x)
+    if isinstance(x, (float, np.floating)):
+        if not np.isfinite(x):
+            raise ValueError(f"{where}: {x} is not finite")
+        n, d = x.as_integer_ratio()
+        return f"{n}/{d}"
+    raise ValueError(f"{where}: {type(x).__name__} {x!r} is not a number (float, int, Fraction, Decimal or str)")
+
+
+def _numbers(a, what, columns):
+    """A float64 array (exact as it is) or rows of exact tokens, of shape (n, k), k in columns."""
+    if isinstance(a, np.ndarray) and a.dtype.kind == "f" and a.dtype.itemsize <= 8:
+        arr = a
+    else:
+        arr = np.asarray(a, dtype=object) if not isinstance(a, np.ndarray) else a
+        if arr.dtype.kind in "iu" and (arr.size == 0 or np.abs(arr).max() <= 2**53):
+            arr = arr.astype(np.float64)  # integers of at most 53 bits are doubles exactly
+    if arr.ndim != 2 or arr.shape[1] not in columns:
+        expected = " or ".join(f"(n, {c})" for c in columns)
+        raise ValueError(f"{what}: expected shape {expected}, got {tuple(arr.shape)}")
+    if arr.dtype.kind == "f":
+        return np.ascontiguousarray(arr, dtype=np.float64)
+    return [[_token(x, f"{what}[{i}][{j}]") for j, x in enumerate(row)] for i, row in enumerate(arr)]
+
+
+def _indices(a, what, k):
+    arr = np.asarray(a)
+    if arr.ndim != 2 or arr.shape[1] != k:
+        raise ValueError(f"{what}: expected shape (m, {k}), got {tuple(arr.shape)}")
+    if arr.size and arr.dtype.kind not in "iu":
+        raise ValueError(f"{what}: expected integer indices, got {arr.dtype}")
+    return np.ascontiguousarray(arr, dtype=np.int64)
+
+
+def _symmetric(metrics, dimension):
+    """Metrics as (n, 3) [m11 m12 m22] in 2D or (n, 6) [m11 m12 m13 m22 m23 m33] in 3D, from those
+    or from full matrices ((n, d, d) or (n, d·d)), whose symmetry is checked exactly."""
+    arr = metrics if isinstance(metrics, np.ndarray) else np.asarray(metrics, dtype=object)
+    full = dimension * dimension
+    if arr.ndim == 3 and arr.shape[1:] == (dimension, dimension):
+        arr = arr.reshape(len(arr), full)
+    if arr.ndim == 2 and arr.shape[1] == full:
+        upper = [(i, j) for i in range(dimension) for j in range(i, dimension)]
+        for v in range(len(arr)):
+            for i, j in upper:
+                a, b = arr[v][i * dimension + j], arr[v][j * dimension + i]
+                if _exact_value(a, f"metrics[{v}]") != _exact_value(b, f"metrics[{v}]"):
+                    raise ValueError(f"metrics[{v}]: not symmetric (entry ({i + 1}, {j + 1}) is {a}, ({j + 1}, {i + 1}) is {b})")
+        arr = arr[:, [i * dimension + j for i, j in upper]]
+    return _numbers(arr, "metrics", [3] if dimension == 2 else [6])
+
+
+def _exact_value(x, where):
+    t = _token(x, where)
+    try:
+        return fractions.Fraction(t)
+    except (ValueError, ZeroDivisionError):
+        raise ValueError(f"{where}: {t!r} is not an exact number") from None
+
+
+def _bound(x, what):
+    return None if x is None else _token(x, what)
+
+
+def certify(points, cells=None, metrics=None, *, checks=None, rho0=None, gamma0=None, length_range=None,
+            min_quality=None, min_angle=None, edges=None, triangles=None, all_witnesses=False, threads=0,
+            progress=None, name="mesh"):
+    """Certifies a triangle mesh (points (n, 2), cells (m, 3)) or a tetrahedral one (points (n, 3),
+    cells (m, 4)), as ``anisocert certify`` does: valid, locally uniform, edge lengths and qualities
+    in the metrics (one per vertex: 2D (n, 3) m11 m12 m22 or (n, 2, 2); 3D (n, 6) m11 m12 m13 m22
+    m23 m33 or (n, 3, 3)), with the bounds given (rho0, gamma0, length_range=(a, b), min_quality,
+    min_angle) decided exactly. ``points`` may also be a Mesh from `read`. ``edges`` (2D) are the
+    declared boundary edges, ``triangles`` (3D) the declared boundary triangles. ``progress`` is
+    called with progress lines. Returns a Report; ``report.holds`` is the verdict."""
+    if isinstance(points, Mesh):
+        mesh = points
+        points, cells = mesh.points, mesh.cells
+        metrics = mesh.metrics if metrics is None else metrics
+        edges = mesh.edges if edges is None else edges
+        triangles = mesh.triangles if triangles is None else triangles
+    if cells is None:
+        raise ValueError("cells: missing (give the triangles or tetrahedra)")
+    pts = _numbers(points, "points", [2, 3])
+    dimension = pts.shape[1] if isinstance(pts, np.ndarray) else len(pts[0]) if pts else np.asarray(points).shape[1]
+    bounds = {"rho0": rho0, "gamma0": gamma0, "min_quality": min_quality, "min_angle": min_angle}
+    if metrics is None and (any(v is not None for v in bounds.values()) or length_range is not None or
+                            (checks is not None and ("uniform" in checks or "metric" in checks))):
+        raise ValueError(f"{name}: has no metric, which the requested checks and bounds need (give metrics)")
+    options = {k: _bound(v, k) for k, v in bounds.items()}
+    if length_range is not None:
+        if len(length_range) != 2:
+            raise ValueError("length_range: expected (low, high)")
+        options["length_lo"], options["length_hi"] = _bound(length_range[0], "length_range"), _bound(length_range[1], "length_range")
+    if checks is not None:
+        options["checks"] = [checks] if isinstance(checks, str) else list(checks)
+    options["all_witnesses"], options["threads"] = bool(all_witnesses), int(threads)
+    m = None if metrics is None else _symmetric(metrics, dimension)
+    if dimension == 2:
+        native = _anisocert.certify2(pts, _indices(cells, "cells", 3), m,
+                                     None if edges is None else _indices(edges, "edges", 2), options, progress)
+    else:
+        native = _anisocert.certify3(pts, _indices(cells, "cells", 4), m,
+                                     None if triangles is None else _indices(triangles, "triangles", 3), options, progress)
+    return Report(native, name)
+
+
+def read(path, metric=None, format=None):
+    """Reads a mesh in any format ``anisocert certify`` reads (Medit, Gmsh, Triangle, FreeFem/BAMG,
+    TetGen, VTK .vtu, JSON), with per-vertex metrics from ``metric`` (a .sol, a .mtr) or the file's
+    own. Every number is the rational its text denotes."""
+    d = _anisocert.read(str(path), "" if metric is None else str(metric), "" if format is None else format)
+
+    def exact(x):
+        if x is None or isinstance(x, np.ndarray):
+            return x
+        return np.array([[fractions.Fraction(t) for t in row] for row in x], dtype=object)
+
+    return Mesh(exact(d["points"]), d["cells"], exact(d["metrics"]), d.get("edges"), d.get("triangles"), d["metric_source"])
+
+
+def certify_meshio(mesh, metric=None, **options):
+    """Certifies a meshio.Mesh: its tetrahedra if it has any, else its triangles (2D when the points
+    have two coordinates or every z is exactly 0); ``metric`` names the point data holding a metric
+    per vertex (2D: 3 or 4 components, 3D: 6 or 9, as `certify` takes them). Other keywords as for
+    `certify`."""
+    blocks = {}
+    for block in mesh.cells:
+        blocks.setdefault(block.type, []).append(np.asarray(block.data))
+    cells = lambda kind: np.concatenate(blocks[kind]) if kind in blocks else None  # noqa: E731
+    points = np.asarray(mesh.points)
+    tets, tris = cells("tetra"), cells("triangle")
+    metrics = None
+    if metric is not None:
+        if metric not in mesh.point_data:
+            raise ValueError(f"metric: no point data named {metric!r} (there are: {', '.join(mesh.point_data) or 'none'})")
+        metrics = np.asarray(mesh.point_data[metric])
+    if tets is not None:
+        if metrics is not None and metrics.ndim == 2 and metrics.shape[1] == 9:
+            metrics = metrics.reshape(len(metrics), 3, 3)
+        return certify(points, tets, metrics, triangles=tris, **options)
+    if tris is None:
+        raise ValueError("mesh: no triangles or tetrahedra")
+    if points.shape[1] == 3:
+        if np.any(points[:, 2] != 0):
+            raise ValueError("mesh: a triangle mesh with points off the plane z = 0 (anisocert certifies planar triangle meshes)")
+        points = points[:, :2]
+    if metrics is not None and metrics.ndim == 2 and metrics.shape[1] == 4:
+        metrics = metrics.reshape(len(metrics), 2, 2)
+    return certify(points, tris, metrics, edges=cells("line"), **options)
+
+
+class _View:
+    """Attribute access to a part of the JSON report (report.valid.holds)."""
+
+    def __init__(self, data):
+        self._data = data
+
+    def __getattr__(self, key):
+        try:
+            return _wrap(self._data[key])
+        except KeyError:
+            raise AttributeError(f"the report has no field {key!r} here (fields: {', '.join(self._data)})") from None
+
+    def __getitem__(self, key):
+        return _wrap(self._data[key])
+
+    def __contains__(self, key):
+        return key in self._data
+
+    def __dir__(self):
+        return list(self._data)
+
+    def to_dict(self):
+        return json.loads(json.dumps(self._data))
+
+    def __repr__(self):
+        return repr(self._data)
+
+
+def _wrap(x):
+    if isinstance(x, dict):
+        return _View(x)
+    if isinstance(x, list):
+        return [_wrap(v) for v in x]
+    return x
+
+
+class Report(_View):
+    """The certify report: the fields of ``anisocert certify --json`` (docs/cli.md) as attributes,
+    ``holds`` the verdict, ``text`` what the CLI prints, ``svg()`` its picture."""
+
+    def __init__(self, native, name="mesh"):
+        super().__init__(json.loads(native.json()))
+        self._native, self._name = native, name
+
+    @property
+    def text(self):
+        return self._native.text(self._name)
+
+    def svg(self, caption=None):
+        """The picture ``anisocert certify --svg`` draws, as SVG text."""
+        if caption is None:
+            caption = f"{self._name}: {'certified' if self._data['holds'] else 'not certified'}"
+        return self._native.svg(caption)
+
+    def __repr__(self):
+        d = self._data
+        cells = f"{d['triangles']} triangles" if "triangles" in d else f"{d['tetrahedra']} tetrahedra"
+        n = d.get("sites", d.get("vertices"))
+        parts = [f"{k} {'holds' if v['holds'] else 'fails'}" for k, v in d.items() if isinstance(v, dict) and "holds" in v]
+        verdict = "certified" if d["holds"] else "not certified"
+        return f"<anisocert.Report {self._name}: {n} vertices, {cells}: {verdict} ({', '.join(parts)})>"
