@@ -73,7 +73,7 @@ Mesh exact_mesh(const DoubleMesh& mesh);
 
 // A tetrahedral mesh (issue 39), with metrics (one per vertex) or its own; the same exceptions,
 // for a metric that is not positive definite (Sylvester's minors), a tetrahedron or triangle
-// naming no vertex, or a length range out of order.
+// naming no vertex, or a bound out of its range (as for triangles).
 Certificate3 certify(const Mesh3& mesh, const std::vector<Metric3>& metrics = {}, const Certify3Options& options = {});
 Certificate3 certify(const DoubleMesh3& mesh, const std::vector<DoubleMetric3>& metrics = {},
                      const Certify3Options& options = {});

@@ -65,8 +65,11 @@ void check_mesh(const Mesh& mesh) {
 }
 
 // The bounds as CertifyOptions holds them, checked as `anisocert certify` checks its options.
-io::BoundTexts bound_texts(const CertifyOptions& o) {
-  const auto fail = [](const std::string& what) { throw std::invalid_argument("CertifyOptions: " + what); };
+// The bounds' texts for the report, each bound checked in its range; `type` names the options
+// struct in messages (CertifyOptions, Certify3Options: the same bounds).
+template <class O>
+io::BoundTexts bound_texts(const O& o, const char* type) {
+  const auto fail = [type](const std::string& what) { throw std::invalid_argument(std::string(type) + ": " + what); };
   io::BoundTexts b;
   if (o.rho0) {
     if (*o.rho0 <= 0) fail("rho0 must be positive");
@@ -127,18 +130,13 @@ auto exact_metrics(const std::vector<D>& metrics, const char* what) {
   return e;
 }
 
-// What certify_mesh3 takes on trust: indices naming vertices; a length range in order.
-void check_mesh(const Mesh3& mesh, const Certify3Options& o) {
+// What certify_mesh3 takes on trust: indices naming vertices (the bounds: bound_texts).
+void check_mesh(const Mesh3& mesh) {
   const std::size_t n = mesh.vertices.size();
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
     for (int v : mesh.tetrahedra[t]) check_index(v, n, indexed("tetrahedra", t));
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int v : mesh.triangles[t]) check_index(v, n, indexed("triangles", t));
-  if (o.length_range && (o.length_range->first < 0 || o.length_range->first > o.length_range->second))
-    throw std::invalid_argument("Certify3Options: length_range: expected 0 <= low <= high");
-  if (o.min_quality && (*o.min_quality < 0 || *o.min_quality > 1)) throw std::invalid_argument("Certify3Options: min_quality must be in [0, 1]");
-  if ((o.length_range || o.min_quality) && !o.metric)
-    throw std::invalid_argument("Certify3Options: length_range and min_quality need the metric check (metric = true)");
 }
 
 }  // namespace
@@ -160,7 +158,7 @@ template struct CertificateOf<oracle::Certify3Report>;
 
 Certificate certify(const Mesh& mesh, const std::vector<Metric>& metrics, const CertifyOptions& options) {
   check_mesh(mesh);
-  const io::BoundTexts bounds = bound_texts(options);
+  const io::BoundTexts bounds = bound_texts(options, "CertifyOptions");
   if (!metrics.empty()) check_metrics(metrics, mesh.sites.size(), "metrics");
   else if (!mesh.metrics.empty()) check_metrics(mesh.metrics, mesh.sites.size(), "mesh.metrics");
   Mesh with_metrics;
@@ -223,7 +221,8 @@ std::vector<std::string> write_mesh(const Mesh& m, const std::string& path, cons
 }
 
 Certificate3 certify(const Mesh3& mesh, const std::vector<Metric3>& metrics, const Certify3Options& options) {
-  check_mesh(mesh, options);
+  check_mesh(mesh);
+  const io::BoundTexts bounds = bound_texts(options, "Certify3Options");
   if (!metrics.empty()) check_metrics(metrics, mesh.vertices.size(), "metrics");
   else if (!mesh.metrics.empty()) check_metrics(mesh.metrics, mesh.vertices.size(), "mesh.metrics");
   Mesh3 with_metrics;
@@ -232,10 +231,6 @@ Certificate3 certify(const Mesh3& mesh, const std::vector<Metric3>& metrics, con
     with_metrics.metrics = metrics;
   }
   const Mesh3& m = metrics.empty() ? mesh : with_metrics;
-  io::BoundTexts bounds;
-  if (options.length_range)
-    bounds.length_lo = to_exact_string(options.length_range->first), bounds.length_hi = to_exact_string(options.length_range->second);
-  if (options.min_quality) bounds.min_quality = to_exact_string(*options.min_quality);
   Certificate3 c;
   c.report = oracle::certify_mesh3(m, options);
   c.verdict = io::certify_verdict(c.report, options, m, bounds);

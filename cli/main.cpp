@@ -4,6 +4,7 @@
 
 #include "cli/command.hpp"
 #include "cli/usage_error.hpp"
+#include "io/input_error.hpp"
 #include "numbers/excerpt.hpp"
 
 #include <CLI/CLI.hpp>
@@ -30,6 +31,9 @@ int main(int argc, char** argv) {
     std::cerr << "anisocert: " << anisocert::excerpt(e.what(), 300) << " (see anisocert --help)\n";
     return 2;
   } catch (const anisocert::cli::UsageError& e) {
+    std::cerr << "anisocert: " << e.what() << "\n";
+    return 2;
+  } catch (const anisocert::io::InputError& e) {  // a file or a --field the io layer refused
     std::cerr << "anisocert: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

@@ -1,7 +1,7 @@
 #pragma once
 // A mesh file and its metrics as the commands that check a mesh take them (`certify`, `dual`):
 // the file in any format of io/formats/registry.hpp, its metric from the file itself, from
-// --metric FILE or from --field (cli/field_source.hpp), with the same options and messages.
+// --metric FILE or from --field (io/field_source.hpp), with the same options and messages.
 #include "io/formats/mesh_file.hpp"
 
 #include <CLI/CLI.hpp>

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -21,14 +20,6 @@ Rational parse_option(const std::string& name, const std::string& text) {
   } catch (const NumberSyntaxError& e) {
     throw UsageError(name + ": " + e.what());
   }
-}
-
-double option_double(const std::string& name, const std::string& text) {
-  const Rational q = parse_option(name, text);
-  const double d = q.convert_to<double>();
-  if (!std::isfinite(d)) throw UsageError(name + " " + quoted_excerpt(text) + " is beyond the range of doubles");
-  if (d == 0 && q != 0) throw UsageError(name + " " + quoted_excerpt(text) + " is below the range of doubles (it would read as 0)");
-  return d;
 }
 
 void emit(const std::string& text) {

@@ -19,9 +19,6 @@ using Json = nlohmann::ordered_json;
 // Parses the text of option `name` exactly, within the magnitudes anisocert reads
 // (parse_input_number), or throws UsageError naming the option and text.
 Rational parse_option(const std::string& name, const std::string& text);
-// The same, rounded to the nearest double (the type of refiner and field parameters); a value that
-// rounds to ±∞, or to 0 when it is not 0, is refused, naming the text as typed.
-double option_double(const std::string& name, const std::string& text);
 
 using io::as_printed;
 

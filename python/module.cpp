@@ -7,7 +7,17 @@
 // released; the caller's thread relays progress lines and checks for Ctrl-C every 0.1 s (on
 // KeyboardInterrupt the worker is left to finish on its own copy of the input, its result unused).
 #include "api/anisocert.hpp"
+#include "geometry/boundary_polygon.hpp"
+#include "geometry/builtin_polyhedra.hpp"
+#include "io/diagram_json.hpp"
+#include "io/field_source.hpp"
+#include "io/formats/polyhedron_file.hpp"
+#include "io/mesh_json.hpp"
+#include "io/reports/dual_report.hpp"
 #include "io/svg/certify_svg.hpp"
+#include "io/svg/diagram_svg.hpp"
+#include "oracle/diagram/mesh_dual.hpp"
+#include "refiners/registry.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -90,6 +100,13 @@ std::vector<std::array<int, K>> index_rows(const py::handle& o, const std::strin
       rows[i][j] = static_cast<int>(x);
     }
   return rows;
+}
+
+// A field's parameters, name=value (the CLI's --param).
+std::vector<std::string> param_texts(const py::dict& params) {
+  std::vector<std::string> t;
+  for (const auto& [k, v] : params) t.push_back(k.cast<std::string>() + "=" + v.cast<std::string>());
+  return t;
 }
 
 // The options dictionary the Python layer builds: checks (a list), bounds as exact texts,
@@ -201,7 +218,7 @@ using Result2 = Result<Mesh, oracle::CertifyReport>;
 using Result3 = Result<Mesh3, oracle::Certify3Report>;
 
 Result2 certify2(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const py::handle& edges,
-                 const py::dict& options, const py::object& progress) {
+                 const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
   const Options p = options_from(options);
   const Numbers x = exact_numbers(points, "points", 2);
   Mesh mesh;
@@ -213,6 +230,7 @@ Result2 certify2(const py::handle& points, const py::handle& triangles, const py
     const Numbers m = exact_numbers(metrics, "metrics", 3);
     for (std::size_t i = 0; i < m.rows; ++i) mesh.metrics.push_back({m(i, 0), m(i, 1), m(i, 2)});
   }
+  if (!field.empty()) mesh.metrics = io::metrics_at(io::field_source(field, param_texts(params)), field, mesh.sites);
   const auto o = oracle_options<CertifyOptions>(p);
   return interruptible<Result2>(
       [mesh = std::move(mesh), o](const auto& say) {
@@ -225,7 +243,7 @@ Result2 certify2(const py::handle& points, const py::handle& triangles, const py
 }
 
 Result3 certify3(const py::handle& points, const py::handle& tetrahedra, const py::handle& metrics, const py::handle& triangles,
-                 const py::dict& options, const py::object& progress) {
+                 const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
   const Options p = options_from(options);
   const Numbers x = exact_numbers(points, "points", 3);
   Mesh3 mesh;
@@ -236,6 +254,7 @@ Result3 certify3(const py::handle& points, const py::handle& tetrahedra, const p
     const Numbers m = exact_numbers(metrics, "metrics", 6);
     for (std::size_t i = 0; i < m.rows; ++i) mesh.metrics.push_back({m(i, 0), m(i, 1), m(i, 2), m(i, 3), m(i, 4), m(i, 5)});
   }
+  if (!field.empty()) mesh.metrics = io::metrics3_at(field, param_texts(params), mesh.vertices);
   const auto o = oracle_options<Certify3Options>(p);
   return interruptible<Result3>(
       [mesh = std::move(mesh), o](const auto& say) {
@@ -307,6 +326,199 @@ py::dict read_file(const std::string& path, const std::string& metric, const std
   return d;
 }
 
+
+// `anisocert dual`: is the mesh the dual of the exact D|Ω of its vertices (Ω the boundary of its
+// triangles)? The diagram's progress lines go to `progress`.
+struct DualResult {
+  Mesh mesh;
+  oracle::Diagram diagram;
+  oracle::MeshDual dual;
+};
+
+DualResult dual(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const std::string& field,
+                const py::dict& params, bool exact_only, int threads, const std::string& name, const py::object& progress) {
+  const Numbers x = exact_numbers(points, "points", 2);
+  Mesh mesh;
+  for (std::size_t i = 0; i < x.rows; ++i) mesh.sites.push_back({x(i, 0), x(i, 1)});
+  mesh.triangles = index_rows<3>(triangles, "cells");
+  if (!metrics.is_none()) {
+    const Numbers m = exact_numbers(metrics, "metrics", 3);
+    for (std::size_t i = 0; i < m.rows; ++i) mesh.metrics.push_back({m(i, 0), m(i, 1), m(i, 2)});
+  }
+  if (!field.empty()) mesh.metrics = io::metrics_at(io::field_source(field, param_texts(params)), field, mesh.sites);
+  if (mesh.triangles.empty()) throw std::invalid_argument(name + ": the mesh has no triangles");
+  if (mesh.metrics.empty()) throw std::invalid_argument(name + ": has no metric, which the diagram needs (give metrics or field)");
+  (void)certify(mesh, {}, [] {  // the API's checks of indices and metrics (one line each), nothing certified
+    CertifyOptions o;
+    o.valid = o.uniform = o.metric = false;
+    return o;
+  }());
+  Mesh sites;
+  sites.sites = mesh.sites, sites.metrics = mesh.metrics;
+  try {
+    sites.domain = geometry::boundary_polygon(mesh);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(name + ": " + e.what());
+  }
+  oracle::DiagramOptions o;
+  o.exact_only = exact_only, o.threads = threads;
+  return interruptible<DualResult>(
+      [mesh = std::move(mesh), sites = std::move(sites), o, name](const auto& say) mutable {
+        o.progress = say;
+        try {
+          oracle::Diagram d = oracle::compute_diagram(sites, o);
+          oracle::MeshDual m = oracle::compare_with_dual(d, mesh.triangles, 100);
+          return DualResult{mesh, std::move(d), std::move(m)};
+        } catch (const std::domain_error& e) {
+          throw std::invalid_argument(name + ": " + e.what());
+        }
+      },
+      progress);
+}
+
+// `anisocert diagram`: the exact D|Ω of sites with metrics, Ω a simple polygon.
+oracle::Diagram diagram(const py::handle& sites, const py::handle& metrics, const py::handle& domain, bool exact_only, int threads,
+                        const std::string& name, const py::object& progress) {
+  const Numbers x = exact_numbers(sites, "sites", 2), m = exact_numbers(metrics, "metrics", 3), c = exact_numbers(domain, "domain", 2);
+  Mesh in;
+  for (std::size_t i = 0; i < x.rows; ++i) in.sites.push_back({x(i, 0), x(i, 1)});
+  for (std::size_t i = 0; i < m.rows; ++i) in.metrics.push_back({m(i, 0), m(i, 1), m(i, 2)});
+  for (std::size_t i = 0; i < c.rows; ++i) in.domain.push_back({c(i, 0), c(i, 1)});
+  (void)certify(in, {}, [] {  // the API's checks: one metric per site, positive definite, a simple counter-clockwise domain
+    CertifyOptions o;
+    o.valid = o.uniform = o.metric = false;
+    return o;
+  }());
+  oracle::DiagramOptions o;
+  o.exact_only = exact_only, o.threads = threads;
+  return interruptible<oracle::Diagram>(
+      [in = std::move(in), o, name](const auto& say) mutable {
+        o.progress = say;
+        try {
+          return oracle::compute_diagram(in, o);
+        } catch (const std::domain_error& e) {
+          throw std::invalid_argument(name + ": " + e.what());
+        }
+      },
+      progress);
+}
+
+// `anisocert refine`: a refiner's run on a 2D domain ("square", a JSON domain file, or a polygon's
+// corners) or a 3D one (cube, cube-cylinder, a surface file); 3D runs certified as the CLI does.
+// Returns the mesh in doubles (the refiner's), the run's report lines, and for 3D the certificate.
+py::dict refine(const py::object& domain, const std::string& algo, const std::string& field, const py::dict& params,
+                const py::dict& parameters, const std::string& max_vertices, const std::string& max_seconds, unsigned seed,
+                const py::object& progress) {
+  const refiners::RefinerEntry* entry = refiners::find_refiner(algo);
+  if (!entry) {
+    std::string names;
+    for (const auto& n : refiners::refiner_names()) names += (names.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("algo: unknown refiner \"" + algo + "\" (" + names + ")");
+  }
+  refiners::ParameterValues values = entry->defaults();
+  for (const auto& [k, v] : parameters) {
+    const std::string key = k.cast<std::string>();
+    if (!values.count(key)) {
+      std::string names;
+      for (const auto& p : entry->parameters) names += (names.empty() ? "" : ", ") + p.name;
+      throw std::invalid_argument("parameter \"" + key + "\": not one of --algo " + algo + "'s (" + names + ")");
+    }
+    values[key] = io::option_double(key, v.cast<std::string>());
+  }
+  refiners::common::Budget budget;
+  if (!max_vertices.empty()) {
+    const Rational v = parse_input_number(max_vertices);
+    if (v < 1 || denominator(v) != 1 || v > Rational(std::numeric_limits<long>::max()))
+      throw std::invalid_argument("max_vertices " + max_vertices + ": expected a positive whole number");
+    budget.max_vertices = v.convert_to<std::size_t>();
+  }
+  if (!max_seconds.empty()) {
+    budget.max_seconds = io::option_double("max_seconds", max_seconds);
+    if (!(budget.max_seconds > 0)) throw std::invalid_argument("max_seconds " + max_seconds + ": expected a positive number");
+  }
+  const auto failing = [](const std::string& where) {
+    return [where](const std::exception& e) -> std::invalid_argument { return std::invalid_argument(where + e.what()); };
+  };
+  py::dict out;
+  const bool named = py::isinstance<py::str>(domain);
+  const std::string text = named ? domain.cast<std::string>() : "";
+  const bool three = named && (geometry::builtin_polyhedron(text) || text.ends_with(".off") || text.ends_with(".mesh") ||
+                               text.ends_with(".meshb") || text.ends_with(".msh"));
+  if (three) {
+    if (!entry->run3) throw std::invalid_argument("algo " + algo + " meshes polygons only: algo star meshes a 3D domain");
+    const geometry::Polyhedron polyhedron = geometry::builtin_polyhedron(text) ? *geometry::builtin_polyhedron(text) : io::read_polyhedron_file(text);
+    const std::string field_name = field.empty() ? "ugawg-linear" : field;
+    const fields::MetricField3 f = io::field3_source(field_name, param_texts(params));
+    const auto run = interruptible<refiners::Run3>(
+        [entry, polyhedron, f, values, budget, seed, text, failing](const auto& say) {
+          try {
+            const refiners::common::Domain3 d(polyhedron);
+            return entry->run3(d, f, values, budget, seed, say);
+          } catch (const refiners::common::DomainError& e) {
+            throw failing(text + ": ")(e);
+          } catch (const refiners::common::FieldError& e) {
+            throw failing("field: ")(e);
+          } catch (const refiners::ParameterError& e) {
+            throw failing("")(e);
+          }
+        },
+        progress);
+    const auto& m = run.result.mesh;
+    Mesh3 exact;
+    std::vector<std::vector<Rational>> p, g;
+    for (const auto& v : m.vertices) exact.vertices.push_back({Rational(v.x), Rational(v.y), Rational(v.z)});
+    for (const auto& M : m.metrics) exact.metrics.push_back({M.m11, M.m12, M.m13, M.m22, M.m23, M.m33});
+    exact.tetrahedra = m.tetrahedra, exact.triangles = m.triangles;
+    for (const auto& v : exact.vertices) p.push_back({v.x, v.y, v.z});
+    for (const auto& s : exact.metrics) g.push_back({s.m11, s.m12, s.m13, s.m22, s.m23, s.m33});
+    Certify3Options co;
+    co.rho0 = Rational(values.at("rho0")), co.gamma0 = Rational(values.at("gamma0")), co.metric = true;
+    out["points"] = to_python(p, 3), out["cells"] = to_python(m.tetrahedra), out["triangles"] = to_python(m.triangles);
+    out["metrics"] = to_python(g, 6);
+    out["certificate"] = interruptible<Result3>([exact, co](const auto&) { return Result3{exact, certify(exact, {}, co)}; }, progress);
+    out["consistent"] = run.result.consistent, out["stop_reason"] = run.result.stop_reason, out["lines"] = run.report;
+    out["dimension"] = 3;
+    return out;
+  }
+  io::DomainFile input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, {}};
+  if (named && text != "square") {
+    if (text.find_first_of("./") == std::string::npos)
+      throw std::invalid_argument("domain \"" + text + "\": no such built-in domain (square; in 3D: cube, cube-cylinder) and not a file name");
+    input = io::read_domain_file(text);
+  } else if (!named) {
+    const Numbers c = exact_numbers(domain, "domain", 2);
+    input.corners.clear();
+    for (std::size_t i = 0; i < c.rows; ++i) input.corners.push_back({c(i, 0), c(i, 1)});
+  }
+  const fields::MetricField f = io::field_source(field.empty() ? "shock" : field, param_texts(params)).field;
+  const std::string where = named ? text + ": " : "domain: ";
+  const auto run = interruptible<refiners::Run>(
+      [entry, input, f, values, budget, seed, where, failing](const auto& say) {
+        try {
+          const auto d = refiners::common::Domain::from_exact(input.corners, input.points, input.interior_segments);
+          return entry->run(d, f, values, budget, seed, say);
+        } catch (const refiners::common::DomainError& e) {
+          throw failing(where)(e);
+        } catch (const refiners::common::FieldError& e) {
+          throw failing("field: ")(e);
+        } catch (const refiners::ParameterError& e) {
+          throw failing("")(e);
+        }
+      },
+      progress);
+  const auto& m = run.result.mesh;
+  std::vector<std::vector<Rational>> p, g;
+  for (const auto& v : m.sites) p.push_back({Rational(v.x), Rational(v.y)});
+  for (const auto& M : m.metrics) g.push_back({Rational(M.m11), Rational(M.m12), Rational(M.m22)});
+  std::vector<std::array<int, 2>> segments;
+  for (const auto& e : m.segments) segments.push_back({e.first, e.second});
+  out["points"] = to_python(p, 2), out["cells"] = to_python(m.triangles), out["edges"] = to_python(segments);
+  out["metrics"] = to_python(g, 3);
+  out["consistent"] = run.result.consistent, out["stop_reason"] = run.result.stop_reason, out["lines"] = run.report;
+  out["dimension"] = 2;
+  return out;
+}
+
 }  // namespace
 }  // namespace anisocert::python
 
@@ -331,7 +543,20 @@ PYBIND11_MODULE(_anisocert, m) {
       .def("json", [](const Result3& r) { return r.certificate.json(); })
       .def("text", [](const Result3& r, const std::string& name) { return r.certificate.text(name); })
       .def("svg", [](const Result3& r, const std::string& caption) { return io::certify_svg(r.mesh, r.certificate.report, caption); });
+  py::class_<DualResult>(m, "Dual")
+      .def_property_readonly("is_dual", [](const DualResult& r) { return r.dual.is_dual(); })
+      .def_property_readonly("theorem7_disagreement", [](const DualResult& r) { return r.diagram.theorem7.disagreement; })
+      .def("json", [](const DualResult& r) { return io::dual_json(r.diagram, r.dual, "").dump(); })
+      .def("text", [](const DualResult& r, const std::string& name) { return io::dual_text(r.diagram, r.dual, name, ""); })
+      .def("svg", [](const DualResult& r, const std::string& caption) { return io::dual_svg(r.mesh, r.diagram, r.dual, caption); });
+  py::class_<oracle::Diagram>(m, "Diagram")
+      .def_property_readonly("theorem7_disagreement", [](const oracle::Diagram& d) { return d.theorem7.disagreement; })
+      .def("json", [](const oracle::Diagram& d) { return io::diagram_json(d).dump(); })
+      .def("svg", [](const oracle::Diagram& d) { return io::diagram_svg(d); });
   m.def("certify2", &certify2);
   m.def("certify3", &certify3);
   m.def("read", &read_file);
+  m.def("dual", &dual);
+  m.def("diagram", &diagram);
+  m.def("refine", &refine);
 }

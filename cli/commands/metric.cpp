@@ -2,9 +2,9 @@
 // another mesher, so that a peer meshes for exactly the field anisocert certifies against (one
 // source of the formulas: fields/). At a mesh's vertices (a BAMG .mtr for FreeFem's adaptmesh, a
 // Medit .sol for MMG) or on a grid of a box (a Gmsh tensor view .pos, Gmsh's BAMG background).
-#include "cli/field_source.hpp"
 #include "cli/output.hpp"
 #include "cli/usage_error.hpp"
+#include "io/field_source.hpp"
 #include "io/formats/registry.hpp"
 
 #include <CLI/CLI.hpp>
@@ -79,13 +79,13 @@ int run_metric(const MetricOptions& o) {
     throw UsageError(e.what());
   }
   if (f.dimension == 3) {  // a built-in 3D field at a tetrahedral mesh's vertices
-    f.mesh3.metrics = metrics3_at(o.field, o.params, f.mesh3.vertices);
+    f.mesh3.metrics = io::metrics3_at(o.field, o.params, f.mesh3.vertices);
   } else {
-    FieldSource source = field_source(o.field, o.params);
+    io::FieldSource source = io::field_source(o.field, o.params);
     // A file holds decimals or doubles, and a background mesh's exact P1 values are rationals with
     // no finite decimal expansion in general: every field is written at its doubles.
     source.background = nullptr;
-    f.mesh.metrics = metrics_at(source, o.field, f.mesh.sites);
+    f.mesh.metrics = io::metrics_at(source, o.field, f.mesh.sites);
   }
   const std::vector<OutputFile> files = output_files(o, f);
   write_files_atomically(files);

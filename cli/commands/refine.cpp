@@ -1,13 +1,13 @@
 // `anisocert refine --algo NAME`: a refiner of the registry (refiners/registry.hpp) on a domain and a
-// metric field (cli/field_source.hpp: a built-in field or a background mesh); writes the mesh for
+// metric field (io/field_source.hpp: a built-in field or a background mesh); writes the mesh for
 // `anisocert certify`, Medit .mesh/.sol and SVG.
 #include "cli/diagram_job.hpp"
-#include "cli/field_source.hpp"
 #include "cli/output.hpp"
 #include "cli/reports/refine_report.hpp"
 #include "cli/usage_error.hpp"
 #include "fields/registry.hpp"
 #include "geometry/builtin_polyhedra.hpp"
+#include "io/field_source.hpp"
 #include "io/formats/polyhedron_file.hpp"
 #include "io/reports/certify_report.hpp"
 #include "io/svg/certify_svg.hpp"
@@ -111,7 +111,7 @@ refiners::common::Budget budget_of(const RefineOptions& o) {
     b.max_vertices = v.convert_to<std::size_t>();
   }
   if (!o.max_seconds.empty()) {
-    b.max_seconds = option_double("--max-seconds", o.max_seconds);
+    b.max_seconds = io::option_double("--max-seconds", o.max_seconds);
     if (!(b.max_seconds > 0)) throw UsageError("--max-seconds " + quoted_excerpt(o.max_seconds) + ": expected a positive number");
   }
   return b;
@@ -160,7 +160,7 @@ int run_refine3(const RefineOptions& o, const refiners::RefinerEntry& entry, con
     }
   }
   const std::string field_name = o.field_option->count() > 0 ? o.field : "ugawg-linear";
-  const fields::MetricField3 field = field3_source(field_name, o.params);
+  const fields::MetricField3 field = io::field3_source(field_name, o.params);
   const auto progress = progress_printer(o.quiet);
   refiners::Run3 run;
   try {
@@ -224,7 +224,7 @@ int run_refine(const RefineOptions& o) {
   refiners::ParameterValues values;
   for (const auto& spec : entry->parameters)
     values[spec.name] = spec.flag                              ? double(o.flags.at(spec.name))
-                        : o.options.at(spec.name)->count() > 0 ? option_double("--" + spec.name, o.texts.at(spec.name))
+                        : o.options.at(spec.name)->count() > 0 ? io::option_double("--" + spec.name, o.texts.at(spec.name))
                                                                : o.values.at(spec.name);
   for (const auto& [name, option] : o.options)
     if (option->count() > 0 && !values.count(name))
@@ -253,7 +253,7 @@ int run_refine(const RefineOptions& o) {
       throw UsageError(e.what());
     }
   }
-  const fields::MetricField field = field_source(o.field, o.params).field;
+  const fields::MetricField field = io::field_source(o.field, o.params).field;
   const auto progress = progress_printer(o.quiet);
   refiners::Run run;
   try {
@@ -314,7 +314,7 @@ std::string description() {
   for (const auto& e : refiners::registered_refiners()) o << "--algo " << e.name << ": " << e.summary << "\n";
   o << "Fields (--field NAME, --param name=value; formulas in docs/refiners.md):\n";
   list_fields(o, fields::builtin_fields());
-  o << "  " << background_field_help << "\n";
+  o << "  " << io::background_field_help << "\n";
   o << "3D fields (with --domain cube, cube-cylinder or a surface FILE):\n";
   list_fields(o, fields::builtin_fields3());
   o << "Exit 0 when the refiner's output condition holds (star: all stars consistent), 1 when a budget or a stall\n"

@@ -19,7 +19,7 @@ import numpy as np
 
 from . import _anisocert
 
-__all__ = ["certify", "certify_meshio", "read", "Mesh", "Report"]
+__all__ = ["certify", "certify_meshio", "read", "dual", "diagram", "refine", "Mesh", "Report", "Refinement"]
 
 
 class Mesh:
@@ -118,17 +118,21 @@ def _bound(x, what):
     return None if x is None else _token(x, what)
 
 
-def certify(points, cells=None, metrics=None, *, checks=None, rho0=None, gamma0=None, length_range=None,
-            min_quality=None, min_angle=None, edges=None, triangles=None, all_witnesses=False, threads=0,
-            progress=None, name="mesh"):
+def certify(points, cells=None, metrics=None, *, field=None, params=None, checks=None, rho0=None, gamma0=None,
+            length_range=None, min_quality=None, min_angle=None, edges=None, triangles=None, all_witnesses=False,
+            threads=0, progress=None, name="mesh"):
     """Certifies a triangle mesh (points (n, 2), cells (m, 3)) or a tetrahedral one (points (n, 3),
     cells (m, 4)), as ``anisocert certify`` does: valid, locally uniform, edge lengths and qualities
     in the metrics (one per vertex: 2D (n, 3) m11 m12 m22 or (n, 2, 2); 3D (n, 6) m11 m12 m13 m22
     m23 m33 or (n, 3, 3)), with the bounds given (rho0, gamma0, length_range=(a, b), min_quality,
-    min_angle) decided exactly. ``points`` may also be a Mesh from `read`. ``edges`` (2D) are the
+    min_angle) decided exactly. Instead of ``metrics``, ``field`` names a built-in field (the CLI's
+    --field: "shock", "ugawg-linear", "background:MESH[:METRIC]", ...) with ``params`` (a dict, the
+    CLI's --param), evaluated at the vertices as the CLI does. ``points`` may also be a Mesh from `read`. ``edges`` (2D) are the
     declared boundary edges, ``triangles`` (3D) the declared boundary triangles. ``progress`` is
     called with progress lines. Returns a Report; ``report.holds`` is the verdict."""
     if isinstance(points, Mesh):
+        if cells is not None:
+            raise ValueError("cells: given beside a Mesh, which has its own (pass metrics=... by name)")
         mesh = points
         points, cells = mesh.points, mesh.cells
         metrics = mesh.metrics if metrics is None else metrics
@@ -139,7 +143,10 @@ def certify(points, cells=None, metrics=None, *, checks=None, rho0=None, gamma0=
     pts = _numbers(points, "points", [2, 3])
     dimension = pts.shape[1] if isinstance(pts, np.ndarray) else len(pts[0]) if pts else np.asarray(points).shape[1]
     bounds = {"rho0": rho0, "gamma0": gamma0, "min_quality": min_quality, "min_angle": min_angle}
-    if metrics is None and (any(v is not None for v in bounds.values()) or length_range is not None or
+    if metrics is not None and field is not None:
+        raise ValueError("metrics and field: give one metric source")
+    has_metric = metrics is not None or field is not None
+    if not has_metric and (any(v is not None for v in bounds.values()) or length_range is not None or
                             (checks is not None and ("uniform" in checks or "metric" in checks))):
         raise ValueError(f"{name}: has no metric, which the requested checks and bounds need (give metrics)")
     options = {k: _bound(v, k) for k, v in bounds.items()}
@@ -151,13 +158,73 @@ def certify(points, cells=None, metrics=None, *, checks=None, rho0=None, gamma0=
         options["checks"] = [checks] if isinstance(checks, str) else list(checks)
     options["all_witnesses"], options["threads"] = bool(all_witnesses), int(threads)
     m = None if metrics is None else _symmetric(metrics, dimension)
+    field, params = "" if field is None else str(field), _params(params)
     if dimension == 2:
         native = _anisocert.certify2(pts, _indices(cells, "cells", 3), m,
-                                     None if edges is None else _indices(edges, "edges", 2), options, progress)
+                                     None if edges is None else _indices(edges, "edges", 2), field, params, options, progress)
     else:
         native = _anisocert.certify3(pts, _indices(cells, "cells", 4), m,
-                                     None if triangles is None else _indices(triangles, "triangles", 3), options, progress)
+                                     None if triangles is None else _indices(triangles, "triangles", 3), field, params,
+                                     options, progress)
     return Report(native, name)
+
+
+def _params(params):
+    """A field's or a refiner's parameters as exact texts (the CLI's --param name=value)."""
+    if params is None:
+        return {}
+    if not isinstance(params, dict):
+        raise ValueError("params: expected a dict of name: value")
+    return {str(k): _token(v, f"params[{k!r}]") for k, v in params.items()}
+
+
+def _mesh_or_arrays(points, cells, metrics):
+    if isinstance(points, Mesh):
+        if cells is not None:
+            raise ValueError("cells: given beside a Mesh, which has its own (pass metrics=... by name)")
+        return points.points, points.cells, points.metrics if metrics is None else metrics
+    return points, cells, metrics
+
+
+def dual(points, cells=None, metrics=None, *, field=None, params=None, exact_only=False, threads=0, progress=None,
+         name="mesh"):
+    """Is the triangle mesh the dual of the exact anisotropic Voronoi diagram of its own vertices,
+    D|Ω with Ω the boundary of its triangles (``anisocert dual``)? Returns a DualReport:
+    ``is_dual``, the JSON's fields as attributes, ``text``, ``svg()``."""
+    points, cells, metrics = _mesh_or_arrays(points, cells, metrics)
+    if cells is None:
+        raise ValueError("cells: missing (give the triangles)")
+    if metrics is not None and field is not None:
+        raise ValueError("metrics and field: give one metric source")
+    m = None if metrics is None else _symmetric(metrics, 2)
+    native = _anisocert.dual(_numbers(points, "points", [2]), _indices(cells, "cells", 3), m,
+                             "" if field is None else str(field), _params(params), bool(exact_only), int(threads), name, progress)
+    return DualReport(native, name)
+
+
+def diagram(sites, metrics, domain, *, exact_only=False, threads=0, progress=None, name="sites"):
+    """The exact anisotropic Voronoi diagram of ``sites`` (k, 2) with ``metrics`` (k, 3) [or full],
+    restricted to the simple counter-clockwise polygon ``domain`` (c, 2) (``anisocert diagram``).
+    Returns a DiagramReport: the JSON's fields (docs/oracle.md) as attributes, ``svg()``."""
+    native = _anisocert.diagram(_numbers(sites, "sites", [2]), _symmetric(metrics, 2), _numbers(domain, "domain", [2]),
+                                bool(exact_only), int(threads), name, progress)
+    return DiagramReport(native)
+
+
+def refine(domain="square", field=None, algo="star", *, params=None, max_vertices=None, max_seconds=None, seed=1,
+           progress=None, **parameters):
+    """Runs a refiner (``anisocert refine``): ``algo`` star, ls or bwy; ``domain`` "square", a JSON
+    domain file or a polygon's corners (c, 2), or in 3D (algo star) "cube", "cube-cylinder" or a
+    closed surface file; ``field`` a built-in field (default: shock in 2D, ugawg-linear in 3D) with
+    ``params``; the refiner's parameters as keywords (rho0=3, gamma0=1.5, ...). Returns a
+    Refinement: points, cells, metrics (the refiner's doubles), edges (2D boundary) or triangles
+    (3D), ``consistent``, ``stop_reason``, the report ``lines``, and for 3D the ``certificate``."""
+    if not isinstance(domain, str):
+        domain = _numbers(domain, "domain", [2])
+    d = _anisocert.refine(domain, str(algo), "" if field is None else str(field), _params(params), _params(parameters),
+                          "" if max_vertices is None else _token(max_vertices, "max_vertices"),
+                          "" if max_seconds is None else _token(max_seconds, "max_seconds"), int(seed), progress)
+    return Refinement(d)
 
 
 def read(path, metric=None, format=None):
@@ -239,6 +306,61 @@ def _wrap(x):
     if isinstance(x, list):
         return [_wrap(v) for v in x]
     return x
+
+
+class Refinement(Mesh):
+    """A refiner's run: its mesh (a Mesh, numbers the refiner's doubles), ``consistent`` (the run
+    finished and its output condition holds), ``stop_reason``, ``lines`` (the CLI's report), and for
+    a 3D run ``certificate`` (a Report: the exact 3D certifier's, as the CLI prints it)."""
+
+    def __init__(self, d):
+        super().__init__(d["points"], d["cells"], d["metrics"], d.get("edges"), d.get("triangles"), "the refiner")
+        self.consistent, self.stop_reason, self.lines = d["consistent"], d["stop_reason"], d["lines"]
+        self.certificate = Report(d["certificate"], "the run's mesh") if "certificate" in d else None
+
+    @property
+    def text(self):
+        return "\n".join(self.lines) + "\n"
+
+    def __repr__(self):
+        kind = "triangles" if self.dimension == 2 else "tetrahedra"
+        return f"<anisocert.Refinement: {len(self.points)} vertices, {len(self.cells)} {kind}; {self.stop_reason}>"
+
+
+class DualReport(_View):
+    """``anisocert dual``'s report: the fields of its --json as attributes, ``is_dual``, ``text``, ``svg()``."""
+
+    def __init__(self, native, name):
+        super().__init__(json.loads(native.json()))
+        self._native, self._name = native, name
+
+    @property
+    def is_dual(self):
+        return self._native.is_dual
+
+    @property
+    def text(self):
+        return self._native.text(self._name)
+
+    def svg(self, caption=None):
+        return self._native.svg(caption or f"{self._name}: {'the dual of D|Ω' if self.is_dual else 'not the dual of D|Ω'}")
+
+    def __repr__(self):
+        return f"<anisocert.DualReport {self._name}: {'the dual' if self.is_dual else 'not the dual'} of D|Ω>"
+
+
+class DiagramReport(_View):
+    """``anisocert diagram``'s JSON (docs/oracle.md) as attributes, and ``svg()``."""
+
+    def __init__(self, native):
+        super().__init__(json.loads(native.json()))
+        self._native = native
+
+    def svg(self):
+        return self._native.svg()
+
+    def __repr__(self):
+        return f"<anisocert.DiagramReport: {', '.join(f'{k}' for k in list(self._data)[:6])}, ...>"
 
 
 class Report(_View):

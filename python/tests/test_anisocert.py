@@ -206,3 +206,85 @@ def test_interrupt_stops_a_long_call():
     with pytest.raises(KeyboardInterrupt):
         anisocert.certify(points, cells, metrics)
     assert time.monotonic() - start < 2.5  # the whole call takes about 4 s on one core
+
+
+def test_field_as_the_cli(tmp_path):
+    mesh = PEERS / "gmsh-lshape-shock-coarse.msh"
+    expected = cli_report(mesh, None, tmp_path, "--field", "shock", "--param", "h=0.1")
+    report = anisocert.certify(anisocert.read(mesh), field="shock", params={"h": "0.1"})
+    assert without_source(report.to_dict()) == without_source(expected)
+    box = PEERS / "gmsh-box-h0.3.msh"
+    expected3 = cli_report(box, None, tmp_path, "--field", "ugawg-linear", "--param", "h0=0.05")
+    report3 = anisocert.certify(anisocert.read(box), field="ugawg-linear", params={"h0": 0.05})
+    assert without_source(report3.to_dict()) == without_source(expected3)
+    with pytest.raises(ValueError, match="give one metric source"):
+        anisocert.certify(anisocert.read(box), metrics=np.ones((339, 6)), field="ugawg-linear")
+    with pytest.raises(ValueError, match="cells: given beside a Mesh"):
+        anisocert.certify(anisocert.read(box), np.ones((339, 6)))
+
+
+def test_refine_dual_as_the_cli(tmp_path):
+    out = tmp_path / "bwy.mesh"
+    r = subprocess.run([BIN, "refine", "--algo", "bwy", "--field", "shock", "--param", "alpha=3", "--quiet", "-o", str(out)],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    run = anisocert.refine("square", "shock", "bwy", params={"alpha": 3})
+    written = anisocert.read(out)
+    assert run.consistent and np.array_equal(run.points, written.points) and np.array_equal(run.cells, written.cells)
+    assert np.array_equal(run.metrics, written.metrics)
+    assert [line for line in run.lines if " s (" not in line] == [line for line in r.stdout.splitlines()[1:] if line.startswith("  ") and " s (" not in line and "mesh:" not in line]
+    d = subprocess.run([BIN, "dual", str(out), "--quiet", "--json", str(tmp_path / "dual.json")], capture_output=True, text=True)
+    assert d.returncode == 0, d.stderr
+    lines = []
+    report = anisocert.dual(written, progress=lines.append)
+    expected = json.loads((tmp_path / "dual.json").read_text())
+    got = report.to_dict()
+    for d in (got, expected):  # the time taken, and the metric file's name the module is not given
+        d.pop("seconds"), d["input"].pop("metric_source")
+    assert report.is_dual and got == expected
+    assert lines  # the diagram's progress lines
+    assert report.svg().lstrip().startswith("<")
+
+
+def test_refine_3d_is_certified_as_the_cli(tmp_path):
+    out, js = tmp_path / "cube.mesh", tmp_path / "cube.json"
+    args = ["--algo", "star", "--domain", "cube", "--field", "constant", "--param", "m11=25", "--param", "m22=25", "--param", "m33=25"]
+    r = subprocess.run([BIN, "refine", *args, "--quiet", "-o", str(out), "--json", str(js)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    run = anisocert.refine("cube", "constant", params={"m11": 25, "m22": 25, "m33": 25})
+    assert run.consistent and run.certificate.holds
+    written = anisocert.read(out)
+    assert np.array_equal(run.points, written.points) and np.array_equal(run.cells, written.cells)
+    assert without_source(run.certificate.to_dict()) == without_source(json.loads(js.read_text()))
+
+
+def test_diagram_as_the_cli(tmp_path):
+    source = SOURCE / "tests" / "regressions" / "site-on-domain-corner-called-orphan" / "input.json"
+    spec = json.loads(source.read_text())
+    r = subprocess.run([BIN, "diagram", str(source), "--quiet", "--json", str(tmp_path / "d.json")], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    report = anisocert.diagram([[s["x"], s["y"]] for s in spec["sites"]], [s["metric"] for s in spec["sites"]], spec["domain"])
+    got, expected = report.to_dict(), json.loads((tmp_path / "d.json").read_text())
+    for d in (got, expected):
+        d.pop("stats")  # the filters' work counts and times, which depend on the threads
+    assert got == expected
+    assert report.svg().lstrip().startswith("<")
+
+
+@pytest.mark.parametrize("call,message", [
+    (lambda: anisocert.refine(algo="nope"), 'algo: unknown refiner "nope"'),
+    (lambda: anisocert.refine(rho0="x"), "rho0"),
+    (lambda: anisocert.refine(colour=1), 'parameter "colour": not one of'),
+    (lambda: anisocert.refine("triangle"), 'domain "triangle": no such built-in domain'),
+    (lambda: anisocert.refine([[0, 0], [1, 0], [1, 1], [2, 0.5]]), "domain"),
+    (lambda: anisocert.refine(field="nope"), "nope"),
+    (lambda: anisocert.refine(max_vertices="1.5"), "max_vertices 1.5: expected a positive whole number"),
+    (lambda: anisocert.dual(TRIANGLE[0], TRIANGLE[1]), "has no metric"),
+    (lambda: anisocert.diagram([[0, 0]], [[1, 0, 1]], [[0, 0], [0, 1], [1, 0]]), "domain"),
+    (lambda: anisocert.diagram([[0, 0], [1, 1]], [[1, 0, 1]], [[0, 0], [1, 0], [0, 1]]), "metrics: 1 metrics for 2 sites"),
+])
+def test_bad_input_to_dual_diagram_refine(call, message):
+    with pytest.raises(ValueError) as e:
+        call()
+    assert message in str(e.value)
+    assert "\n" not in str(e.value)

@@ -1,13 +1,27 @@
-#include "cli/field_source.hpp"
+#include "io/field_source.hpp"
 
-#include "cli/output.hpp"
-#include "cli/usage_error.hpp"
 #include "fields/background3.hpp"
 #include "fields/registry.hpp"
 #include "io/formats/registry.hpp"
 #include "numbers/excerpt.hpp"
 
-namespace anisocert::cli {
+#include <cmath>
+
+namespace anisocert::io {
+
+double option_double(const std::string& name, const std::string& text) {
+  Rational q;
+  try {
+    q = parse_input_number(text);
+  } catch (const NumberSyntaxError& e) {
+    throw InputError(name + ": " + e.what());
+  }
+  const double d = q.convert_to<double>();
+  if (!std::isfinite(d)) throw InputError(name + " " + quoted_excerpt(text) + " is beyond the range of doubles");
+  if (d == 0 && q != 0) throw InputError(name + " " + quoted_excerpt(text) + " is below the range of doubles (it would read as 0)");
+  return d;
+}
+
 namespace {
 
 constexpr std::string_view background_prefix = "background:";
@@ -17,9 +31,9 @@ fields::Parameters parameters_of(const std::vector<std::string>& params) {
   fields::Parameters p;
   for (const std::string& kv : params) {
     const auto eq = kv.find('=');
-    if (eq == std::string::npos) throw UsageError("--param " + quoted_excerpt(kv) + ": expected name=value");
+    if (eq == std::string::npos) throw InputError("--param " + quoted_excerpt(kv) + ": expected name=value");
     const std::string name = kv.substr(0, eq);
-    if (p.count(name)) throw UsageError("--param " + quoted_excerpt(name) + " is given twice");
+    if (p.count(name)) throw InputError("--param " + quoted_excerpt(name) + " is given twice");
     p[name] = option_double("--param " + excerpt(name), kv.substr(eq + 1));
   }
   return p;
@@ -31,9 +45,9 @@ io::MeshFile background_file(const std::string& text) {
   const auto colon = spec.find(':');
   const std::string mesh_path = spec.substr(0, colon), metric_path = colon == std::string::npos ? "" : spec.substr(colon + 1);
   if (mesh_path.empty() || (colon != std::string::npos && metric_path.empty()))
-    throw UsageError("--field " + quoted_excerpt(text) + ": expected background:MESH or background:MESH:METRIC");
+    throw InputError("--field " + quoted_excerpt(text) + ": expected background:MESH or background:MESH:METRIC");
   if (!metric_path.empty() && !io::has_metric_extension(metric_path))
-    throw UsageError("--field " + quoted_excerpt(text) + ": " + metric_path +
+    throw InputError("--field " + quoted_excerpt(text) + ": " + metric_path +
                      " is not a metric file (.sol, .solb, .mtr); a mesh whose own files hold its metrics (a Gmsh .msh with a metric view, a "
                      "Medit .mesh with its .sol beside it) is given alone: background:MESH");
   try {
@@ -41,21 +55,21 @@ io::MeshFile background_file(const std::string& text) {
     // points are 2D, and a z that is not 0 is still refused.
     io::MeshFile file = io::read_mesh_file(mesh_path, "", {true}, metric_path);
     if (file.dimension == 3 ? file.mesh3.metrics.empty() : file.mesh.metrics.empty())
-      throw UsageError(mesh_path + ": background mesh has no metric (give MESH:METRIC)");
+      throw InputError(mesh_path + ": background mesh has no metric (give MESH:METRIC)");
     return file;
   } catch (const io::InputError& e) {
-    throw UsageError(e.what());
+    throw InputError(e.what());
   }
 }
 
 FieldSource background_source(const std::string& text) {
   const io::MeshFile file = background_file(text);
-  if (file.dimension == 3) throw UsageError(text.substr(background_prefix.size()) + ": a tetrahedral mesh is no background for a 2D field");
+  if (file.dimension == 3) throw InputError(text.substr(background_prefix.size()) + ": a tetrahedral mesh is no background for a 2D field");
   try {
     auto mesh = std::make_shared<const fields::BackgroundMesh>(file.mesh);
     return {fields::background_field(mesh, text), mesh};
   } catch (const fields::BackgroundMeshError& e) {
-    throw UsageError(text.substr(background_prefix.size()) + ": " + e.what());
+    throw InputError(text.substr(background_prefix.size()) + ": " + e.what());
   }
 }
 
@@ -64,13 +78,13 @@ FieldSource background_source(const std::string& text) {
 FieldSource field_source(const std::string& text, const std::vector<std::string>& params) {
   const fields::Parameters given = parameters_of(params);
   if (text.starts_with(background_prefix)) {
-    if (!given.empty()) throw UsageError("--param: a background field has no parameters");
+    if (!given.empty()) throw InputError("--param: a background field has no parameters");
     return background_source(text);
   }
   try {
     return {fields::make_field(text, given), nullptr};
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--field: ") + e.what());
+    throw InputError(std::string("--field: ") + e.what());
   }
 }
 
@@ -113,10 +127,10 @@ auto sampled(const Field& field, const std::string& text, const P& p, std::size_
   try {
     m = exactly(evaluate(field, p));
   } catch (const std::invalid_argument& e) {  // fields::FieldError, or NumberSyntaxError (not finite)
-    throw UsageError("--field " + text + ": at vertex " + std::to_string(i) + ": " + e.what());
+    throw InputError("--field " + text + ": at vertex " + std::to_string(i) + ": " + e.what());
   }
   if (!predicates::positive_definite(m))
-    throw UsageError("--field " + text + ": at vertex " + std::to_string(i) + " " + point_text(p) +
+    throw InputError("--field " + text + ": at vertex " + std::to_string(i) + " " + point_text(p) +
                      ", the field's metric in doubles is not positive definite (" + entries_text(m) + ")");
   return m;
 }
@@ -131,7 +145,7 @@ std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, co
     const auto& p = points[i];
     if (source.background) {
       const auto m = source.background->metric_at(p);
-      if (!m) throw UsageError("--field " + text + ": vertex " + std::to_string(i) + " " + geometry::point_excerpt(p) +
+      if (!m) throw InputError("--field " + text + ": vertex " + std::to_string(i) + " " + geometry::point_excerpt(p) +
                                " lies outside the background mesh");
       metrics.push_back(*m);
     } else {
@@ -144,14 +158,14 @@ std::vector<predicates::Sym2<Rational>> metrics_at(const FieldSource& source, co
 fields::MetricField3 field3_source(const std::string& text, const std::vector<std::string>& params) {
   const fields::Parameters given = parameters_of(params);
   if (text.starts_with(background_prefix)) {
-    if (!given.empty()) throw UsageError("--param: a background field has no parameters");
+    if (!given.empty()) throw InputError("--param: a background field has no parameters");
     const io::MeshFile file = background_file(text);
-    if (file.dimension != 3) throw UsageError(text.substr(background_prefix.size()) + ": a triangle mesh is no background for a 3D domain");
+    if (file.dimension != 3) throw InputError(text.substr(background_prefix.size()) + ": a triangle mesh is no background for a 3D domain");
     std::shared_ptr<const fields::BackgroundMesh3> mesh;
     try {
       mesh = std::make_shared<const fields::BackgroundMesh3>(file.mesh3);
     } catch (const fields::BackgroundMeshError& e) {
-      throw UsageError(text.substr(background_prefix.size()) + ": " + e.what());
+      throw InputError(text.substr(background_prefix.size()) + ": " + e.what());
     }
     return {text, {}, [mesh, text](double x, double y, double z) {
               const auto m = mesh->metric_at({rational_from_double(x), rational_from_double(y), rational_from_double(z)});
@@ -164,7 +178,7 @@ fields::MetricField3 field3_source(const std::string& text, const std::vector<st
   try {
     return fields::make_field3(text, given);
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--field: ") + e.what());
+    throw InputError(std::string("--field: ") + e.what());
   }
 }
 
@@ -174,18 +188,18 @@ std::vector<predicates::Sym3<Rational>> metrics3_at(const std::string& text, con
   std::vector<predicates::Sym3<Rational>> metrics;
   metrics.reserve(points.size());
   if (text.starts_with(background_prefix)) {
-    if (!given.empty()) throw UsageError("--param: a background field has no parameters");
+    if (!given.empty()) throw InputError("--param: a background field has no parameters");
     const io::MeshFile file = background_file(text);
-    if (file.dimension != 3) throw UsageError(text.substr(background_prefix.size()) + ": a triangle mesh is no background for a tetrahedral mesh");
+    if (file.dimension != 3) throw InputError(text.substr(background_prefix.size()) + ": a triangle mesh is no background for a tetrahedral mesh");
     std::optional<fields::BackgroundMesh3> mesh;
     try {
       mesh.emplace(file.mesh3);
     } catch (const fields::BackgroundMeshError& e) {
-      throw UsageError(text.substr(background_prefix.size()) + ": " + e.what());
+      throw InputError(text.substr(background_prefix.size()) + ": " + e.what());
     }
     for (std::size_t i = 0; i < points.size(); ++i) {
       const auto m = mesh->metric_at(points[i]);
-      if (!m) throw UsageError("--field " + text + ": vertex " + std::to_string(i) + " " + point_text(points[i]) + " lies outside the background mesh");
+      if (!m) throw InputError("--field " + text + ": vertex " + std::to_string(i) + " " + point_text(points[i]) + " lies outside the background mesh");
       metrics.push_back(*m);
     }
     return metrics;
@@ -194,10 +208,10 @@ std::vector<predicates::Sym3<Rational>> metrics3_at(const std::string& text, con
   try {
     field = fields::make_field3(text, given);
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--field: ") + e.what());
+    throw InputError(std::string("--field: ") + e.what());
   }
   for (std::size_t i = 0; i < points.size(); ++i) metrics.push_back(sampled(field, text, points[i], i));
   return metrics;
 }
 
-}  // namespace anisocert::cli
+}  // namespace anisocert::io
