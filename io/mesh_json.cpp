@@ -11,9 +11,26 @@
 #include <fstream>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace anisocert::io {
+
+// Sorted by (x, y), coincident sites are neighbours; ties keep index order.
+std::optional<std::pair<std::size_t, std::size_t>> coincident_sites(const std::vector<predicates::Point2<Rational>>& sites) {
+  std::vector<std::size_t> order(sites.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+    const auto &p = sites[i], &q = sites[j];
+    return p.x != q.x ? p.x < q.x : p.y != q.y ? p.y < q.y : i < j;
+  });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const auto &p = sites[order[k - 1]], &q = sites[order[k]];
+    if (p.x == q.x && p.y == q.y) return std::pair{order[k - 1], order[k]};
+  }
+  return std::nullopt;
+}
+
 namespace {
 
 using Json = nlohmann::json;
@@ -92,19 +109,10 @@ class MeshReader : SchemaReader {
     }
   }
 
-  // Sorted by (x, y), coincident sites are neighbours; ties keep index order.
   void require_distinct_sites(const std::vector<Point>& sites) const {
-    std::vector<std::size_t> order(sites.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
-      const Point &p = sites[i], &q = sites[j];
-      return p.x != q.x ? p.x < q.x : p.y != q.y ? p.y < q.y : i < j;
-    });
-    for (std::size_t k = 1; k < order.size(); ++k) {
-      const Point &p = sites[order[k - 1]], &q = sites[order[k]];
-      if (p.x == q.x && p.y == q.y)
-        fail("", indexed("sites", order[k - 1]) + " and " + indexed("sites", order[k]) + " coincide at " + geometry::point_excerpt(p));
-    }
+    if (const auto pair = coincident_sites(sites))
+      fail("", indexed("sites", pair->first) + " and " + indexed("sites", pair->second) + " coincide at " +
+                   geometry::point_excerpt(sites[pair->first]));
   }
 
   Polygon<Rational> domain(const Json& domain) const {

@@ -20,6 +20,7 @@
 #include "io/input_error.hpp"
 
 #include <istream>
+#include <optional>
 #include <string>
 
 namespace anisocert::io {
@@ -42,6 +43,10 @@ struct DomainFile {
   std::vector<std::pair<int, int>> interior_segments;
 };
 DomainFile read_domain_file(const std::string& path);
+
+// Two sites at one point (the first such pair by (x, y), lower indices first), if any: the diagram
+// needs distinct sites (docs/oracle.md).
+std::optional<std::pair<std::size_t, std::size_t>> coincident_sites(const std::vector<predicates::Point2<Rational>>& sites);
 
 // The file of a mesh, every number written as its exact text (a decimal expansion, or a fraction),
 // so that `anisocert certify` reads exactly the numbers written (a refiner's doubles included).

@@ -9,6 +9,7 @@
 #include "api/anisocert.hpp"
 #include "geometry/boundary_polygon.hpp"
 #include "geometry/builtin_polyhedra.hpp"
+#include "geometry/polygon.hpp"
 #include "io/diagram_json.hpp"
 #include "io/field_source.hpp"
 #include "io/formats/polyhedron_file.hpp"
@@ -155,10 +156,12 @@ O oracle_options(const Options& p) {
   return o;
 }
 
+using Say = std::function<void(const std::string&)>;
+
 // Runs work(say) on a worker thread while this thread, GIL released, waits; every 0.1 s it
 // takes the GIL to pass the lines said to `progress` and to check for signals (Ctrl-C).
 template <class R>
-R interruptible(std::function<R(const std::function<void(const std::string&)>&)> work, const py::object& progress) {
+R interruptible(std::function<R(const Say&)> work, const py::object& progress) {
   struct State {
     std::mutex m;
     std::condition_variable cv;
@@ -217,34 +220,24 @@ struct Result {
 using Result2 = Result<Mesh, oracle::CertifyReport>;
 using Result3 = Result<Mesh3, oracle::Certify3Report>;
 
-Result2 certify2(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const py::handle& edges,
-                 const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
-  const Options p = options_from(options);
+// The meshes of the Python layer's arrays, with metrics given (rows of 3 or 6) or a field's at the
+// vertices (the CLI's --field and --param), and the tetrahedral mesh's declared triangles.
+Mesh triangle_mesh(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const std::string& field,
+                   const py::dict& params) {
   const Numbers x = exact_numbers(points, "points", 2);
   Mesh mesh;
   for (std::size_t i = 0; i < x.rows; ++i) mesh.sites.push_back({x(i, 0), x(i, 1)});
   mesh.triangles = index_rows<3>(triangles, "cells");
-  if (!edges.is_none())
-    for (const auto& e : index_rows<2>(edges, "edges")) mesh.edges.push_back({e[0], e[1]});
   if (!metrics.is_none()) {
     const Numbers m = exact_numbers(metrics, "metrics", 3);
     for (std::size_t i = 0; i < m.rows; ++i) mesh.metrics.push_back({m(i, 0), m(i, 1), m(i, 2)});
   }
   if (!field.empty()) mesh.metrics = io::metrics_at(io::field_source(field, param_texts(params)), field, mesh.sites);
-  const auto o = oracle_options<CertifyOptions>(p);
-  return interruptible<Result2>(
-      [mesh = std::move(mesh), o](const auto& say) {
-        say("certifying " + std::to_string(mesh.triangles.size()) + " triangles");
-        Result2 r{mesh, certify(mesh, {}, o)};
-        say("done");
-        return r;
-      },
-      progress);
+  return mesh;
 }
 
-Result3 certify3(const py::handle& points, const py::handle& tetrahedra, const py::handle& metrics, const py::handle& triangles,
-                 const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
-  const Options p = options_from(options);
+Mesh3 tetrahedral_mesh(const py::handle& points, const py::handle& tetrahedra, const py::handle& metrics, const py::handle& triangles,
+                       const std::string& field, const py::dict& params) {
   const Numbers x = exact_numbers(points, "points", 3);
   Mesh3 mesh;
   for (std::size_t i = 0; i < x.rows; ++i) mesh.vertices.push_back({x(i, 0), x(i, 1), x(i, 2)});
@@ -255,15 +248,38 @@ Result3 certify3(const py::handle& points, const py::handle& tetrahedra, const p
     for (std::size_t i = 0; i < m.rows; ++i) mesh.metrics.push_back({m(i, 0), m(i, 1), m(i, 2), m(i, 3), m(i, 4), m(i, 5)});
   }
   if (!field.empty()) mesh.metrics = io::metrics3_at(field, param_texts(params), mesh.vertices);
-  const auto o = oracle_options<Certify3Options>(p);
-  return interruptible<Result3>(
-      [mesh = std::move(mesh), o](const auto& say) {
-        say("certifying " + std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
-        Result3 r{mesh, certify(mesh, {}, o)};
+  return mesh;
+}
+
+// The API's certificate of mesh, interruptibly; `cells` names its cells in the progress line.
+template <class R, class MeshT, class O>
+R certified(MeshT mesh, const O& o, std::size_t count, const char* cells, const py::object& progress) {
+  return interruptible<R>(
+      [mesh = std::move(mesh), o, count, cells](const auto& say) {
+        say("certifying " + std::to_string(count) + " " + cells);
+        R r{mesh, certify(mesh, {}, o)};
         say("done");
         return r;
       },
       progress);
+}
+
+Result2 certify2(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const py::handle& edges,
+                 const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
+  const auto o = oracle_options<CertifyOptions>(options_from(options));
+  Mesh mesh = triangle_mesh(points, triangles, metrics, field, params);
+  if (!edges.is_none())
+    for (const auto& e : index_rows<2>(edges, "edges")) mesh.edges.push_back({e[0], e[1]});
+  const std::size_t count = mesh.triangles.size();
+  return certified<Result2>(std::move(mesh), o, count, "triangles", progress);
+}
+
+Result3 certify3(const py::handle& points, const py::handle& tetrahedra, const py::handle& metrics, const py::handle& triangles,
+                 const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
+  const auto o = oracle_options<Certify3Options>(options_from(options));
+  Mesh3 mesh = tetrahedral_mesh(points, tetrahedra, metrics, triangles, field, params);
+  const std::size_t count = mesh.tetrahedra.size();
+  return certified<Result3>(std::move(mesh), o, count, "tetrahedra", progress);
 }
 
 // Exact numbers back to Python: a float64 array when every one is a double, else rows of
@@ -327,32 +343,29 @@ py::dict read_file(const std::string& path, const std::string& metric, const std
 }
 
 
+// The C++ API's checks of a triangle mesh's input (indices naming sites, one positive definite
+// metric per site, a simple counter-clockwise domain), each failure one line; nothing certified.
+void check_input(const Mesh& mesh) {
+  CertifyOptions none;
+  none.valid = none.uniform = none.metric = false;
+  (void)certify(mesh, {}, none);
+}
+
 // `anisocert dual`: is the mesh the dual of the exact D|Ω of its vertices (Ω the boundary of its
 // triangles)? The diagram's progress lines go to `progress`.
 struct DualResult {
   Mesh mesh;
   oracle::Diagram diagram;
   oracle::MeshDual dual;
+  std::string metric_source;  // "the metrics given" or "field NAME", for the text
 };
 
 DualResult dual(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const std::string& field,
                 const py::dict& params, bool exact_only, int threads, const std::string& name, const py::object& progress) {
-  const Numbers x = exact_numbers(points, "points", 2);
-  Mesh mesh;
-  for (std::size_t i = 0; i < x.rows; ++i) mesh.sites.push_back({x(i, 0), x(i, 1)});
-  mesh.triangles = index_rows<3>(triangles, "cells");
-  if (!metrics.is_none()) {
-    const Numbers m = exact_numbers(metrics, "metrics", 3);
-    for (std::size_t i = 0; i < m.rows; ++i) mesh.metrics.push_back({m(i, 0), m(i, 1), m(i, 2)});
-  }
-  if (!field.empty()) mesh.metrics = io::metrics_at(io::field_source(field, param_texts(params)), field, mesh.sites);
+  Mesh mesh = triangle_mesh(points, triangles, metrics, field, params);
   if (mesh.triangles.empty()) throw std::invalid_argument(name + ": the mesh has no triangles");
   if (mesh.metrics.empty()) throw std::invalid_argument(name + ": has no metric, which the diagram needs (give metrics or field)");
-  (void)certify(mesh, {}, [] {  // the API's checks of indices and metrics (one line each), nothing certified
-    CertifyOptions o;
-    o.valid = o.uniform = o.metric = false;
-    return o;
-  }());
+  check_input(mesh);
   Mesh sites;
   sites.sites = mesh.sites, sites.metrics = mesh.metrics;
   try {
@@ -363,12 +376,13 @@ DualResult dual(const py::handle& points, const py::handle& triangles, const py:
   oracle::DiagramOptions o;
   o.exact_only = exact_only, o.threads = threads;
   return interruptible<DualResult>(
-      [mesh = std::move(mesh), sites = std::move(sites), o, name](const auto& say) mutable {
+      [mesh = std::move(mesh), sites = std::move(sites), o, name, source = field.empty() ? std::string("the metrics given") : "field " + field](
+          const auto& say) mutable {
         o.progress = say;
         try {
           oracle::Diagram d = oracle::compute_diagram(sites, o);
           oracle::MeshDual m = oracle::compare_with_dual(d, mesh.triangles, 100);
-          return DualResult{mesh, std::move(d), std::move(m)};
+          return DualResult{mesh, std::move(d), std::move(m), source};
         } catch (const std::domain_error& e) {
           throw std::invalid_argument(name + ": " + e.what());
         }
@@ -384,11 +398,11 @@ oracle::Diagram diagram(const py::handle& sites, const py::handle& metrics, cons
   for (std::size_t i = 0; i < x.rows; ++i) in.sites.push_back({x(i, 0), x(i, 1)});
   for (std::size_t i = 0; i < m.rows; ++i) in.metrics.push_back({m(i, 0), m(i, 1), m(i, 2)});
   for (std::size_t i = 0; i < c.rows; ++i) in.domain.push_back({c(i, 0), c(i, 1)});
-  (void)certify(in, {}, [] {  // the API's checks: one metric per site, positive definite, a simple counter-clockwise domain
-    CertifyOptions o;
-    o.valid = o.uniform = o.metric = false;
-    return o;
-  }());
+  if (in.sites.empty()) throw std::invalid_argument("sites: none (the diagram needs at least one)");
+  if (const auto pair = io::coincident_sites(in.sites))
+    throw std::invalid_argument("sites[" + std::to_string(pair->first) + "] and sites[" + std::to_string(pair->second) +
+                                "] coincide at " + geometry::point_excerpt(in.sites[pair->first]));
+  check_input(in);
   oracle::DiagramOptions o;
   o.exact_only = exact_only, o.threads = threads;
   return interruptible<oracle::Diagram>(
@@ -398,6 +412,25 @@ oracle::Diagram diagram(const py::handle& sites, const py::handle& metrics, cons
           return oracle::compute_diagram(in, o);
         } catch (const std::domain_error& e) {
           throw std::invalid_argument(name + ": " + e.what());
+        }
+      },
+      progress);
+}
+
+// A refiner's run, interruptibly, its refusals as one line: the domain's (after `where`), the
+// field's, a parameter's.
+template <class R>
+R refiner_run(std::function<R(const Say&)> run, const std::string& where, const py::object& progress) {
+  return interruptible<R>(
+      [run = std::move(run), where](const Say& say) {
+        try {
+          return run(say);
+        } catch (const refiners::common::DomainError& e) {
+          throw std::invalid_argument(where + e.what());
+        } catch (const refiners::common::FieldError& e) {
+          throw std::invalid_argument(std::string("field: ") + e.what());
+        } catch (const refiners::ParameterError& e) {
+          throw std::invalid_argument(e.what());
         }
       },
       progress);
@@ -436,9 +469,6 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
     budget.max_seconds = io::option_double("max_seconds", max_seconds);
     if (!(budget.max_seconds > 0)) throw std::invalid_argument("max_seconds " + max_seconds + ": expected a positive number");
   }
-  const auto failing = [](const std::string& where) {
-    return [where](const std::exception& e) -> std::invalid_argument { return std::invalid_argument(where + e.what()); };
-  };
   py::dict out;
   const bool named = py::isinstance<py::str>(domain);
   const std::string text = named ? domain.cast<std::string>() : "";
@@ -449,20 +479,11 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
     const geometry::Polyhedron polyhedron = geometry::builtin_polyhedron(text) ? *geometry::builtin_polyhedron(text) : io::read_polyhedron_file(text);
     const std::string field_name = field.empty() ? "ugawg-linear" : field;
     const fields::MetricField3 f = io::field3_source(field_name, param_texts(params));
-    const auto run = interruptible<refiners::Run3>(
-        [entry, polyhedron, f, values, budget, seed, text, failing](const auto& say) {
-          try {
-            const refiners::common::Domain3 d(polyhedron);
-            return entry->run3(d, f, values, budget, seed, say);
-          } catch (const refiners::common::DomainError& e) {
-            throw failing(text + ": ")(e);
-          } catch (const refiners::common::FieldError& e) {
-            throw failing("field: ")(e);
-          } catch (const refiners::ParameterError& e) {
-            throw failing("")(e);
-          }
+    const auto run = refiner_run<refiners::Run3>(
+        [entry, polyhedron, f, values, budget, seed](const Say& say) {
+          return entry->run3(refiners::common::Domain3(polyhedron), f, values, budget, seed, say);
         },
-        progress);
+        text + ": ", progress);
     const auto& m = run.result.mesh;
     Mesh3 exact;
     std::vector<std::vector<Rational>> p, g;
@@ -492,20 +513,12 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
   }
   const fields::MetricField f = io::field_source(field.empty() ? "shock" : field, param_texts(params)).field;
   const std::string where = named ? text + ": " : "domain: ";
-  const auto run = interruptible<refiners::Run>(
-      [entry, input, f, values, budget, seed, where, failing](const auto& say) {
-        try {
-          const auto d = refiners::common::Domain::from_exact(input.corners, input.points, input.interior_segments);
-          return entry->run(d, f, values, budget, seed, say);
-        } catch (const refiners::common::DomainError& e) {
-          throw failing(where)(e);
-        } catch (const refiners::common::FieldError& e) {
-          throw failing("field: ")(e);
-        } catch (const refiners::ParameterError& e) {
-          throw failing("")(e);
-        }
+  const auto run = refiner_run<refiners::Run>(
+      [entry, input, f, values, budget, seed](const Say& say) {
+        return entry->run(refiners::common::Domain::from_exact(input.corners, input.points, input.interior_segments), f, values,
+                          budget, seed, say);
       },
-      progress);
+      where, progress);
   const auto& m = run.result.mesh;
   std::vector<std::vector<Rational>> p, g;
   for (const auto& v : m.sites) p.push_back({Rational(v.x), Rational(v.y)});
@@ -547,7 +560,7 @@ PYBIND11_MODULE(_anisocert, m) {
       .def_property_readonly("is_dual", [](const DualResult& r) { return r.dual.is_dual(); })
       .def_property_readonly("theorem7_disagreement", [](const DualResult& r) { return r.diagram.theorem7.disagreement; })
       .def("json", [](const DualResult& r) { return io::dual_json(r.diagram, r.dual, "").dump(); })
-      .def("text", [](const DualResult& r, const std::string& name) { return io::dual_text(r.diagram, r.dual, name, ""); })
+      .def("text", [](const DualResult& r, const std::string& name) { return io::dual_text(r.diagram, r.dual, name, r.metric_source); })
       .def("svg", [](const DualResult& r, const std::string& caption) { return io::dual_svg(r.mesh, r.diagram, r.dual, caption); });
   py::class_<oracle::Diagram>(m, "Diagram")
       .def_property_readonly("theorem7_disagreement", [](const oracle::Diagram& d) { return d.theorem7.disagreement; })

@@ -83,8 +83,18 @@ def _indices(a, what, k):
     arr = np.asarray(a)
     if arr.ndim != 2 or arr.shape[1] != k:
         raise ValueError(f"{what}: expected shape (m, {k}), got {tuple(arr.shape)}")
+    if arr.dtype == object:  # Python integers, perhaps beyond 64 bits
+        for (i, j), x in np.ndenumerate(arr):
+            if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Integral):
+                raise ValueError(f"{what}[{i}][{j}]: {x!r} is not an index")
+            if not 0 <= x < 2**31:
+                raise ValueError(f"{what}[{i}][{j}]: index {x} out of range")
+        arr = arr.astype(np.int64)
     if arr.size and arr.dtype.kind not in "iu":
         raise ValueError(f"{what}: expected integer indices, got {arr.dtype}")
+    if arr.size and arr.dtype.kind == "u" and arr.max() >= 2**31:  # before int64 could wrap it
+        i, j = np.unravel_index(int(arr.argmax()), arr.shape)
+        raise ValueError(f"{what}[{i}][{j}]: index {arr[i, j]} out of range")
     return np.ascontiguousarray(arr, dtype=np.int64)
 
 
@@ -114,6 +124,25 @@ def _exact_value(x, where):
         raise ValueError(f"{where}: {t!r} is not an exact number") from None
 
 
+def _integer(x, what, low, high=None):
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Integral) or x < low or (high is not None and x > high):
+        bound = f"in [{low}, {high}]" if high is not None else f"at least {low}"
+        raise ValueError(f"{what}: expected a whole number {bound}, got {x!r}")
+    return int(x)
+
+
+def _flag(x, what):
+    if not isinstance(x, (bool, np.bool_)):
+        raise ValueError(f"{what}: expected True or False, got {x!r}")
+    return bool(x)
+
+
+def _callback(progress):
+    if progress is not None and not callable(progress):
+        raise ValueError(f"progress: expected a callable taking a line of text, got {progress!r}")
+    return progress
+
+
 def _bound(x, what):
     return None if x is None else _token(x, what)
 
@@ -122,26 +151,50 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
             length_range=None, min_quality=None, min_angle=None, edges=None, triangles=None, all_witnesses=False,
             threads=0, progress=None, name="mesh"):
     """Certifies a triangle mesh (points (n, 2), cells (m, 3)) or a tetrahedral one (points (n, 3),
-    cells (m, 4)), as ``anisocert certify`` does: valid, locally uniform, edge lengths and qualities
-    in the metrics (one per vertex: 2D (n, 3) m11 m12 m22 or (n, 2, 2); 3D (n, 6) m11 m12 m13 m22
-    m23 m33 or (n, 3, 3)), with the bounds given (rho0, gamma0, length_range=(a, b), min_quality,
-    min_angle) decided exactly. Instead of ``metrics``, ``field`` names a built-in field (the CLI's
-    --field: "shock", "ugawg-linear", "background:MESH[:METRIC]", ...) with ``params`` (a dict, the
-    CLI's --param), evaluated at the vertices as the CLI does. ``points`` may also be a Mesh from `read`. ``edges`` (2D) are the
-    declared boundary edges, ``triangles`` (3D) the declared boundary triangles. ``progress`` is
-    called with progress lines. Returns a Report; ``report.holds`` is the verdict."""
+    cells (m, 4)), as ``anisocert certify`` does. Returns a Report; ``report.holds`` is the verdict.
+
+    metrics: one per vertex: 2D (n, 3) m11 m12 m22, or (n, 2, 2); 3D (n, 6) m11 m12 m13 m22 m23
+        m33, or (n, 3, 3). Without metrics (and field) only validity is checked.
+    field, params: instead of metrics, a built-in field (the CLI's --field: "shock", "radial",
+        "linear", "constant", "ugawg-linear", ..., or "background:MESH[:METRIC]") with its
+        parameters (the CLI's --param), evaluated at the vertices as the CLI does.
+    checks: which of "valid", "uniform" (locally uniform), "metric" (edge lengths, qualities,
+        angles in the metrics) to run; default all three (only "valid" without a metric).
+    rho0, gamma0, length_range=(low, high), min_quality, min_angle: bounds decided exactly
+        (radius-edge ratio, distortion, edge lengths, mean-ratio quality, angles in degrees);
+        default none (measured, not judged).
+    edges (2D): the declared boundary edges (m, 2); triangles (3D): the declared boundary
+        triangles (m, 3), which must be exactly the boundary faces.
+    all_witnesses: describe every witness (default: the first 100 of each list, all counted).
+    threads: threads for the locally uniform check (0, the default: one per core; same report).
+    progress: a callable given progress lines. name: how the report's text names the mesh.
+    points may also be a Mesh from `read` (then no cells; its metrics unless metrics or field)."""
     if isinstance(points, Mesh):
         if cells is not None:
             raise ValueError("cells: given beside a Mesh, which has its own (pass metrics=... by name)")
         mesh = points
         points, cells = mesh.points, mesh.cells
-        metrics = mesh.metrics if metrics is None else metrics
-        edges = mesh.edges if edges is None else edges
-        triangles = mesh.triangles if triangles is None else triangles
+        metrics = mesh.metrics if metrics is None and field is None else metrics
+        edges = mesh.edges if edges is None and mesh.dimension == 2 else edges
+        triangles = mesh.triangles if triangles is None and mesh.dimension == 3 else triangles
     if cells is None:
         raise ValueError("cells: missing (give the triangles or tetrahedra)")
     pts = _numbers(points, "points", [2, 3])
     dimension = pts.shape[1] if isinstance(pts, np.ndarray) else len(pts[0]) if pts else np.asarray(points).shape[1]
+    shape = np.shape(cells)
+    if dimension == 3 and len(shape) == 2 and shape[1] == 3:
+        raise ValueError("cells: triangles (m, 3) with points of 3 coordinates: give points (n, 2) for a planar triangle mesh, "
+                         "or tetrahedra (m, 4)")
+    if len(shape) == 2 and shape[0] == 0:
+        raise ValueError(f"{name}: has no {'triangles' if dimension == 2 else 'tetrahedra'}")
+    if dimension == 3 and edges is not None:
+        raise ValueError("edges: declared boundary edges are for triangle meshes (give triangles= for tetrahedra)")
+    if dimension == 2 and triangles is not None:
+        raise ValueError("triangles: declared boundary triangles are for tetrahedral meshes (give edges= for triangles)")
+    if params is not None and field is None:
+        raise ValueError("params: given without a field")
+    if length_range is not None and (isinstance(length_range, str) or not hasattr(length_range, "__len__") or len(length_range) != 2):
+        raise ValueError(f"length_range: expected (low, high), got {length_range!r}")
     bounds = {"rho0": rho0, "gamma0": gamma0, "min_quality": min_quality, "min_angle": min_angle}
     if metrics is not None and field is not None:
         raise ValueError("metrics and field: give one metric source")
@@ -151,12 +204,11 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
         raise ValueError(f"{name}: has no metric, which the requested checks and bounds need (give metrics)")
     options = {k: _bound(v, k) for k, v in bounds.items()}
     if length_range is not None:
-        if len(length_range) != 2:
-            raise ValueError("length_range: expected (low, high)")
         options["length_lo"], options["length_hi"] = _bound(length_range[0], "length_range"), _bound(length_range[1], "length_range")
     if checks is not None:
         options["checks"] = [checks] if isinstance(checks, str) else list(checks)
-    options["all_witnesses"], options["threads"] = bool(all_witnesses), int(threads)
+    options["all_witnesses"], options["threads"] = _flag(all_witnesses, "all_witnesses"), _integer(threads, "threads", 0, 1024)
+    progress = _callback(progress)
     m = None if metrics is None else _symmetric(metrics, dimension)
     field, params = "" if field is None else str(field), _params(params)
     if dimension == 2:
@@ -178,11 +230,11 @@ def _params(params):
     return {str(k): _token(v, f"params[{k!r}]") for k, v in params.items()}
 
 
-def _mesh_or_arrays(points, cells, metrics):
+def _mesh_or_arrays(points, cells, metrics, field):
     if isinstance(points, Mesh):
         if cells is not None:
             raise ValueError("cells: given beside a Mesh, which has its own (pass metrics=... by name)")
-        return points.points, points.cells, points.metrics if metrics is None else metrics
+        return points.points, points.cells, points.metrics if metrics is None and field is None else metrics
     return points, cells, metrics
 
 
@@ -191,14 +243,17 @@ def dual(points, cells=None, metrics=None, *, field=None, params=None, exact_onl
     """Is the triangle mesh the dual of the exact anisotropic Voronoi diagram of its own vertices,
     D|Ω with Ω the boundary of its triangles (``anisocert dual``)? Returns a DualReport:
     ``is_dual``, the JSON's fields as attributes, ``text``, ``svg()``."""
-    points, cells, metrics = _mesh_or_arrays(points, cells, metrics)
+    points, cells, metrics = _mesh_or_arrays(points, cells, metrics, field)
     if cells is None:
         raise ValueError("cells: missing (give the triangles)")
     if metrics is not None and field is not None:
         raise ValueError("metrics and field: give one metric source")
+    if params is not None and field is None:
+        raise ValueError("params: given without a field")
     m = None if metrics is None else _symmetric(metrics, 2)
-    native = _anisocert.dual(_numbers(points, "points", [2]), _indices(cells, "cells", 3), m,
-                             "" if field is None else str(field), _params(params), bool(exact_only), int(threads), name, progress)
+    native = _anisocert.dual(_numbers(points, "points", [2]), _indices(cells, "cells", 3), m, "" if field is None else str(field),
+                             _params(params), _flag(exact_only, "exact_only"), _integer(threads, "threads", 0, 1024), name,
+                             _callback(progress))
     return DualReport(native, name)
 
 
@@ -207,7 +262,7 @@ def diagram(sites, metrics, domain, *, exact_only=False, threads=0, progress=Non
     restricted to the simple counter-clockwise polygon ``domain`` (c, 2) (``anisocert diagram``).
     Returns a DiagramReport: the JSON's fields (docs/oracle.md) as attributes, ``svg()``."""
     native = _anisocert.diagram(_numbers(sites, "sites", [2]), _symmetric(metrics, 2), _numbers(domain, "domain", [2]),
-                                bool(exact_only), int(threads), name, progress)
+                                _flag(exact_only, "exact_only"), _integer(threads, "threads", 0, 1024), name, _callback(progress))
     return DiagramReport(native)
 
 
@@ -223,7 +278,8 @@ def refine(domain="square", field=None, algo="star", *, params=None, max_vertice
         domain = _numbers(domain, "domain", [2])
     d = _anisocert.refine(domain, str(algo), "" if field is None else str(field), _params(params), _params(parameters),
                           "" if max_vertices is None else _token(max_vertices, "max_vertices"),
-                          "" if max_seconds is None else _token(max_seconds, "max_seconds"), int(seed), progress)
+                          "" if max_seconds is None else _token(max_seconds, "max_seconds"),
+                          _integer(seed, "seed", 0, 2**32 - 1), _callback(progress))
     return Refinement(d)
 
 
@@ -246,8 +302,12 @@ def certify_meshio(mesh, metric=None, **options):
     have two coordinates or every z is exactly 0); ``metric`` names the point data holding a metric
     per vertex (2D: 3 or 4 components, 3D: 6 or 9, as `certify` takes them). Other keywords as for
     `certify`."""
+    if not all(hasattr(mesh, a) for a in ("cells", "points", "point_data")):
+        raise ValueError(f"mesh: expected a meshio.Mesh, got {type(mesh).__name__}")
     blocks = {}
     for block in mesh.cells:
+        if block.type not in ("vertex", "line", "triangle", "tetra"):
+            raise ValueError(f"mesh: {block.type} cells (anisocert certifies triangle and tetrahedral meshes)")
         blocks.setdefault(block.type, []).append(np.asarray(block.data))
     cells = lambda kind: np.concatenate(blocks[kind]) if kind in blocks else None  # noqa: E731
     points = np.asarray(mesh.points)
@@ -324,7 +384,8 @@ class Refinement(Mesh):
 
     def __repr__(self):
         kind = "triangles" if self.dimension == 2 else "tetrahedra"
-        return f"<anisocert.Refinement: {len(self.points)} vertices, {len(self.cells)} {kind}; {self.stop_reason}>"
+        caveat = "" if self.consistent else " (stopped early: not necessarily a triangulation of the domain)"
+        return f"<anisocert.Refinement: {len(self.points)} vertices, {len(self.cells)} {kind}; {self.stop_reason}{caveat}>"
 
 
 class DualReport(_View):
@@ -346,7 +407,9 @@ class DualReport(_View):
         return self._native.svg(caption or f"{self._name}: {'the dual of D|Ω' if self.is_dual else 'not the dual of D|Ω'}")
 
     def __repr__(self):
-        return f"<anisocert.DualReport {self._name}: {'the dual' if self.is_dual else 'not the dual'} of D|Ω>"
+        t, m = self._data["triangles"], self._data["missing"]["count"]
+        return (f"<anisocert.DualReport {self._name}: {'the dual' if self.is_dual else 'not the dual'} of D|Ω "
+                f"({t['dual']} dual, {t['ties']} tied, {t['not_dual']} not dual, {m} dual triangles missing)>")
 
 
 class DiagramReport(_View):
@@ -360,7 +423,9 @@ class DiagramReport(_View):
         return self._native.svg()
 
     def __repr__(self):
-        return f"<anisocert.DiagramReport: {', '.join(f'{k}' for k in list(self._data)[:6])}, ...>"
+        c, dual = self._data["counts"], self._data["dual"]
+        return (f"<anisocert.DiagramReport: {c['vertices']} Voronoi vertices, {c['arcs']} arcs, {c['faces']} faces, "
+                f"{c['orphans']} orphans; the dual {'triangulates' if dual['is_triangulation'] else 'does not triangulate'} Ω>")
 
 
 class Report(_View):

@@ -138,6 +138,8 @@ def test_meshio_round_trip(tmp_path):
     assert anisocert.certify_meshio(full, metric="M").to_dict() == direct.to_dict()
     with pytest.raises(ValueError, match="no point data named"):
         anisocert.certify_meshio(back, metric="missing")
+    with pytest.raises(ValueError, match="mesh: quad cells"):
+        anisocert.certify_meshio(meshio.Mesh(points, [("triangle", m.cells), ("quad", [[0, 1, 2, 3]])]))
 
 
 def test_tetrahedra_from_meshio():
@@ -170,6 +172,17 @@ TRIANGLE = (np.array([[0.0, 0], [1, 0], [0, 1]]), np.array([[0, 1, 2]]))
     (lambda: anisocert.certify(*TRIANGLE, [[1, 0, 1]] * 3, checks=["valid", "shape"]), 'unknown check "shape"'),
     (lambda: anisocert.certify(*TRIANGLE, [[1, 0, 1]] * 3, gamma0="0.5"), "gamma0 must be at least 1"),
     (lambda: anisocert.read("/nonexistent/mesh.mesh"), "/nonexistent/mesh.mesh"),
+    (lambda: anisocert.certify(np.zeros((3, 3)), TRIANGLE[1]), "cells: triangles (m, 3) with points of 3 coordinates"),
+    (lambda: anisocert.certify(TRIANGLE[0], np.array([[0, 1, 2**63 + 1]], dtype=np.uint64)), "cells[0][2]: index 9223372036854775809 out of range"),
+    (lambda: anisocert.certify(TRIANGLE[0], [[0, 1, 10**30]]), "cells[0][2]: index 1000000000000000000000000000000 out of range"),
+    (lambda: anisocert.certify(TRIANGLE[0], np.zeros((0, 3), dtype=int)), "mesh: has no triangles"),
+    (lambda: anisocert.certify(*TRIANGLE, threads=2.7), "threads: expected a whole number"),
+    (lambda: anisocert.certify(*TRIANGLE, all_witnesses="no"), "all_witnesses: expected True or False"),
+    (lambda: anisocert.certify(*TRIANGLE, [[1, 0, 1]] * 3, length_range="12"), "length_range: expected (low, high)"),
+    (lambda: anisocert.certify(*TRIANGLE, [[1, 0, 1]] * 3, params={"h": 1}), "params: given without a field"),
+    (lambda: anisocert.certify(*TRIANGLE, triangles=[[0, 1, 2]]), "triangles: declared boundary triangles are for tetrahedral meshes"),
+    (lambda: anisocert.certify(*TRIANGLE, progress=5), "progress: expected a callable"),
+    (lambda: anisocert.certify_meshio("mesh.vtu"), "mesh: expected a meshio.Mesh"),
 ])
 def test_bad_input_raises_value_error_on_one_line(call, message):
     with pytest.raises(ValueError) as e:
@@ -217,6 +230,9 @@ def test_field_as_the_cli(tmp_path):
     expected3 = cli_report(box, None, tmp_path, "--field", "ugawg-linear", "--param", "h0=0.05")
     report3 = anisocert.certify(anisocert.read(box), field="ugawg-linear", params={"h0": 0.05})
     assert without_source(report3.to_dict()) == without_source(expected3)
+    square = anisocert.read(FORMATS / "freefem" / "square_hole.msh", metric=FORMATS / "freefem" / "square_hole.mtr")
+    assert without_source(anisocert.certify(square, field="shock", params={"h": "0.1"}).to_dict()) == without_source(
+        cli_report(FORMATS / "freefem" / "square_hole.msh", None, tmp_path, "--field", "shock", "--param", "h=0.1"))
     with pytest.raises(ValueError, match="give one metric source"):
         anisocert.certify(anisocert.read(box), metrics=np.ones((339, 6)), field="ugawg-linear")
     with pytest.raises(ValueError, match="cells: given beside a Mesh"):
@@ -280,6 +296,9 @@ def test_diagram_as_the_cli(tmp_path):
     (lambda: anisocert.refine(field="nope"), "nope"),
     (lambda: anisocert.refine(max_vertices="1.5"), "max_vertices 1.5: expected a positive whole number"),
     (lambda: anisocert.dual(TRIANGLE[0], TRIANGLE[1]), "has no metric"),
+    (lambda: anisocert.refine(seed=-1), "seed: expected a whole number in [0, 4294967295]"),
+    (lambda: anisocert.diagram(np.zeros((0, 2)), np.zeros((0, 3)), [[0, 0], [1, 0], [0, 1]]), "sites: none"),
+    (lambda: anisocert.diagram([[0.2, 0.2], [0.2, 0.2]], [[1, 0, 1]] * 2, [[0, 0], [1, 0], [0, 1]]), "sites[0] and sites[1] coincide"),
     (lambda: anisocert.diagram([[0, 0]], [[1, 0, 1]], [[0, 0], [0, 1], [1, 0]]), "domain"),
     (lambda: anisocert.diagram([[0, 0], [1, 1]], [[1, 0, 1]], [[0, 0], [1, 0], [0, 1]]), "metrics: 1 metrics for 2 sites"),
 ])
