@@ -342,7 +342,6 @@ py::dict read_file(const std::string& path, const std::string& metric, const std
   return d;
 }
 
-
 // The C++ API's checks of a triangle mesh's input (indices naming sites, one positive definite
 // metric per site, a simple counter-clockwise domain), each failure one line; nothing certified.
 void check_input(const Mesh& mesh) {
