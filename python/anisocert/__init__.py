@@ -66,11 +66,13 @@ def _token(x, where):
 def _numbers(a, what, columns):
     """A float64 array (exact as it is) or rows of exact tokens, of shape (n, k), k in columns."""
     if isinstance(a, np.ndarray) and a.dtype.kind == "f" and a.dtype.itemsize <= 8:
-        arr = a
+        arr = a  # float16, float32 and float64 widen to float64 exactly
     else:
         arr = np.asarray(a, dtype=object) if not isinstance(a, np.ndarray) else a
-        if arr.dtype.kind in "iu" and (arr.size == 0 or np.abs(arr).max() <= 2**53):
+        if arr.dtype.kind in "iu" and (arr.size == 0 or (int(arr.min()) >= -2**53 and int(arr.max()) <= 2**53)):
             arr = arr.astype(np.float64)  # integers of at most 53 bits are doubles exactly
+        elif arr.dtype.kind != "O":
+            arr = arr.astype(object)  # longdouble, larger integers: element by element, exactly
     if arr.ndim != 2 or arr.shape[1] not in columns:
         expected = " or ".join(f"(n, {c})" for c in columns)
         raise ValueError(f"{what}: expected shape {expected}, got {tuple(arr.shape)}")

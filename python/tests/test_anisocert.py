@@ -121,6 +121,21 @@ def test_decimal_text_is_exact_and_floats_are_the_doubles_they_are():
     assert floats["locally_uniform"]["tie_count"] == 0
 
 
+def test_wide_numbers_are_not_narrowed():
+    # Numbers no double holds are read as they are: were they rounded to doubles first, each pair
+    # of reports below would be equal.
+    # (0, 0), (2⁵³ + 1, 1), (3·2⁵³ + 3, 3) are collinear; as doubles the third is 3·2⁵³ + 4: not.
+    wide = np.array([[0, 0], [2**53 + 1, 1], [3 * 2**53 + 3, 3]], dtype=np.int64)
+    exact, rounded = (anisocert.certify(p, TRIANGLE[1]).to_dict() for p in (wide, wide.astype(np.float64)))
+    assert exact != rounded
+    assert anisocert.certify(np.array([[0, 0], [-2**63, 0], [0, -1]], dtype=np.int64), TRIANGLE[1]).valid.holds
+    if np.finfo(np.longdouble).nmant > 52:  # x86-64's 80-bit long double: (1 + 2⁻⁶⁰, 0) is not (1, 0)
+        points = np.array([[0, 0], [1, 0], [0, 1], [1 + np.longdouble(2) ** -60, 0]], dtype=np.longdouble)
+        cells = np.array([[0, 1, 2], [1, 3, 2]])
+        exact, rounded = (anisocert.certify(p, cells).to_dict() for p in (points, points.astype(np.float64)))
+        assert exact != rounded
+
+
 def test_meshio_round_trip(tmp_path):
     meshio = pytest.importorskip("meshio")
     m = anisocert.read(FORMATS / "freefem" / "square_hole.msh", metric=FORMATS / "freefem" / "square_hole.mtr")
