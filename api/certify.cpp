@@ -64,7 +64,6 @@ void check_mesh(const Mesh& mesh) {
   }
 }
 
-// The bounds as CertifyOptions holds them, checked as `anisocert certify` checks its options.
 // The bounds' texts for the report, each bound checked in its range; `type` names the options
 // struct in messages (CertifyOptions, Certify3Options: the same bounds).
 template <class O>

@@ -50,16 +50,12 @@ io::MeshFile background_file(const std::string& text) {
     throw InputError("--field " + quoted_excerpt(text) + ": " + metric_path +
                      " is not a metric file (.sol, .solb, .mtr); a mesh whose own files hold its metrics (a Gmsh .msh with a metric view, a "
                      "Medit .mesh with its .sol beside it) is given alone: background:MESH");
-  try {
-    // A planar mesh saved in 3D (every z 0, as Gmsh writes Medit files) is read as 2D: a field's
-    // points are 2D, and a z that is not 0 is still refused.
-    io::MeshFile file = io::read_mesh_file(mesh_path, "", {true}, metric_path);
-    if (file.dimension == 3 ? file.mesh3.metrics.empty() : file.mesh.metrics.empty())
-      throw InputError(mesh_path + ": background mesh has no metric (give MESH:METRIC)");
-    return file;
-  } catch (const io::InputError& e) {
-    throw InputError(e.what());
-  }
+  // A planar mesh saved in 3D (every z 0, as Gmsh writes Medit files) is read as 2D: a field's
+  // points are 2D, and a z that is not 0 is still refused.
+  io::MeshFile file = io::read_mesh_file(mesh_path, "", {true}, metric_path);
+  if (file.dimension == 3 ? file.mesh3.metrics.empty() : file.mesh.metrics.empty())
+    throw InputError(mesh_path + ": background mesh has no metric (give MESH:METRIC)");
+  return file;
 }
 
 FieldSource background_source(const std::string& text) {

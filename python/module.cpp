@@ -14,6 +14,7 @@
 #include "io/field_source.hpp"
 #include "io/formats/polyhedron_file.hpp"
 #include "io/mesh_json.hpp"
+#include "io/reports/certify_report.hpp"
 #include "io/reports/dual_report.hpp"
 #include "io/svg/certify_svg.hpp"
 #include "io/svg/diagram_svg.hpp"
@@ -25,6 +26,9 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <algorithm>
+#include <atomic>
+#include <cmath>
 #include <condition_variable>
 #include <deque>
 #include <functional>
@@ -140,7 +144,8 @@ Options options_from(const py::dict& d) {
   }
   o.rho0 = number("rho0"), o.gamma0 = number("gamma0"), o.min_quality = number("min_quality"), o.min_angle = number("min_angle");
   const auto lo = number("length_lo"), hi = number("length_hi");
-  if (lo && hi) o.length_range = std::pair{*lo, *hi};
+  if (lo.has_value() != hi.has_value()) throw std::invalid_argument("length_range: give both ends");
+  if (lo) o.length_range = std::pair{*lo, *hi};
   if (d.contains("all_witnesses")) o.all_witnesses = d["all_witnesses"].cast<bool>();
   if (d.contains("threads")) o.threads = d["threads"].cast<int>();
   return o;
@@ -157,6 +162,7 @@ O oracle_options(const Options& p) {
 }
 
 using Say = std::function<void(const std::string&)>;
+struct Interrupted {};  // thrown by Say on the worker once the caller was interrupted
 
 // Runs work(say) on a worker thread while this thread, GIL released, waits; every 0.1 s it
 // takes the GIL to pass the lines said to `progress` and to check for signals (Ctrl-C).
@@ -166,6 +172,7 @@ R interruptible(std::function<R(const Say&)> work, const py::object& progress) {
     std::mutex m;
     std::condition_variable cv;
     std::deque<std::string> lines;
+    std::atomic<bool> stop = false;  // set on an interrupt: the worker's next line ends it
     bool done = false;
     std::optional<R> result;
     std::exception_ptr error;
@@ -174,12 +181,14 @@ R interruptible(std::function<R(const Say&)> work, const py::object& progress) {
   std::thread worker([s, work = std::move(work)] {
     try {
       auto result = work([s](const std::string& line) {
+        if (s->stop) throw Interrupted{};
         std::lock_guard lock(s->m);
         s->lines.push_back(line);
         s->cv.notify_all();
       });
       std::lock_guard lock(s->m);
       s->result.emplace(std::move(result));
+    } catch (const Interrupted&) {  // the caller has gone
     } catch (...) {
       std::lock_guard lock(s->m);
       s->error = std::current_exception();
@@ -203,6 +212,7 @@ R interruptible(std::function<R(const Say&)> work, const py::object& progress) {
       if (!done && PyErr_CheckSignals() != 0) throw py::error_already_set();
     }
   } catch (...) {
+    s->stop = true;    // a refiner or the diagram stops at its next progress line; the certifier runs on
     worker.detach();  // it owns its input (captured by value) and its state (shared)
     throw;
   }
@@ -222,8 +232,7 @@ using Result3 = Result<Mesh3, oracle::Certify3Report>;
 
 // The meshes of the Python layer's arrays, with metrics given (rows of 3 or 6) or a field's at the
 // vertices (the CLI's --field and --param), and the tetrahedral mesh's declared triangles.
-Mesh triangle_mesh(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const std::string& field,
-                   const py::dict& params) {
+Mesh triangle_mesh(const py::handle& points, const py::handle& triangles, const py::handle& metrics) {
   const Numbers x = exact_numbers(points, "points", 2);
   Mesh mesh;
   for (std::size_t i = 0; i < x.rows; ++i) mesh.sites.push_back({x(i, 0), x(i, 1)});
@@ -232,12 +241,22 @@ Mesh triangle_mesh(const py::handle& points, const py::handle& triangles, const 
     const Numbers m = exact_numbers(metrics, "metrics", 3);
     for (std::size_t i = 0; i < m.rows; ++i) mesh.metrics.push_back({m(i, 0), m(i, 1), m(i, 2)});
   }
-  if (!field.empty()) mesh.metrics = io::metrics_at(io::field_source(field, param_texts(params)), field, mesh.sites);
   return mesh;
 }
 
-Mesh3 tetrahedral_mesh(const py::handle& points, const py::handle& tetrahedra, const py::handle& metrics, const py::handle& triangles,
-                       const std::string& field, const py::dict& params) {
+// A field's metrics at the vertices, when one is named (on the worker: a background mesh is read
+// and searched there).
+void apply_field(Mesh& mesh, const std::string& field, const std::vector<std::string>& params) {
+  if (!field.empty()) mesh.metrics = io::metrics_at(io::field_source(field, params), field, mesh.sites);
+}
+void apply_field(Mesh3& mesh, const std::string& field, const std::vector<std::string>& params) {
+  if (!field.empty()) mesh.metrics = io::metrics3_at(field, params, mesh.vertices);
+}
+
+// What the report says the metrics came from: the CLI's "--field NAME", or nothing (given).
+std::string source_of(const std::string& field) { return field.empty() ? "" : "--field " + field; }
+
+Mesh3 tetrahedral_mesh(const py::handle& points, const py::handle& tetrahedra, const py::handle& metrics, const py::handle& triangles) {
   const Numbers x = exact_numbers(points, "points", 3);
   Mesh3 mesh;
   for (std::size_t i = 0; i < x.rows; ++i) mesh.vertices.push_back({x(i, 0), x(i, 1), x(i, 2)});
@@ -247,17 +266,19 @@ Mesh3 tetrahedral_mesh(const py::handle& points, const py::handle& tetrahedra, c
     const Numbers m = exact_numbers(metrics, "metrics", 6);
     for (std::size_t i = 0; i < m.rows; ++i) mesh.metrics.push_back({m(i, 0), m(i, 1), m(i, 2), m(i, 3), m(i, 4), m(i, 5)});
   }
-  if (!field.empty()) mesh.metrics = io::metrics3_at(field, param_texts(params), mesh.vertices);
   return mesh;
 }
 
 // The API's certificate of mesh, interruptibly; `cells` names its cells in the progress line.
 template <class R, class MeshT, class O>
-R certified(MeshT mesh, const O& o, std::size_t count, const char* cells, const py::object& progress) {
+R certified(MeshT mesh, const O& o, const std::string& field, const py::dict& params, std::size_t count, const char* cells,
+            const py::object& progress) {
   return interruptible<R>(
-      [mesh = std::move(mesh), o, count, cells](const auto& say) {
+      [mesh = std::move(mesh), o, field, params = param_texts(params), count, cells](const auto& say) mutable {
+        apply_field(mesh, field, params);
         say("certifying " + std::to_string(count) + " " + cells);
         R r{mesh, certify(mesh, {}, o)};
+        r.certificate.verdict.metric_source = source_of(field);
         say("done");
         return r;
       },
@@ -267,19 +288,19 @@ R certified(MeshT mesh, const O& o, std::size_t count, const char* cells, const 
 Result2 certify2(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const py::handle& edges,
                  const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
   const auto o = oracle_options<CertifyOptions>(options_from(options));
-  Mesh mesh = triangle_mesh(points, triangles, metrics, field, params);
+  Mesh mesh = triangle_mesh(points, triangles, metrics);
   if (!edges.is_none())
     for (const auto& e : index_rows<2>(edges, "edges")) mesh.edges.push_back({e[0], e[1]});
   const std::size_t count = mesh.triangles.size();
-  return certified<Result2>(std::move(mesh), o, count, "triangles", progress);
+  return certified<Result2>(std::move(mesh), o, field, params, count, "triangles", progress);
 }
 
 Result3 certify3(const py::handle& points, const py::handle& tetrahedra, const py::handle& metrics, const py::handle& triangles,
                  const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
   const auto o = oracle_options<Certify3Options>(options_from(options));
-  Mesh3 mesh = tetrahedral_mesh(points, tetrahedra, metrics, triangles, field, params);
+  Mesh3 mesh = tetrahedral_mesh(points, tetrahedra, metrics, triangles);
   const std::size_t count = mesh.tetrahedra.size();
-  return certified<Result3>(std::move(mesh), o, count, "tetrahedra", progress);
+  return certified<Result3>(std::move(mesh), o, field, params, count, "tetrahedra", progress);
 }
 
 // Exact numbers back to Python: a float64 array when every one is a double, else rows of
@@ -290,8 +311,8 @@ py::object to_python(const std::vector<std::vector<Rational>>& rows, std::size_t
   d.reserve(rows.size() * cols);
   for (const auto& r : rows)
     for (const auto& q : r) {
-      const double x = q.convert_to<double>();
-      doubles = doubles && Rational(x) == q;
+      const double x = q.convert_to<double>();  // ±∞ beyond the doubles (a file may hold 1e310)
+      doubles = doubles && std::isfinite(x) && Rational(x) == q;
       d.push_back(x);
     }
   if (doubles) {
@@ -317,8 +338,8 @@ py::array_t<std::int64_t> to_python(const std::vector<std::array<int, K>>& rows)
   return a;
 }
 
-py::dict read_file(const std::string& path, const std::string& metric, const std::string& format) {
-  const MeshFile f = read_mesh(path, metric, format);
+py::dict read_file(const std::string& path, const std::string& metric, const std::string& format, const py::object& progress) {
+  const MeshFile f = interruptible<MeshFile>([path, metric, format](const Say&) { return read_mesh(path, metric, format); }, progress);
   py::dict d;
   d["dimension"] = f.dimension;
   d["metric_source"] = f.metric_source;
@@ -356,27 +377,29 @@ struct DualResult {
   Mesh mesh;
   oracle::Diagram diagram;
   oracle::MeshDual dual;
-  std::string metric_source;  // "the metrics given" or "field NAME", for the text
+  std::string metric_source;  // "--field NAME", or "" (the metrics given)
 };
 
 DualResult dual(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const std::string& field,
                 const py::dict& params, bool exact_only, int threads, const std::string& name, const py::object& progress) {
-  Mesh mesh = triangle_mesh(points, triangles, metrics, field, params);
+  Mesh mesh = triangle_mesh(points, triangles, metrics);
   if (mesh.triangles.empty()) throw std::invalid_argument(name + ": the mesh has no triangles");
-  if (mesh.metrics.empty()) throw std::invalid_argument(name + ": has no metric, which the diagram needs (give metrics or field)");
-  check_input(mesh);
-  Mesh sites;
-  sites.sites = mesh.sites, sites.metrics = mesh.metrics;
-  try {
-    sites.domain = geometry::boundary_polygon(mesh);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(name + ": " + e.what());
-  }
+  if (mesh.metrics.empty() && field.empty())
+    throw std::invalid_argument(name + ": has no metric, which the diagram needs (give metrics or field)");
   oracle::DiagramOptions o;
   o.exact_only = exact_only, o.threads = threads;
   return interruptible<DualResult>(
-      [mesh = std::move(mesh), sites = std::move(sites), o, name, source = field.empty() ? std::string("the metrics given") : "field " + field](
-          const auto& say) mutable {
+      [mesh = std::move(mesh), o, name, field, params = param_texts(params)](const auto& say) mutable {
+        apply_field(mesh, field, params);
+        check_input(mesh);
+        Mesh sites;
+        sites.sites = mesh.sites, sites.metrics = mesh.metrics;
+        try {
+          sites.domain = geometry::boundary_polygon(mesh);
+        } catch (const std::invalid_argument& e) {
+          throw std::invalid_argument(name + ": " + e.what());
+        }
+        const std::string source = source_of(field);
         o.progress = say;
         try {
           oracle::Diagram d = oracle::compute_diagram(sites, o);
@@ -456,6 +479,8 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
       throw std::invalid_argument("parameter \"" + key + "\": not one of --algo " + algo + "'s (" + names + ")");
     }
     values[key] = io::option_double(key, v.cast<std::string>());
+    const auto spec = std::find_if(entry->parameters.begin(), entry->parameters.end(), [&](const auto& p) { return p.name == key; });
+    if (spec->flag && values[key] != 0 && values[key] != 1) throw std::invalid_argument("parameter \"" + key + "\": a flag, True or False");
   }
   refiners::common::Budget budget;
   if (!max_vertices.empty()) {
@@ -486,16 +511,21 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
     const auto& m = run.result.mesh;
     Mesh3 exact;
     std::vector<std::vector<Rational>> p, g;
-    for (const auto& v : m.vertices) exact.vertices.push_back({Rational(v.x), Rational(v.y), Rational(v.z)});
-    for (const auto& M : m.metrics) exact.metrics.push_back({M.m11, M.m12, M.m13, M.m22, M.m23, M.m33});
+    const auto q = [](double x) { return rational_from_double(x); };
+    for (const auto& v : m.vertices) exact.vertices.push_back({q(v.x), q(v.y), q(v.z)});
+    for (const auto& M : m.metrics) exact.metrics.push_back({q(M.m11), q(M.m12), q(M.m13), q(M.m22), q(M.m23), q(M.m33)});
     exact.tetrahedra = m.tetrahedra, exact.triangles = m.triangles;
     for (const auto& v : exact.vertices) p.push_back({v.x, v.y, v.z});
     for (const auto& s : exact.metrics) g.push_back({s.m11, s.m12, s.m13, s.m22, s.m23, s.m33});
-    Certify3Options co;
-    co.rho0 = Rational(values.at("rho0")), co.gamma0 = Rational(values.at("gamma0")), co.metric = true;
     out["points"] = to_python(p, 3), out["cells"] = to_python(m.tetrahedra), out["triangles"] = to_python(m.triangles);
     out["metrics"] = to_python(g, 6);
-    out["certificate"] = interruptible<Result3>([exact, co](const auto&) { return Result3{exact, certify(exact, {}, co)}; }, progress);
+    out["certificate"] = interruptible<Result3>(
+        [exact, rho0 = values.at("rho0"), gamma0 = values.at("gamma0"), field_name](const Say&) {
+          io::RunCertificate3 c = io::certify_run3(exact, rho0, gamma0, 0, "--field " + field_name);
+          const bool holds = c.verdict.holds;
+          return Result3{exact, Certificate3{holds, std::move(c.report), std::move(c.verdict)}};
+        },
+        progress);
     out["consistent"] = run.result.consistent, out["stop_reason"] = run.result.stop_reason, out["lines"] = run.report;
     out["dimension"] = 3;
     return out;
@@ -520,8 +550,8 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
       where, progress);
   const auto& m = run.result.mesh;
   std::vector<std::vector<Rational>> p, g;
-  for (const auto& v : m.sites) p.push_back({Rational(v.x), Rational(v.y)});
-  for (const auto& M : m.metrics) g.push_back({Rational(M.m11), Rational(M.m12), Rational(M.m22)});
+  for (const auto& v : m.sites) p.push_back({rational_from_double(v.x), rational_from_double(v.y)});
+  for (const auto& M : m.metrics) g.push_back({rational_from_double(M.m11), rational_from_double(M.m12), rational_from_double(M.m22)});
   std::vector<std::array<int, 2>> segments;
   for (const auto& e : m.segments) segments.push_back({e.first, e.second});
   out["points"] = to_python(p, 2), out["cells"] = to_python(m.triangles), out["edges"] = to_python(segments);
@@ -531,6 +561,20 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
   return out;
 }
 
+}  // namespace
+}  // namespace anisocert::python
+
+namespace anisocert::python {
+namespace {
+// A certificate's Python face: holds, json(), text(name), svg(caption).
+template <class R>
+void bind_certificate(py::module_& m, const char* name) {
+  py::class_<R>(m, name)
+      .def_property_readonly("holds", [](const R& r) { return r.certificate.holds; })
+      .def("json", [](const R& r) { return r.certificate.json(); })
+      .def("text", [](const R& r, const std::string& title) { return r.certificate.text(title); })
+      .def("svg", [](const R& r, const std::string& caption) { return io::certify_svg(r.mesh, r.certificate.report, caption); });
+}
 }  // namespace
 }  // namespace anisocert::python
 
@@ -545,21 +589,15 @@ PYBIND11_MODULE(_anisocert, m) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });
-  py::class_<Result2>(m, "Certificate2")
-      .def_property_readonly("holds", [](const Result2& r) { return r.certificate.holds; })
-      .def("json", [](const Result2& r) { return r.certificate.json(); })
-      .def("text", [](const Result2& r, const std::string& name) { return r.certificate.text(name); })
-      .def("svg", [](const Result2& r, const std::string& caption) { return io::certify_svg(r.mesh, r.certificate.report, caption); });
-  py::class_<Result3>(m, "Certificate3")
-      .def_property_readonly("holds", [](const Result3& r) { return r.certificate.holds; })
-      .def("json", [](const Result3& r) { return r.certificate.json(); })
-      .def("text", [](const Result3& r, const std::string& name) { return r.certificate.text(name); })
-      .def("svg", [](const Result3& r, const std::string& caption) { return io::certify_svg(r.mesh, r.certificate.report, caption); });
+  bind_certificate<Result2>(m, "Certificate2");
+  bind_certificate<Result3>(m, "Certificate3");
   py::class_<DualResult>(m, "Dual")
       .def_property_readonly("is_dual", [](const DualResult& r) { return r.dual.is_dual(); })
       .def_property_readonly("theorem7_disagreement", [](const DualResult& r) { return r.diagram.theorem7.disagreement; })
-      .def("json", [](const DualResult& r) { return io::dual_json(r.diagram, r.dual, "").dump(); })
-      .def("text", [](const DualResult& r, const std::string& name) { return io::dual_text(r.diagram, r.dual, name, r.metric_source); })
+      .def("json", [](const DualResult& r) { return io::dual_json(r.diagram, r.dual, r.metric_source).dump(); })
+      .def("text", [](const DualResult& r, const std::string& name) {
+        return io::dual_text(r.diagram, r.dual, name, r.metric_source.empty() ? "the metrics given" : r.metric_source);
+      })
       .def("svg", [](const DualResult& r, const std::string& caption) { return io::dual_svg(r.mesh, r.diagram, r.dual, caption); });
   py::class_<oracle::Diagram>(m, "Diagram")
       .def_property_readonly("theorem7_disagreement", [](const oracle::Diagram& d) { return d.theorem7.disagreement; })

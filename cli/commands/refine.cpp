@@ -186,16 +186,10 @@ int run_refine3(const RefineOptions& o, const refiners::RefinerEntry& entry, con
   file.triangle_refs.assign(m.triangles.size(), 0);
   file.vertex_refs.assign(m.vertices.size(), 0);
   // The certifier's verdict on the mesh as written (the rationals the files hold).
-  oracle::Certify3Options co;
-  co.rho0 = rational_from_double(values.at("rho0")), co.gamma0 = rational_from_double(values.at("gamma0"));
-  co.threads = o.threads;
-  co.metric = true;  // edge lengths, quality, dihedral angles and UGAWG's measures: measured, no bound
   if (!o.quiet) progress("refine: certifying the mesh (" + std::to_string(m.tetrahedra.size()) + " tetrahedra)");
-  const oracle::Certify3Report report = oracle::certify_mesh3(file.mesh3, co);
-  io::BoundTexts bounds;
-  bounds.rho0 = as_printed(values.at("rho0")), bounds.gamma0 = as_printed(values.at("gamma0"));
-  io::CertifyVerdict verdict = io::certify_verdict(report, co, file.mesh3, bounds);
-  verdict.metric_source = "--field " + field_name;
+  const io::RunCertificate3 certificate = io::certify_run3(file.mesh3, values.at("rho0"), values.at("gamma0"), o.threads, "--field " + field_name);
+  const oracle::Certify3Report& report = certificate.report;
+  const io::CertifyVerdict& verdict = certificate.verdict;
   std::vector<OutputFile> files;
   std::string written;
   std::vector<std::string> paths;

@@ -414,4 +414,16 @@ void write_report_json(std::ostream& out, const CertifyVerdict& v, const Report&
 void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::CertifyReport& r) { write_report_json(out, v, r); }
 void write_json(std::ostream& out, const CertifyVerdict& v, const oracle::Certify3Report& r) { write_report_json(out, v, r); }
 
+RunCertificate3 certify_run3(const geometry::Mesh3<Rational>& mesh, double rho0, double gamma0, int threads, const std::string& metric_source) {
+  oracle::Certify3Options o;
+  o.rho0 = rational_from_double(rho0), o.gamma0 = rational_from_double(gamma0), o.threads = threads;
+  o.metric = true;  // edge lengths, quality, dihedral angles and UGAWG's measures: measured, no bound
+  RunCertificate3 c{oracle::certify_mesh3(mesh, o), {}};
+  BoundTexts bounds;
+  bounds.rho0 = as_printed(rho0), bounds.gamma0 = as_printed(gamma0);
+  c.verdict = certify_verdict(c.report, o, mesh, bounds);
+  c.verdict.metric_source = metric_source;
+  return c;
+}
+
 }  // namespace anisocert::io

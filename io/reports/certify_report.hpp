@@ -57,6 +57,16 @@ CertifyVerdict certify_verdict(const oracle::CertifyReport& r, const oracle::Cer
 CertifyVerdict certify_verdict(const oracle::Certify3Report& r, const oracle::Certify3Options& o,
                                const geometry::Mesh3<Rational>& mesh, const BoundTexts& bounds);
 
+// The certificate of a 3D star refiner's run on its own mesh (the rationals its doubles are):
+// valid, locally uniform, ρ₀ and γ₀ (the run's parameters, their texts as printed), the metric
+// measures without bounds; metric_source names the field ("--field NAME"). `anisocert refine` and
+// the Python module's refine give the same report.
+struct RunCertificate3 {
+  oracle::Certify3Report report;
+  CertifyVerdict verdict;
+};
+RunCertificate3 certify_run3(const geometry::Mesh3<Rational>& mesh, double rho0, double gamma0, int threads, const std::string& metric_source);
+
 std::string full_text(const CertifyVerdict& v, const std::string& input);
 std::string one_line(const CertifyVerdict& v);
 // The --json report, written as it goes (a list of a million witnesses is never one JSON value in

@@ -172,13 +172,10 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
     progress: a callable given progress lines. name: how the report's text names the mesh.
     points may also be a Mesh from `read` (then no cells; its metrics unless metrics or field)."""
     if isinstance(points, Mesh):
-        if cells is not None:
-            raise ValueError("cells: given beside a Mesh, which has its own (pass metrics=... by name)")
         mesh = points
-        points, cells = mesh.points, mesh.cells
-        metrics = mesh.metrics if metrics is None and field is None else metrics
         edges = mesh.edges if edges is None and mesh.dimension == 2 else edges
         triangles = mesh.triangles if triangles is None and mesh.dimension == 3 else triangles
+    points, cells, metrics = _mesh_or_arrays(points, cells, metrics, field)
     if cells is None:
         raise ValueError("cells: missing (give the triangles or tetrahedra)")
     pts = _numbers(points, "points", [2, 3])
@@ -195,8 +192,13 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
         raise ValueError("triangles: declared boundary triangles are for tetrahedral meshes (give edges= for triangles)")
     if params is not None and field is None:
         raise ValueError("params: given without a field")
-    if length_range is not None and (isinstance(length_range, str) or not hasattr(length_range, "__len__") or len(length_range) != 2):
+    if length_range is not None and (isinstance(length_range, str) or not hasattr(length_range, "__len__") or len(length_range) != 2
+                                     or any(end is None for end in length_range)):
         raise ValueError(f"length_range: expected (low, high), got {length_range!r}")
+    if checks is not None:
+        checks = [checks] if isinstance(checks, str) else checks
+        if not isinstance(checks, (list, tuple, set)) or not all(isinstance(c, str) for c in checks):
+            raise ValueError(f"checks: expected names among valid, uniform, metric, got {checks!r}")
     bounds = {"rho0": rho0, "gamma0": gamma0, "min_quality": min_quality, "min_angle": min_angle}
     if metrics is not None and field is not None:
         raise ValueError("metrics and field: give one metric source")
@@ -208,7 +210,7 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
     if length_range is not None:
         options["length_lo"], options["length_hi"] = _bound(length_range[0], "length_range"), _bound(length_range[1], "length_range")
     if checks is not None:
-        options["checks"] = [checks] if isinstance(checks, str) else list(checks)
+        options["checks"] = list(checks)
     options["all_witnesses"], options["threads"] = _flag(all_witnesses, "all_witnesses"), _integer(threads, "threads", 0, 1024)
     progress = _callback(progress)
     m = None if metrics is None else _symmetric(metrics, dimension)
@@ -220,7 +222,7 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
         native = _anisocert.certify3(pts, _indices(cells, "cells", 4), m,
                                      None if triangles is None else _indices(triangles, "triangles", 3), field, params,
                                      options, progress)
-    return Report(native, name)
+    return Report(native, str(name))
 
 
 def _params(params):
@@ -254,9 +256,9 @@ def dual(points, cells=None, metrics=None, *, field=None, params=None, exact_onl
         raise ValueError("params: given without a field")
     m = None if metrics is None else _symmetric(metrics, 2)
     native = _anisocert.dual(_numbers(points, "points", [2]), _indices(cells, "cells", 3), m, "" if field is None else str(field),
-                             _params(params), _flag(exact_only, "exact_only"), _integer(threads, "threads", 0, 1024), name,
+                             _params(params), _flag(exact_only, "exact_only"), _integer(threads, "threads", 0, 1024), str(name),
                              _callback(progress))
-    return DualReport(native, name)
+    return DualReport(native, str(name))
 
 
 def diagram(sites, metrics, domain, *, exact_only=False, threads=0, progress=None, name="sites"):
@@ -264,7 +266,7 @@ def diagram(sites, metrics, domain, *, exact_only=False, threads=0, progress=Non
     restricted to the simple counter-clockwise polygon ``domain`` (c, 2) (``anisocert diagram``).
     Returns a DiagramReport: the JSON's fields (docs/oracle.md) as attributes, ``svg()``."""
     native = _anisocert.diagram(_numbers(sites, "sites", [2]), _symmetric(metrics, 2), _numbers(domain, "domain", [2]),
-                                _flag(exact_only, "exact_only"), _integer(threads, "threads", 0, 1024), name, _callback(progress))
+                                _flag(exact_only, "exact_only"), _integer(threads, "threads", 0, 1024), str(name), _callback(progress))
     return DiagramReport(native)
 
 
@@ -278,18 +280,22 @@ def refine(domain="square", field=None, algo="star", *, params=None, max_vertice
     (3D), ``consistent``, ``stop_reason``, the report ``lines``, and for 3D the ``certificate``."""
     if not isinstance(domain, str):
         domain = _numbers(domain, "domain", [2])
-    d = _anisocert.refine(domain, str(algo), "" if field is None else str(field), _params(params), _params(parameters),
+    # normalized_metric=True is the CLI's --normalized-metric: "-" for "_", a flag as 1 or 0.
+    named = {k.replace("_", "-"): (int(v) if isinstance(v, (bool, np.bool_)) else v) for k, v in parameters.items()}
+    d = _anisocert.refine(domain, str(algo), "" if field is None else str(field), _params(params), _params(named),
                           "" if max_vertices is None else _token(max_vertices, "max_vertices"),
                           "" if max_seconds is None else _token(max_seconds, "max_seconds"),
                           _integer(seed, "seed", 0, 2**32 - 1), _callback(progress))
     return Refinement(d)
 
 
-def read(path, metric=None, format=None):
+def read(path, metric=None, format=None, *, progress=None):
     """Reads a mesh in any format ``anisocert certify`` reads (Medit, Gmsh, Triangle, FreeFem/BAMG,
     TetGen, VTK .vtu, JSON), with per-vertex metrics from ``metric`` (a .sol, a .mtr) or the file's
     own. Every number is the rational its text denotes."""
-    d = _anisocert.read(str(path), "" if metric is None else str(metric), "" if format is None else format)
+    if format is not None and not isinstance(format, str):
+        raise ValueError(f"format: expected a format's name (medit, gmsh, triangle, freefem, vtu, json, ...), got {format!r}")
+    d = _anisocert.read(str(path), "" if metric is None else str(metric), "" if format is None else format, _callback(progress))
 
     def exact(x):
         if x is None or isinstance(x, np.ndarray):

@@ -121,6 +121,27 @@ def test_decimal_text_is_exact_and_floats_are_the_doubles_they_are():
     assert floats["locally_uniform"]["tie_count"] == 0
 
 
+def test_a_number_beyond_the_doubles_is_read(tmp_path):
+    # 1e310 is beyond the doubles and within the readers' limit (2^1100): a Fraction, as the CLI reads it.
+    mesh = tmp_path / "big.mesh"
+    mesh.write_text("MeshVersionFormatted 2\nDimension 2\nVertices\n3\n0 0 1\n1e310 0 1\n0 1 1\nTriangles\n1\n1 2 3 1\nEnd\n")
+    m = anisocert.read(mesh)
+    assert m.points.dtype == object and m.points[1][0] == fractions.Fraction(10) ** 310
+    assert anisocert.certify(m).holds
+
+
+def test_interrupt_stops_a_refiner():
+    # The worker stops at its next progress line (a refiner prints about one a second).
+    timer = threading.Timer(1.5, _thread.interrupt_main)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        anisocert.refine("cube", "ugawg-linear", params={"h0": "0.02"})  # some 35 s if not stopped
+    time.sleep(1.5)  # its next line
+    cpu = time.process_time()
+    time.sleep(1)
+    assert time.process_time() - cpu < 0.3  # no worker left computing
+
+
 def test_wide_numbers_are_not_narrowed():
     # Numbers no double holds are read as they are: were they rounded to doubles first, each pair
     # of reports below would be equal.
@@ -198,6 +219,10 @@ TRIANGLE = (np.array([[0.0, 0], [1, 0], [0, 1]]), np.array([[0, 1, 2]]))
     (lambda: anisocert.certify(*TRIANGLE, triangles=[[0, 1, 2]]), "triangles: declared boundary triangles are for tetrahedral meshes"),
     (lambda: anisocert.certify(*TRIANGLE, progress=5), "progress: expected a callable"),
     (lambda: anisocert.certify_meshio("mesh.vtu"), "mesh: expected a meshio.Mesh"),
+    (lambda: anisocert.certify(*TRIANGLE, [[1, 0, 1]] * 3, length_range=(None, "0.5")), "length_range: expected (low, high)"),
+    (lambda: anisocert.certify(*TRIANGLE, checks=[1]), "checks: expected names"),
+    (lambda: anisocert.certify(*TRIANGLE, checks=5), "checks: expected names"),
+    (lambda: anisocert.read(SOURCE / "tests" / "peers" / "fixtures" / "gmsh-box-h0.3.msh", format=3), "format: expected"),
 ])
 def test_bad_input_raises_value_error_on_one_line(call, message):
     with pytest.raises(ValueError) as e:
@@ -240,11 +265,11 @@ def test_field_as_the_cli(tmp_path):
     mesh = PEERS / "gmsh-lshape-shock-coarse.msh"
     expected = cli_report(mesh, None, tmp_path, "--field", "shock", "--param", "h=0.1")
     report = anisocert.certify(anisocert.read(mesh), field="shock", params={"h": "0.1"})
-    assert without_source(report.to_dict()) == without_source(expected)
+    assert report.to_dict() == expected  # the metric's source too: "--field shock"
     box = PEERS / "gmsh-box-h0.3.msh"
     expected3 = cli_report(box, None, tmp_path, "--field", "ugawg-linear", "--param", "h0=0.05")
     report3 = anisocert.certify(anisocert.read(box), field="ugawg-linear", params={"h0": 0.05})
-    assert without_source(report3.to_dict()) == without_source(expected3)
+    assert report3.to_dict() == expected3
     square = anisocert.read(FORMATS / "freefem" / "square_hole.msh", metric=FORMATS / "freefem" / "square_hole.mtr")
     assert without_source(anisocert.certify(square, field="shock", params={"h": "0.1"}).to_dict()) == without_source(
         cli_report(FORMATS / "freefem" / "square_hole.msh", None, tmp_path, "--field", "shock", "--param", "h=0.1"))
@@ -270,6 +295,7 @@ def test_refine_dual_as_the_cli(tmp_path):
     report = anisocert.dual(written, progress=lines.append)
     expected = json.loads((tmp_path / "dual.json").read_text())
     got = report.to_dict()
+    assert got["input"]["metric_source"] == "" and anisocert.dual(written.points, written.cells, field="shock", params={"alpha": 3}).input.metric_source == "--field shock"
     for d in (got, expected):  # the time taken, and the metric file's name the module is not given
         d.pop("seconds"), d["input"].pop("metric_source")
     assert report.is_dual and got == expected
@@ -286,7 +312,9 @@ def test_refine_3d_is_certified_as_the_cli(tmp_path):
     assert run.consistent and run.certificate.holds
     written = anisocert.read(out)
     assert np.array_equal(run.points, written.points) and np.array_equal(run.cells, written.cells)
-    assert without_source(run.certificate.to_dict()) == without_source(json.loads(js.read_text()))
+    assert run.certificate.to_dict() == json.loads(js.read_text())
+    tight = anisocert.refine("cube", "constant", params={"m11": 25, "m22": 25, "m33": 25}, rho0="3.1")
+    assert tight.certificate.radius_edge.threshold == "3.1"  # as printed, as the CLI prints it
 
 
 def test_diagram_as_the_cli(tmp_path):
@@ -312,6 +340,7 @@ def test_diagram_as_the_cli(tmp_path):
     (lambda: anisocert.refine(max_vertices="1.5"), "max_vertices 1.5: expected a positive whole number"),
     (lambda: anisocert.dual(TRIANGLE[0], TRIANGLE[1]), "has no metric"),
     (lambda: anisocert.refine(seed=-1), "seed: expected a whole number in [0, 4294967295]"),
+    (lambda: anisocert.refine(algo="ls", normalized_metric=0.5), 'parameter "normalized-metric": a flag'),
     (lambda: anisocert.diagram(np.zeros((0, 2)), np.zeros((0, 3)), [[0, 0], [1, 0], [0, 1]]), "sites: none"),
     (lambda: anisocert.diagram([[0.2, 0.2], [0.2, 0.2]], [[1, 0, 1]] * 2, [[0, 0], [1, 0], [0, 1]]), "sites[0] and sites[1] coincide"),
     (lambda: anisocert.diagram([[0, 0]], [[1, 0, 1]], [[0, 0], [0, 1], [1, 0]]), "domain"),
