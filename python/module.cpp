@@ -286,11 +286,18 @@ R certified(MeshT mesh, const O& o, const std::string& field, const py::dict& pa
 }
 
 Result2 certify2(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const py::handle& edges,
-                 const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
+                 const py::handle& domain, const py::handle& segments, const std::string& field, const py::dict& params,
+                 const py::dict& options, const py::object& progress) {
   const auto o = oracle_options<CertifyOptions>(options_from(options));
   Mesh mesh = triangle_mesh(points, triangles, metrics);
   if (!edges.is_none())
     for (const auto& e : index_rows<2>(edges, "edges")) mesh.edges.push_back({e[0], e[1]});
+  if (!segments.is_none())
+    for (const auto& e : index_rows<2>(segments, "segments")) mesh.segments.push_back({e[0], e[1]});
+  if (!domain.is_none()) {
+    const Numbers c = exact_numbers(domain, "domain", 2);
+    for (std::size_t i = 0; i < c.rows; ++i) mesh.domain.push_back({c(i, 0), c(i, 1)});
+  }
   const std::size_t count = mesh.triangles.size();
   return certified<Result2>(std::move(mesh), o, field, params, count, "triangles", progress);
 }
@@ -355,9 +362,14 @@ py::dict read_file(const std::string& path, const std::string& metric, const std
     std::vector<std::vector<Rational>> p, g;
     for (const auto& v : m.sites) p.push_back({v.x, v.y});
     for (const auto& s : m.metrics) g.push_back({s.m11, s.m12, s.m22});
-    std::vector<std::array<int, 2>> edges;
+    std::vector<std::array<int, 2>> edges, segments;
     for (const auto& e : m.edges) edges.push_back({e.first, e.second});
+    for (const auto& e : m.segments) segments.push_back({e.first, e.second});
+    std::vector<std::vector<Rational>> corners;
+    for (const auto& c : m.domain) corners.push_back({c.x, c.y});
     d["points"] = to_python(p, 2), d["cells"] = to_python(m.triangles), d["edges"] = to_python(edges);
+    d["segments"] = to_python(segments);
+    d["domain"] = m.domain.empty() ? py::object(py::none()) : to_python(corners, 2);
     d["metrics"] = m.metrics.empty() ? py::object(py::none()) : to_python(g, 3);
   }
   return d;

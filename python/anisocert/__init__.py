@@ -25,11 +25,12 @@ __all__ = ["certify", "certify_meshio", "read", "dual", "diagram", "refine", "Me
 class Mesh:
     """A mesh as `read` returns it: points (n, 2) or (n, 3), cells (m, 3) triangles or (m, 4)
     tetrahedra, metrics (n, 3) or (n, 6) or None, the declared edges (2D) or boundary triangles
-    (3D). Numbers are float64 arrays when every one is a double, else object arrays of Fractions."""
+    (3D), and a JSON mesh's domain polygon and constrained segments (2D). Numbers are float64 arrays when every one is a double, else object arrays of Fractions."""
 
-    def __init__(self, points, cells, metrics=None, edges=None, triangles=None, metric_source=""):
+    def __init__(self, points, cells, metrics=None, edges=None, triangles=None, metric_source="", domain=None, segments=None):
         self.points, self.cells, self.metrics = points, cells, metrics
         self.edges, self.triangles, self.metric_source = edges, triangles, metric_source
+        self.domain, self.segments = domain, segments  # a JSON mesh's domain polygon and constrained segments (2D)
 
     @property
     def dimension(self):
@@ -150,8 +151,8 @@ def _bound(x, what):
 
 
 def certify(points, cells=None, metrics=None, *, field=None, params=None, checks=None, rho0=None, gamma0=None,
-            length_range=None, min_quality=None, min_angle=None, edges=None, triangles=None, all_witnesses=False,
-            threads=0, progress=None, name="mesh"):
+            length_range=None, min_quality=None, min_angle=None, edges=None, triangles=None, domain=None, segments=None,
+            all_witnesses=False, threads=0, progress=None, name="mesh"):
     """Certifies a triangle mesh (points (n, 2), cells (m, 3)) or a tetrahedral one (points (n, 3),
     cells (m, 4)), as ``anisocert certify`` does. Returns a Report; ``report.holds`` is the verdict.
 
@@ -166,7 +167,8 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
         (radius-edge ratio, distortion, edge lengths, mean-ratio quality, angles in degrees);
         default none (measured, not judged).
     edges (2D): the declared boundary edges (m, 2); triangles (3D): the declared boundary
-        triangles (m, 3), which must be exactly the boundary faces.
+        triangles (m, 3), which must be exactly the boundary faces. domain (2D): the polygon the
+        triangles must cover (c, 2), counter-clockwise; segments (2D): edges the mesh must hold.
     all_witnesses: describe every witness (default: the first 100 of each list, all counted).
     threads: threads for the locally uniform check (0, the default: one per core; same report).
     progress: a callable given progress lines. name: how the report's text names the mesh.
@@ -174,6 +176,8 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
     if isinstance(points, Mesh):
         mesh = points
         edges = mesh.edges if edges is None and mesh.dimension == 2 else edges
+        domain = mesh.domain if domain is None and mesh.dimension == 2 else domain
+        segments = mesh.segments if segments is None and mesh.dimension == 2 and mesh.segments is not None and len(mesh.segments) else segments
         triangles = mesh.triangles if triangles is None and mesh.dimension == 3 else triangles
     points, cells, metrics = _mesh_or_arrays(points, cells, metrics, field)
     if cells is None:
@@ -186,6 +190,8 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
                          "or tetrahedra (m, 4)")
     if len(shape) == 2 and shape[0] == 0:
         raise ValueError(f"{name}: has no {'triangles' if dimension == 2 else 'tetrahedra'}")
+    if dimension == 3 and (domain is not None or segments is not None):
+        raise ValueError("domain, segments: a polygon and its segments are for triangle meshes")
     if dimension == 3 and edges is not None:
         raise ValueError("edges: declared boundary edges are for triangle meshes (give triangles= for tetrahedra)")
     if dimension == 2 and triangles is not None:
@@ -217,7 +223,9 @@ def certify(points, cells=None, metrics=None, *, field=None, params=None, checks
     field, params = "" if field is None else str(field), _params(params)
     if dimension == 2:
         native = _anisocert.certify2(pts, _indices(cells, "cells", 3), m,
-                                     None if edges is None else _indices(edges, "edges", 2), field, params, options, progress)
+                                     None if edges is None else _indices(edges, "edges", 2),
+                                     None if domain is None else _numbers(domain, "domain", [2]),
+                                     None if segments is None else _indices(segments, "segments", 2), field, params, options, progress)
     else:
         native = _anisocert.certify3(pts, _indices(cells, "cells", 4), m,
                                      None if triangles is None else _indices(triangles, "triangles", 3), field, params,
@@ -302,7 +310,8 @@ def read(path, metric=None, format=None, *, progress=None):
             return x
         return np.array([[fractions.Fraction(t) for t in row] for row in x], dtype=object)
 
-    return Mesh(exact(d["points"]), d["cells"], exact(d["metrics"]), d.get("edges"), d.get("triangles"), d["metric_source"])
+    return Mesh(exact(d["points"]), d["cells"], exact(d["metrics"]), d.get("edges"), d.get("triangles"), d["metric_source"],
+                exact(d.get("domain")), d.get("segments"))
 
 
 def certify_meshio(mesh, metric=None, **options):

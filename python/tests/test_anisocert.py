@@ -76,6 +76,18 @@ def test_same_report_as_the_cli(mesh, metric, tmp_path):
     assert repr(report).startswith("<anisocert.Report")
 
 
+@pytest.mark.parametrize("extension", [".vtu", ".json", ".mesh"])
+def test_written_formats_read_as_the_cli(extension, tmp_path):
+    # The formats no peer fixture is in (VTK's .vtu, the project's JSON), written by the CLI.
+    out = tmp_path / f"run{extension}"
+    r = subprocess.run([BIN, "refine", "--algo", "bwy", "--field", "shock", "--param", "alpha=3", "--quiet", "-o", str(out)],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    expected = cli_report(out, None, tmp_path, "--field", "shock", "--param", "alpha=3")
+    report = anisocert.certify(anisocert.read(out), field="shock", params={"alpha": 3})
+    assert report.to_dict() == expected
+
+
 def test_bounds_as_the_cli(tmp_path):
     mesh, metric = FORMATS / "freefem" / "square_hole.msh", FORMATS / "freefem" / "square_hole.mtr"
     expected = cli_report(mesh, metric, tmp_path, "--rho0", "1.5", "--gamma0", "2", "--length-range", "0.7", "1.4",
