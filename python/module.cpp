@@ -5,7 +5,8 @@
 // passes through a lossy conversion. The checks are the C++ API's (api/anisocert.hpp), so the
 // reports are `anisocert certify --json`'s. Long calls run on a worker thread with the GIL
 // released; the caller's thread relays progress lines and checks for Ctrl-C every 0.1 s (on
-// KeyboardInterrupt the worker is left to finish on its own copy of the input, its result unused).
+// KeyboardInterrupt the worker stops at its next progress line, or, the certifier having none,
+// finishes on its own copy of the input, its result unused).
 #include "api/anisocert.hpp"
 #include "geometry/boundary_polygon.hpp"
 #include "geometry/builtin_polyhedra.hpp"
@@ -25,9 +26,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <chrono>
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <deque>
@@ -114,17 +115,12 @@ std::vector<std::string> param_texts(const py::dict& params) {
   return t;
 }
 
-// The options dictionary the Python layer builds: checks (a list), bounds as exact texts,
-// all_witnesses, threads.
-struct Options {
-  bool valid = true, uniform = true, metric = true, all_witnesses = false;
-  std::optional<Rational> rho0, gamma0, min_quality, min_angle;
-  std::optional<std::pair<Rational, Rational>> length_range;
-  int threads = 0;
-};
-
-Options options_from(const py::dict& d) {
-  Options o;
+// The options dictionary the Python layer builds (checks, a list; bounds as exact texts;
+// all_witnesses; threads) as the oracle's CertifyOptions or Certify3Options.
+template <class O>
+O options_from(const py::dict& d) {
+  O o;
+  o.metric = true;  // the CLI's default checks: valid, uniform, metric
   const auto number = [&](const char* key) -> std::optional<Rational> {
     if (!d.contains(key) || d[key].is_none()) return std::nullopt;
     try {
@@ -146,18 +142,9 @@ Options options_from(const py::dict& d) {
   const auto lo = number("length_lo"), hi = number("length_hi");
   if (lo.has_value() != hi.has_value()) throw std::invalid_argument("length_range: give both ends");
   if (lo) o.length_range = std::pair{*lo, *hi};
-  if (d.contains("all_witnesses")) o.all_witnesses = d["all_witnesses"].cast<bool>();
+  const bool all = d.contains("all_witnesses") && d["all_witnesses"].cast<bool>();
+  o.described_witnesses = all ? oracle::all_witnesses : oracle::default_described_witnesses;
   if (d.contains("threads")) o.threads = d["threads"].cast<int>();
-  return o;
-}
-
-template <class O>
-O oracle_options(const Options& p) {
-  O o;
-  o.valid = p.valid, o.uniform = p.uniform, o.metric = p.metric;
-  o.rho0 = p.rho0, o.gamma0 = p.gamma0, o.min_quality = p.min_quality, o.min_angle = p.min_angle, o.length_range = p.length_range;
-  o.described_witnesses = p.all_witnesses ? oracle::all_witnesses : oracle::default_described_witnesses;
-  o.threads = p.threads;
   return o;
 }
 
@@ -288,7 +275,7 @@ R certified(MeshT mesh, const O& o, const std::string& field, const py::dict& pa
 Result2 certify2(const py::handle& points, const py::handle& triangles, const py::handle& metrics, const py::handle& edges,
                  const py::handle& domain, const py::handle& segments, const std::string& field, const py::dict& params,
                  const py::dict& options, const py::object& progress) {
-  const auto o = oracle_options<CertifyOptions>(options_from(options));
+  const auto o = options_from<CertifyOptions>(options);
   Mesh mesh = triangle_mesh(points, triangles, metrics);
   if (!edges.is_none())
     for (const auto& e : index_rows<2>(edges, "edges")) mesh.edges.push_back({e[0], e[1]});
@@ -304,7 +291,7 @@ Result2 certify2(const py::handle& points, const py::handle& triangles, const py
 
 Result3 certify3(const py::handle& points, const py::handle& tetrahedra, const py::handle& metrics, const py::handle& triangles,
                  const std::string& field, const py::dict& params, const py::dict& options, const py::object& progress) {
-  const auto o = oracle_options<Certify3Options>(options_from(options));
+  const auto o = options_from<Certify3Options>(options);
   Mesh3 mesh = tetrahedral_mesh(points, tetrahedra, metrics, triangles);
   const std::size_t count = mesh.tetrahedra.size();
   return certified<Result3>(std::move(mesh), o, field, params, count, "tetrahedra", progress);
@@ -345,33 +332,41 @@ py::array_t<std::int64_t> to_python(const std::vector<std::array<int, K>>& rows)
   return a;
 }
 
+// A mesh's arrays for the Python layer: points, cells, metrics (None when there are none), and
+// the triangle mesh's declared edges, segments and domain polygon, or the tetrahedral mesh's
+// declared triangles.
+py::dict to_python(const Mesh3& m) {
+  std::vector<std::vector<Rational>> p, g;
+  for (const auto& v : m.vertices) p.push_back({v.x, v.y, v.z});
+  for (const auto& s : m.metrics) g.push_back({s.m11, s.m12, s.m13, s.m22, s.m23, s.m33});
+  py::dict d;
+  d["dimension"] = 3;
+  d["points"] = to_python(p, 3), d["cells"] = to_python(m.tetrahedra), d["triangles"] = to_python(m.triangles);
+  d["metrics"] = m.metrics.empty() ? py::object(py::none()) : to_python(g, 6);
+  return d;
+}
+
+py::dict to_python(const Mesh& m) {
+  std::vector<std::vector<Rational>> p, g, corners;
+  for (const auto& v : m.sites) p.push_back({v.x, v.y});
+  for (const auto& s : m.metrics) g.push_back({s.m11, s.m12, s.m22});
+  for (const auto& c : m.domain) corners.push_back({c.x, c.y});
+  std::vector<std::array<int, 2>> edges, segments;
+  for (const auto& e : m.edges) edges.push_back({e.first, e.second});
+  for (const auto& e : m.segments) segments.push_back({e.first, e.second});
+  py::dict d;
+  d["dimension"] = 2;
+  d["points"] = to_python(p, 2), d["cells"] = to_python(m.triangles), d["edges"] = to_python(edges);
+  d["segments"] = to_python(segments);
+  d["domain"] = m.domain.empty() ? py::object(py::none()) : to_python(corners, 2);
+  d["metrics"] = m.metrics.empty() ? py::object(py::none()) : to_python(g, 3);
+  return d;
+}
+
 py::dict read_file(const std::string& path, const std::string& metric, const std::string& format, const py::object& progress) {
   const MeshFile f = interruptible<MeshFile>([path, metric, format](const Say&) { return read_mesh(path, metric, format); }, progress);
-  py::dict d;
-  d["dimension"] = f.dimension;
+  py::dict d = f.dimension == 3 ? to_python(f.mesh3) : to_python(f.mesh);
   d["metric_source"] = f.metric_source;
-  if (f.dimension == 3) {
-    const auto& m = f.mesh3;
-    std::vector<std::vector<Rational>> p, g;
-    for (const auto& v : m.vertices) p.push_back({v.x, v.y, v.z});
-    for (const auto& s : m.metrics) g.push_back({s.m11, s.m12, s.m13, s.m22, s.m23, s.m33});
-    d["points"] = to_python(p, 3), d["cells"] = to_python(m.tetrahedra), d["triangles"] = to_python(m.triangles);
-    d["metrics"] = m.metrics.empty() ? py::object(py::none()) : to_python(g, 6);
-  } else {
-    const auto& m = f.mesh;
-    std::vector<std::vector<Rational>> p, g;
-    for (const auto& v : m.sites) p.push_back({v.x, v.y});
-    for (const auto& s : m.metrics) g.push_back({s.m11, s.m12, s.m22});
-    std::vector<std::array<int, 2>> edges, segments;
-    for (const auto& e : m.edges) edges.push_back({e.first, e.second});
-    for (const auto& e : m.segments) segments.push_back({e.first, e.second});
-    std::vector<std::vector<Rational>> corners;
-    for (const auto& c : m.domain) corners.push_back({c.x, c.y});
-    d["points"] = to_python(p, 2), d["cells"] = to_python(m.triangles), d["edges"] = to_python(edges);
-    d["segments"] = to_python(segments);
-    d["domain"] = m.domain.empty() ? py::object(py::none()) : to_python(corners, 2);
-    d["metrics"] = m.metrics.empty() ? py::object(py::none()) : to_python(g, 3);
-  }
   return d;
 }
 
@@ -505,12 +500,9 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
     budget.max_seconds = io::option_double("max_seconds", max_seconds);
     if (!(budget.max_seconds > 0)) throw std::invalid_argument("max_seconds " + max_seconds + ": expected a positive number");
   }
-  py::dict out;
   const bool named = py::isinstance<py::str>(domain);
   const std::string text = named ? domain.cast<std::string>() : "";
-  const bool three = named && (geometry::builtin_polyhedron(text) || text.ends_with(".off") || text.ends_with(".mesh") ||
-                               text.ends_with(".meshb") || text.ends_with(".msh"));
-  if (three) {
+  if (named && io::names_polyhedron(text)) {
     if (!entry->run3) throw std::invalid_argument("algo " + algo + " meshes polygons only: algo star meshes a 3D domain");
     const geometry::Polyhedron polyhedron = geometry::builtin_polyhedron(text) ? *geometry::builtin_polyhedron(text) : io::read_polyhedron_file(text);
     const std::string field_name = field.empty() ? "ugawg-linear" : field;
@@ -520,17 +512,8 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
           return entry->run3(refiners::common::Domain3(polyhedron), f, values, budget, seed, say);
         },
         text + ": ", progress);
-    const auto& m = run.result.mesh;
-    Mesh3 exact;
-    std::vector<std::vector<Rational>> p, g;
-    const auto q = [](double x) { return rational_from_double(x); };
-    for (const auto& v : m.vertices) exact.vertices.push_back({q(v.x), q(v.y), q(v.z)});
-    for (const auto& M : m.metrics) exact.metrics.push_back({q(M.m11), q(M.m12), q(M.m13), q(M.m22), q(M.m23), q(M.m33)});
-    exact.tetrahedra = m.tetrahedra, exact.triangles = m.triangles;
-    for (const auto& v : exact.vertices) p.push_back({v.x, v.y, v.z});
-    for (const auto& s : exact.metrics) g.push_back({s.m11, s.m12, s.m13, s.m22, s.m23, s.m33});
-    out["points"] = to_python(p, 3), out["cells"] = to_python(m.tetrahedra), out["triangles"] = to_python(m.triangles);
-    out["metrics"] = to_python(g, 6);
+    const Mesh3 exact = exact_mesh(run.result.mesh);
+    py::dict out = to_python(exact);
     out["certificate"] = interruptible<Result3>(
         [exact, rho0 = values.at("rho0"), gamma0 = values.at("gamma0"), field_name](const Say&) {
           io::RunCertificate3 c = io::certify_run3(exact, rho0, gamma0, 0, "--field " + field_name);
@@ -539,7 +522,6 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
         },
         progress);
     out["consistent"] = run.result.consistent, out["stop_reason"] = run.result.stop_reason, out["lines"] = run.report;
-    out["dimension"] = 3;
     return out;
   }
   io::DomainFile input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}, {}};
@@ -560,16 +542,10 @@ py::dict refine(const py::object& domain, const std::string& algo, const std::st
                           budget, seed, say);
       },
       where, progress);
-  const auto& m = run.result.mesh;
-  std::vector<std::vector<Rational>> p, g;
-  for (const auto& v : m.sites) p.push_back({rational_from_double(v.x), rational_from_double(v.y)});
-  for (const auto& M : m.metrics) g.push_back({rational_from_double(M.m11), rational_from_double(M.m12), rational_from_double(M.m22)});
-  std::vector<std::array<int, 2>> segments;
-  for (const auto& e : m.segments) segments.push_back({e.first, e.second});
-  out["points"] = to_python(p, 2), out["cells"] = to_python(m.triangles), out["edges"] = to_python(segments);
-  out["metrics"] = to_python(g, 3);
+  Mesh exact = geometry::exact(run.result.mesh);
+  exact.edges = exact.segments;  // the boundary subsegments, as `anisocert refine -o` declares them
+  py::dict out = to_python(exact);
   out["consistent"] = run.result.consistent, out["stop_reason"] = run.result.stop_reason, out["lines"] = run.report;
-  out["dimension"] = 2;
   return out;
 }
 

@@ -134,15 +134,6 @@ std::string mesh_files(const io::MeshFormat& format, const io::MeshFile& file, c
   return written;
 }
 
-// Whether --domain names a 3D domain: a built-in polyhedron, or a surface file (.off, .mesh,
-// .meshb, .msh); JSON domains are polygons.
-bool domain_is_3d(const std::string& domain) {
-  if (geometry::builtin_polyhedron(domain)) return true;
-  for (const char* ext : {".off", ".mesh", ".meshb", ".msh"})
-    if (domain.size() > std::string(ext).size() && domain.ends_with(ext)) return true;
-  return false;
-}
-
 // `refine` on a polyhedron (issue 40): the run, its files, and the exact 3D certifier's verdict on
 // its mesh (valid, locally uniform, ρ₀ and γ₀ met, LU's sliver measure at γ₀): exit 0 only when
 // the run finished with consistent stars and the certifier certifies the mesh.
@@ -235,7 +226,7 @@ int run_refine(const RefineOptions& o) {
     }
   }
   check_outputs({o.output, o.svg, o.json});
-  if (domain_is_3d(o.domain)) return run_refine3(o, *entry, values, budget, format);
+  if (io::names_polyhedron(o.domain)) return run_refine3(o, *entry, values, budget, format);
   if (o.domain != "square" && o.domain.find_first_of("./") == std::string::npos)
     throw UsageError("--domain " + quoted_excerpt(o.domain) + ": no such built-in domain (square; in 3D: cube, cube-cylinder) and not a file name");
   if (!o.json.empty()) throw UsageError("--json: the certificate of a 3D run (a 2D run's mesh is certified by anisocert certify --json)");

@@ -1,5 +1,7 @@
 #include "io/formats/polyhedron_file.hpp"
 
+#include "geometry/builtin_polyhedra.hpp"
+
 #include "io/formats/registry.hpp"
 #include "io/formats/text_reader.hpp"
 
@@ -65,6 +67,13 @@ geometry::Polyhedron read_polyhedron_file(const std::string& path) {
     for (int& v : t) v = renumber[v];
   p.vertices = std::move(used);
   return p;
+}
+
+bool names_polyhedron(const std::string& domain) {
+  if (geometry::builtin_polyhedron(domain)) return true;
+  for (const char* ext : {".off", ".mesh", ".meshb", ".msh"})
+    if (domain.size() > std::string(ext).size() && domain.ends_with(ext)) return true;
+  return false;
 }
 
 }  // namespace anisocert::io

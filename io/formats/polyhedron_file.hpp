@@ -16,4 +16,8 @@ namespace anisocert::io {
 // Throws InputError naming the file, the place and what is wrong.
 geometry::Polyhedron read_polyhedron_file(const std::string& path);
 
+// Whether a --domain names a 3D domain: a built-in polyhedron (geometry/builtin_polyhedra.hpp) or
+// a file this reader takes (.off, .mesh, .meshb, .msh); JSON domains are polygons.
+bool names_polyhedron(const std::string& domain);
+
 }  // namespace anisocert::io
