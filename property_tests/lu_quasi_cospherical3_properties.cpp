@@ -309,7 +309,7 @@ TEST(LU_L311_3D, ShellFailsForSliversWhenBetaExceedsOne) {
   const double k = 0x1p-8;
   const Sym3<double> I{1, 0, 0, 1, 0, 1};
   const Shell shell = lemma311_shell(gamma0_above(k), Rational(9, 16), Rational(2));
-  EXPECT_LT(shell.outer, Rational(104, 100));
+  EXPECT_LT(shell.outer, Rational(104, 100));  // by hand: γ₀ + 7κγ₀(γ₀² − 1) ≈ 1.001 + 7 · 2.29 · 0.002 ≈ 1.032
   for (const auto& [h, D] : {std::pair{0x1p-14, 10.0}, std::pair{0x1p-24, 1000.0}}) {
     const std::array<Point3<double>, 4> td{{{1, 0, h}, {0, 1, -h}, {-1, 0, h}, {0, -1, -h}}};
     const Point3<double> zd{0, 0, D};
@@ -317,6 +317,8 @@ TEST(LU_L311_3D, ShellFailsForSliversWhenBetaExceedsOne) {
     const std::array<Q3, 4> t{exact(td[0]), exact(td[1]), exact(td[2]), exact(td[3])};
     const auto sphere = *circumsphere(t, exact(I));
     const Rational hh = Rational(h) * Rational(h);
+    // By hand: the four vertices are all at distance √(1 + h²) from the origin; the shortest edges
+    // join neighbours, (1, 0, h) − (0, 1, −h) = (1, −1, 2h).
     EXPECT_EQ(sphere.first, (Q3{0, 0, 0}));
     EXPECT_EQ(sphere.second, 1 + hh);
     EXPECT_EQ(shortest_edge2(t, exact(I)), 2 + 4 * hh);
