@@ -151,11 +151,17 @@ def test_metric_not_followed_is_below_three_fifths_of_the_best_valid_other_peer(
     assert kinds("gmsh-delaunay", GOOD, seen(unit=(10, 100)), others=best) == []
 
 
-def test_each_kind_of_finding_from_its_observation():
+def test_each_kind_of_finding_from_its_observation(tmp_path):
     assert kinds("bamg", GOOD, dict(seen(), status="hang")) == ["hang"]
+    assert kinds("bamg", BAD, dict(seen(), status="hang")) == ["hang"]  # on NaN or an indefinite metric: a hang
+    huge = dict(GOOD, defect="huge")  # 10^12 times finer: running on or out of memory is what was asked
+    assert kinds("bamg", huge, dict(seen(), status="hang")) == [] and kinds("bamg", huge, dict(seen(), status="out-of-memory")) == []
+    assert kinds("bamg", huge, dict(seen(), status=-11)) == ["crash"] and kinds("bamg", huge, seen()) == ["bad-field-silent"]
+    assert kinds("bamg", GOOD, dict(seen(), status="out-of-memory")) == ["crash"]
     assert kinds("bamg", GOOD, dict(seen(), status=-6)) == ["crash"]
     assert kinds("bamg", BAD, dict(seen(), status=-6)) == ["crash"]  # a crash on bad input is still one
     assert kinds("bamg", GOOD, dict(seen(), status=3)) == ["error-exit"]
+    assert kinds("bamg", GOOD, dict(seen(), status=134)) == ["error-exit"]  # an exit code, not a signal
     assert kinds("bamg", BAD, dict(seen(), status=3)) == []  # refusing a bad field is right
     assert kinds("bamg", GOOD, {"status": 0, "mesh": False}) == ["no-mesh"]
     assert kinds("bamg", BAD, seen()) == ["bad-field-silent"]
@@ -163,8 +169,18 @@ def test_each_kind_of_finding_from_its_observation():
     assert kinds("bamg", GOOD, seen(valid=False)) == ["invalid-mesh"]
     assert kinds("bamg", GOOD, seen(missing=["(0.5, 0.5)"])) == ["invalid-mesh"]
     assert kinds("bamg", GOOD, dict(seen(), unreadable="bad line")) == ["unreadable-mesh"]
-    assert kinds("bamg", GOOD, seen(), second=seen(hash_="other")) == ["nondeterministic"]
     assert kinds("bamg", GOOD, seen(), second=seen()) == []
+    # two FreeFem meshes, the second with another label at vertex 2, then another coordinate too
+    mesh = "3 1 0\n0 0 1\n1 0 %s\n0 1 1\n1 2 3 0\n"
+    for name, label in [("a", "7"), ("b", "-48213"), ("c", "7")]:
+        (tmp_path / name).write_text(mesh % label)
+    (tmp_path / "c").write_text((tmp_path / "c").read_text().replace("0 1 1", "0 1.5 1"))
+    a, b, c = (dict(seen(hash_=n), path=str(tmp_path / n)) for n in "abc")
+    found = pc.findings_of("bamg", GOOD, a, b, {})
+    assert [k for k, _ in found] == ["nondeterministic"]
+    assert "only the labels (last numbers) of 1 lines differ, the first at line 3: \"1 0 7\" and \"1 0 -48213\"" in found[0][1]
+    found = pc.findings_of("bamg", GOOD, a, c, {})
+    assert [k for k, _ in found] == ["nondeterministic"] and "only the labels" not in found[0][1]
 
 
 def test_a_warning_is_a_word_of_the_peers_output(tmp_path):
@@ -183,31 +199,49 @@ VIEW = ("View \"metric\" {\n"
         "};")
 
 
+def grid_view(n):
+    """A view like `anisocert metric --grid n` writes on the unit square: two tensor triangles per
+    cell, M = diag(100, 400) everywhere."""
+    tensor = "100,0,0,0,400,0,0,0,1"
+    lines = ["View \"metric\" {"]
+    for j in range(n):
+        for i in range(n):
+            a, b, c, d = (i / n, j / n), ((i + 1) / n, j / n), (i / n, (j + 1) / n), ((i + 1) / n, (j + 1) / n)
+            for tri in ((a, b, d), (a, d, c)):
+                lines.append("TT(%s){%s};" % (",".join("%r,%r,0" % p for p in tri), ",".join([tensor] * 3)))
+    return "\n".join(lines + ["};"])
+
+
 def tensors(path):
+    """(corner, (m11, m12, m21, m22)) for every corner of every tensor triangle of a view."""
     out = []
     for line in open(path).read().split("\n"):
         if line.startswith("TT"):
-            v = line[line.index("){") + 2:-2].split(",")
-            out += [(v[9 * k], v[9 * k + 1], v[9 * k + 3], v[9 * k + 4]) for k in range(3)]
+            i = line.index("){")
+            c = [float(x) for x in line[3:i].split(",")]
+            v = line[i + 2:-2].split(",")
+            out += [((c[3 * k], c[3 * k + 1]), (v[9 * k], v[9 * k + 1], v[9 * k + 3], v[9 * k + 4])) for k in range(3)]
     return out
 
 
 @pytest.mark.parametrize("defect", pc.DEFECTS)
 def test_a_defect_makes_exactly_what_it_names(tmp_path, defect):
     path = tmp_path / "view.pos"
-    path.write_text(VIEW)
-    pc.rewrite_view(str(path), defect, (0.1, 0.9), isotropic=False)
+    path.write_text(grid_view(4))
+    site = (0.3, 0.1)
+    pc.rewrite_view(str(path), defect, site, isotropic=False)
     t = tensors(str(path))
-    assert all(m12 == m21 for _, m12, m21, _ in t)  # still symmetric
-    bad = [k for k, (a, b, _, c) in enumerate(t) if a == "nan" or not exact_spd([a, b, c])]
+    assert all(m12 == m21 for _, (_, m12, m21, _) in t)  # still symmetric
+    bad = {p for p, (a, b, _, c) in t if a == "nan" or not exact_spd([a, b, c])}
     if defect in ("indefinite", "negative"):
-        assert len(bad) == 6
-        assert all((Fraction(a) < 0) == (defect == "negative") for a, _, _, _ in t)
+        assert len(bad) == 25
+        assert all((Fraction(a) < 0) == (defect == "negative") for _, (a, _, _, _) in t)
     elif defect in ("indefinite-one", "nan"):
-        # one grid vertex, (0, 1), the nearest to (0.1, 0.9): in both triangles that have it
-        assert bad == [2, 5]
+        # the grid vertices of the cells around the site (within a spacing, 1/4, each way), and no other:
+        # every triangle with the site in it has three bad corners, so the view is bad there
+        assert bad == {(x, y) for x in (0.25, 0.5) for y in (0.0, 0.25)}
     else:  # huge: SPD, 10^12 times finer
-        assert bad == [] and all(Fraction(a) == 100 * 10 ** 12 and Fraction(c) == 400 * 10 ** 12 for a, _, _, c in t)
+        assert bad == set() and all(Fraction(a) == 100 * 10 ** 12 and Fraction(c) == 400 * 10 ** 12 for _, (a, _, _, c) in t)
 
 
 def test_an_isotropic_peer_gets_the_size_of_the_largest_eigenvalue(tmp_path):
@@ -216,10 +250,11 @@ def test_an_isotropic_peer_gets_the_size_of_the_largest_eigenvalue(tmp_path):
     pc.rewrite_view(str(path), None, (0, 0), isotropic=True)
     sizes = [line[line.index("){") + 2:-2].split(",") for line in open(path).read().split("\n") if line.startswith("ST")]
     assert sizes == [["0.050000000000000003"] * 3] * 2  # 1/sqrt(400), by hand, as %.17g prints it
-    path.write_text(VIEW)
-    pc.rewrite_view(str(path), "negative", (0, 0), isotropic=True)
-    assert {s for line in open(path).read().split("\n") if line.startswith("ST")
-            for s in line[line.index("){") + 2:-2].split(",")} == {"-1"}
+    for defect in ("negative", "indefinite"):  # not positive definite: a negative size, as bad as the tensor
+        path.write_text(VIEW)
+        pc.rewrite_view(str(path), defect, (0, 0), isotropic=True)
+        assert {s for line in open(path).read().split("\n") if line.startswith("ST")
+                for s in line[line.index("){") + 2:-2].split(",")} == {"-1"}
 
 
 # --- shrinking ---------------------------------------------------------------------------------
@@ -311,6 +346,9 @@ def test_merge_keeps_one_finding_per_signature_and_adds_the_figures(tmp_path):
     (["--peer", "gmsh"], {}, "--out"),
     (["--peer", "gmsh", "--colour", "red", "--out", "OUT"], {}, "unknown option"),
     (["merge", "NOTHING"], {}, "no campaign's folder"),
+    (["--peer", "gmsh-delaunay", "--against", "bamg", "--out", "OUT"], {}, "compared with no peer"),
+    (["--peer", "gmsh", "--out", "OUT"], {"ANISOCERT": "/nonexistent/anisocert"}, "is not an executable"),
+    (["--peer", "gmsh", "--cases", "²", "--out", "OUT"], {}, "--cases"),
     (["reproduce", "NOTHING"], {}, "not a finding's case.json"),
 ])
 def test_bad_input_is_one_line_exit_2_and_nothing_written(tmp_path, args, env, says):
@@ -343,13 +381,13 @@ def test_3d_peers_mesh_a_box_validly_and_tetgen_crashes_on_a_nan_size(tmp_path):
 
 @pytest.mark.skipif(not peers_installed(), reason="gmsh and freefem++ (scripts/build all installs them)")
 def test_a_campaign_finds_shrinks_and_reproduces_gmshs_rotated_metric_defect(tmp_path):
-    # Case 52 of seed "t" is the unit square with a constant metric of eigenvalues 42 and 910 at
+    # Case 52 of seed "t" is the unit square with a constant metric of eigenvalues 53 and 780 at
     # 152.3° (fuzz/peer-campaign generate --seed t 52): bamg follows it, Gmsh 4.8.4 does not.
     out = tmp_path / "out"
     p = campaign("--peer", "gmsh", "--against", "bamg", "--seed", "t", "--shard", "53/100", "--cases", "1", "--time", "400",
                  "--shrinks-per-kind", "1", "--out", str(out))
     assert p.returncode == 0, p.stderr
-    assert "case 52: square, constant eigenvalues 42, 910 at 152.3°" in p.stderr
+    assert "case 52: square, constant eigenvalues 53, 780 at 152.3°" in p.stderr
     found = [d for d in os.listdir(out / "findings") if d.startswith("gmsh-metric-not-followed-")]
     assert len(found) == 1, p.stderr
     finding = json.load(open(out / "findings" / found[0] / "case.json"))
@@ -370,3 +408,89 @@ def test_a_campaign_finds_shrinks_and_reproduces_gmshs_rotated_metric_defect(tmp
     r = subprocess.run([reproduce], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                        env=dict(os.environ, ANISOCERT_SOURCE=SOURCE))
     assert r.returncode == 0 and "does not hold" in r.stdout, r.stdout + r.stderr
+
+
+# --- the harness's own failures, races and interruptions -----------------------------------------
+
+def test_a_case_the_harness_cannot_run_does_not_hold_and_strictly_raises(monkeypatch):
+    def broken(*args, **kwargs):
+        raise RuntimeError("anisocert metric failed")
+    monkeypatch.setattr(pc, "observe", broken)
+    assert pc.check(pc.Context({}), "bamg", [], GOOD, "crash", "/nonexistent")[0] is False
+    with pytest.raises(RuntimeError):
+        pc.check(pc.Context({}), "bamg", [], GOOD, "crash", "/nonexistent", strict=True)
+
+
+def test_two_jobs_writing_the_same_finding_write_one_folder(monkeypatch, tmp_path):
+    import threading
+    import time
+
+    def slow(ctx, peer, case, work):
+        os.makedirs(work)
+        time.sleep(0.3)  # both jobs are past the first look for the folder
+        return {"mesh": False}
+    monkeypatch.setattr(pc, "observe", slow)
+    results = []
+    jobs = [threading.Thread(target=lambda: results.append(pc.write_finding(pc.Context({}), str(tmp_path), "gmsh", [], "crash",
+                                                                            "d", GOOD, 0, "minimum", {})))
+            for _ in range(2)]
+    for j in jobs:
+        j.start()
+    for j in jobs:
+        j.join()
+    assert sorted(new for _, new in results) == [False, True]
+    assert os.listdir(tmp_path) == [results[0][0]]  # no staging folder left
+
+
+def test_reproduce_of_a_malformed_finding_is_exit_2_never_holds(tmp_path):
+    (tmp_path / "case.json").write_text(json.dumps({"peer": "gmsh", "kind": "crash", "against": [],
+                                                    "case": dict(GOOD, field={"kind": "constant", "eigenvalues": ["100"]})}))
+    p = campaign("reproduce", str(tmp_path))
+    assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1, p.stderr
+
+
+def fake_peer(tmp_path, body):
+    path = tmp_path / "fake-gmsh"
+    path.write_text("#!/bin/sh\n" + body + "\n")
+    path.chmod(0o755)
+    return str(path)
+
+
+@pytest.mark.skipif(not os.access(os.environ.get("ANISOCERT", ""), os.X_OK), reason="ANISOCERT: the built program")
+def test_a_second_run_into_the_folder_goes_on_where_the_first_stopped(tmp_path):
+    env = {"GMSH": fake_peer(tmp_path, "exit 3")}  # a peer that fails every case: an error-exit on each good field
+    logs = []
+    for _ in range(2):
+        p = campaign("--peer", "gmsh", "--against", "bamg", "--cases", "2", "--shrinks-per-kind", "0", "--seed", "s",
+                     "--out", str(tmp_path / "out"), env=env)
+        assert p.returncode == 0, p.stderr
+        logs.append([line.split("] ")[1].split(":")[0] for line in p.stderr.splitlines() if "] case " in line])
+    assert logs == [["case 0", "case 1"], ["case 2", "case 3"]]
+    raw = [json.loads(line) for line in open(tmp_path / "out" / "raw.jsonl")]
+    good = [k for k in range(4) if not pc.random_case("s", k)["defect"]]
+    assert [(r["index"], r["kind"]) for r in raw] == [(k, "error-exit") for k in good] and len(good) >= 2
+    assert "| cases | 4 |" in (tmp_path / "out" / "summary.md").read_text()
+
+
+@pytest.mark.skipif(not os.access(os.environ.get("ANISOCERT", ""), os.X_OK), reason="ANISOCERT: the built program")
+def test_sigterm_stops_the_peers_and_writes_the_report(tmp_path):
+    import signal
+    import time
+    started = tmp_path / "started"
+    env = dict(os.environ, GMSH=fake_peer(tmp_path, "echo $$ > %s; exec sleep 60" % started))
+    p = subprocess.Popen([sys.executable, SCRIPT, "--peer", "gmsh", "--against", "bamg", "--time", "100", "--out",
+                          str(tmp_path / "out")], env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    for _ in range(200):
+        if started.exists() and started.read_text().strip():
+            break
+        time.sleep(0.1)
+    peer = int(started.read_text())
+    begun = time.monotonic()
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=30)
+    assert p.returncode == 130 and time.monotonic() - begun < 10, err
+    assert "stopping (SIGTERM)" in err
+    with pytest.raises(ProcessLookupError):
+        os.kill(peer, 0)  # the peer is gone, not orphaned
+    assert json.load(open(tmp_path / "out" / "campaign.json"))["runs"][0]["cases"] == 0
+    assert (tmp_path / "out" / "summary.md").exists()
