@@ -506,7 +506,10 @@ def kept_findings():
     uninitialised labels) may by chance show the same garbage twice, so CI does not replay it;
     nor a hang, which costs --timeout CPU seconds each run."""
     names = sorted(os.listdir(KEPT)) if os.path.isdir(KEPT) else []
-    return [n for n in names if os.path.exists(os.path.join(KEPT, n, "case.json")) and "-nondeterministic-" not in n and "-hang-" not in n]
+    # Gmsh after its double free on a NaN view either aborts or spins: a crash or a hang by chance
+    by_chance = {"gmsh-crash-1f82510acfc9", "gmsh-crash-621c0839f38b"}
+    return [n for n in names if os.path.exists(os.path.join(KEPT, n, "case.json")) and "-nondeterministic-" not in n
+            and "-hang-" not in n and n not in by_chance]
 
 
 @pytest.mark.skipif(not peers_installed(), reason="the peers (scripts/build all installs them)")
