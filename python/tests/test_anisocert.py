@@ -270,7 +270,11 @@ def test_interrupt_stops_a_long_call():
     timer.start()
     with pytest.raises(KeyboardInterrupt):
         anisocert.certify(points, cells, metrics)
-    assert time.monotonic() - start < 2.5  # the whole call takes about 4 s on one core
+    interrupted = time.monotonic() - start
+    start = time.monotonic()
+    anisocert.certify(points, cells, metrics)  # the whole call, on the same machine under the same load
+    # about 0.4 s against 4 s on one idle core; a wall bound alone failed under three background campaigns
+    assert interrupted < (time.monotonic() - start) / 2
 
 
 def test_field_as_the_cli(tmp_path):
