@@ -5,7 +5,7 @@
 
 namespace anisocert::geometry {
 
-Polygon<Rational> boundary_polygon(const Mesh<Rational>& m) {
+std::vector<int> boundary_loop(const Mesh<Rational>& m) {
   if (m.triangles.empty()) throw std::invalid_argument("the mesh has no triangles");
   std::set<std::pair<int, int>> directed;
   for (std::size_t k = 0; k < m.triangles.size(); ++k) {
@@ -31,15 +31,26 @@ Polygon<Rational> boundary_polygon(const Mesh<Rational>& m) {
   }
   if (loop.size() != next.size())
     throw std::invalid_argument("the boundary of the triangles is " + std::string(loop.size() < next.size() ? "more than one loop" : "not a loop") +
-                                " (a hole, or several pieces): the oracle's domain is one simple polygon");
+                                " (a hole, or several pieces): Labelle and Shewchuk's domain is one simple polygon");
+  return loop;
+}
+
+Polygon<Rational> without_straight_corners(const Polygon<Rational>& p) {
   Polygon<Rational> polygon;
-  const std::size_t n = loop.size();
+  const std::size_t n = p.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const auto& a = m.sites[loop[(i + n - 1) % n]];
-    const auto& b = m.sites[loop[i]];
-    const auto& c = m.sites[loop[(i + 1) % n]];
+    const auto& a = p[(i + n - 1) % n];
+    const auto& b = p[i];
+    const auto& c = p[(i + 1) % n];
     if (predicates::orientation(a, b, c) != Sign::zero || (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) < 0) polygon.push_back(b);
   }
+  return polygon;
+}
+
+Polygon<Rational> boundary_polygon(const Mesh<Rational>& m) {
+  Polygon<Rational> loop;
+  for (int v : boundary_loop(m)) loop.push_back(m.sites[static_cast<std::size_t>(v)]);
+  const Polygon<Rational> polygon = without_straight_corners(loop);
   if (const auto defect = simplicity_defect(polygon)) throw std::invalid_argument(describe(*defect, polygon, "boundary"));
   return polygon;
 }

@@ -3,6 +3,7 @@
 // `anisocert certify`, Medit .mesh/.sol and SVG.
 #include "cli/diagram_job.hpp"
 #include "cli/output.hpp"
+#include "cli/refine_from.hpp"
 #include "cli/reports/refine_report.hpp"
 #include "cli/usage_error.hpp"
 #include "fields/registry.hpp"
@@ -40,6 +41,9 @@ std::string names_of(const std::vector<std::string>& names) {
 struct RefineOptions {
   std::string algo = "star", domain = "square", field = "shock", output, output_format, svg, json;
   CLI::Option* field_option = nullptr;
+  CLI::Option* domain_option = nullptr;
+  MeshInput from;  // --from MESH: its path, format, metric file (refine_from.hpp)
+  bool exact_sites = false;
   int threads = 0;
   std::vector<std::string> params;
   std::map<std::string, double> values;            // every refiner parameter's default
@@ -203,6 +207,52 @@ int run_refine3(const RefineOptions& o, const refiners::RefinerEntry& entry, con
   return run.result.consistent && verdict.holds ? 0 : 1;
 }
 
+// `refine --from MESH` (refine_from.hpp): the run from the mesh's vertices, its before/after report
+// and the output's certificate; exit 0 only when the run finished and the output is certified.
+int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry, const refiners::ParameterValues& values,
+                    const refiners::common::Budget& budget, const io::MeshFormat* format) {
+  if (o.domain_option->count() > 0) throw UsageError("--domain and --from: the domain is the boundary of the mesh's triangles");
+  MeshInput in = o.from;
+  if (o.field_option->count() > 0) in.field = o.field, in.params = o.params;
+  else if (!o.params.empty()) throw UsageError("--param without --field: the metric is the mesh's own");
+  const StartingMesh start = starting_mesh(in, o.exact_sites, o.quiet);
+  const std::size_t vertices_in = start.domain->vertices().size();
+  const auto progress = progress_printer(o.quiet);
+  refiners::Run run;
+  try {
+    run = entry.run(*start.domain, start.field, values, budget, o.seed, progress);
+  } catch (const refiners::common::DomainError& e) {
+    throw UsageError(o.from.path + ": " + e.what());
+  } catch (const refiners::common::FieldError& e) {
+    throw UsageError(start.metric_source + ": " + e.what());
+  } catch (const refiners::ParameterError& e) {
+    throw UsageError(e.what());
+  }
+  const geometry::Mesh<double>& m = run.result.mesh;
+  const RefinedCertificate certificate = certify_refined(entry, m, o.quiet);
+  std::vector<OutputFile> files;
+  std::string written;
+  std::vector<std::string> paths;
+  if (format) {
+    io::MeshFile file;
+    file.mesh = geometry::exact(m);
+    file.mesh.edges = file.mesh.segments;
+    written = mesh_files(*format, file, o.output, files, paths);
+  }
+  if (!o.svg.empty())
+    files.push_back({o.svg, io::mesh_svg(m, entry.name + " refiner from " + o.from.path + ": " + std::to_string(m.sites.size()) + " vertices, " +
+                                                (certificate.holds ? "certified" : "not certified"))});
+  write_files_atomically(files);
+  std::string text = "refine --from " + o.from.path + ": " + std::to_string(vertices_in) + " vertices (" +
+                     std::to_string(start.boundary_vertices) + " on the boundary, " + std::to_string(start.rounded) +
+                     " rounded to the nearest doubles), " + std::to_string(start.interior_segments) + " interior segments; metric " +
+                     start.metric_source + "\n" + report_text(run) + before_after_text(start, certificate, vertices_in, 0);
+  if (format) text += "  mesh: " + written + " (check it with " + check_command(entry, paths) + ")\n";
+  if (!o.svg.empty()) text += "  picture: " + o.svg + "\n";
+  emit(text);
+  return run.result.consistent && certificate.holds ? 0 : 1;
+}
+
 int run_refine(const RefineOptions& o) {
   const refiners::RefinerEntry* entry = refiners::find_refiner(o.algo);
   if (!entry) throw UsageError("--algo: unknown refiner " + quoted_excerpt(o.algo) + " (" + names_of(refiners::refiner_names()) + ")");
@@ -226,6 +276,12 @@ int run_refine(const RefineOptions& o) {
     }
   }
   check_outputs({o.output, o.svg, o.json});
+  if (o.from.path.empty() && (!o.from.metric.empty() || !o.from.format.empty() || !o.from.metric_format.empty() || o.exact_sites))
+    throw UsageError("--metric, --from-format, --metric-format and --exact-sites go with --from MESH");
+  if (!o.from.path.empty()) {
+    if (!o.json.empty()) throw UsageError("--json: the certificate of a 3D run (a 2D run's mesh is certified by anisocert certify --json)");
+    return run_refine_from(o, *entry, values, budget, format);
+  }
   if (io::names_polyhedron(o.domain)) return run_refine3(o, *entry, values, budget, format);
   if (o.domain != "square" && o.domain.find_first_of("./") == std::string::npos)
     throw UsageError("--domain " + quoted_excerpt(o.domain) + ": no such built-in domain (square; in 3D: cube, cube-cylinder) and not a file name");
@@ -322,7 +378,7 @@ void add_refine(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<RefineOptions>();
   CLI::App* c = app.add_subcommand("refine", description());
   c->add_option("--algo", o->algo, "the refiner: " + names_of(refiners::refiner_names()))->capture_default_str();
-  c->add_option("--domain", o->domain,
+  o->domain_option = c->add_option("--domain", o->domain,
                 "square, or a JSON file with a \"domain\" polygon, perhaps with \"points\" and \"interior_segments\" (a PSLG;\n"
                 "--algo star takes its boundary only); in 3D (--algo star): cube, cube-cylinder (UGAWG's), or a closed outward\n"
                 "surface of triangles (.off, Medit .mesh/.meshb, Gmsh .msh)")
@@ -332,6 +388,16 @@ void add_refine(CLI::App& app, int& exit_code) {
                                       names_of(fields::field_names3()) + " (default ugawg-linear) or background:TETMESH[:METRIC]")
                         ->capture_default_str();
   c->add_option("--param", o->params, "a field parameter name=value (repeatable)");
+  c->add_option("--from", o->from.path,
+                "start from a triangle mesh someone else made (any format certify reads): its vertices are the first sites,\n"
+                "the boundary of its triangles the domain (every boundary vertex a corner), its declared interior edges\n"
+                "segments, its metric its own (P1 over its triangles) unless --metric or --field gives one; the report\n"
+                "compares before and after, and the exit is 0 only when the output is certified (docs/refiners.md)");
+  c->add_option("--from-format", o->from.format, "the format of --from's mesh, when its extension does not tell");
+  c->add_option("--metric", o->from.metric, "--from: the mesh's per-vertex metrics in a separate file (.sol/.solb, .mtr)");
+  c->add_option("--metric-format", o->from.metric_format, "--from: the metric file's format (medit, bamg)");
+  c->add_flag("--exact-sites", o->exact_sites,
+              "--from: refuse a vertex coordinate that is not a double (by default it is rounded to the nearest, and counted)");
   // A parameter several refiners share (e.g. --size) is one option: the first refiner's help and
   // default, the refiners that have it, and another's own help where it differs.
   std::map<std::string, std::pair<std::string, std::string>> help;  // name → (first help, the option's text)

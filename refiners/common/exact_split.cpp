@@ -39,10 +39,23 @@ int halvings(double u, double w) {
   return std::max(0, std::min(53 - E + td, td + 1074));
 }
 
+// Between u ≠ w every double lies on an axis-parallel segment whose other coordinate is shared:
+// halved h times, each piece (|w − u|/2ʰ long) still holds a double strictly inside while it is
+// at least two units in the last place of the larger end.
+int axis_halvings(double u, double w) {
+  if (!std::isfinite(u) || !std::isfinite(w)) return 0;
+  const double d = std::abs(w - u), ulp = std::nextafter(std::max(std::abs(u), std::abs(w)), INFINITY) - std::max(std::abs(u), std::abs(w));
+  if (!std::isfinite(d) || !(ulp > 0)) return 0;
+  return std::max(0, std::ilogb(d) - std::ilogb(ulp) - 2);
+}
+
 }  // namespace
 
 int exact_halvings(const predicates::Point2<double>& a, const predicates::Point2<double>& b) {
-  return std::min(halvings(a.x, b.x), halvings(a.y, b.y));
+  const int grid = std::min(halvings(a.x, b.x), halvings(a.y, b.y));
+  if (a.x == b.x && a.y != b.y) return std::max(grid, axis_halvings(a.y, b.y));
+  if (a.y == b.y && a.x != b.x) return std::max(grid, axis_halvings(a.x, b.x));
+  return grid;
 }
 
 int exact_halvings(const predicates::Point3<double>& a, const predicates::Point3<double>& b) {

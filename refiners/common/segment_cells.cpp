@@ -135,8 +135,45 @@ bool outside_diametral_ellipse(const Point2<double>& a, const Point2<double>& b,
   return (predicates::quadratic_form(m11, m12, m22, ex, ey) - predicates::quadratic_form(m11, m12, m22, dx, dy) * 0.25).lo > 0;
 }
 
-std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
-                                          const Rational& wanted) {
+namespace {
+
+// On an axis-parallel ab (one coordinate shared, the other v running from v_a to v_b): the point
+// whose v is `v` (a double), and its parameter (v − v_a)/(v_b − v_a).
+struct AxisSegment {
+  bool along_y;
+  double va, vb;
+  Point2<double> at(const Point2<double>& a, double v) const { return along_y ? Point2<double>{a.x, v} : Point2<double>{v, a.y}; }
+  Rational parameter(double v) const { return (Rational(v) - Rational(va)) / (Rational(vb) - Rational(va)); }
+  Rational value(const Rational& t) const { return Rational(va) + t * (Rational(vb) - Rational(va)); }
+};
+std::optional<AxisSegment> axis_segment(const Point2<double>& a, const Point2<double>& b) {
+  if (a.x == b.x && a.y != b.y) return AxisSegment{true, a.y, b.y};
+  if (a.y == b.y && a.x != b.x) return AxisSegment{false, a.x, b.x};
+  return std::nullopt;
+}
+
+// The double of fewest significant bits strictly between the rationals lo < hi: the multiple of
+// the largest power of two 2ᵉ that has one there, nearest `target`; nothing when none is a double.
+std::optional<double> coarsest_double_between(const Rational& lo, const Rational& hi, const Rational& target) {
+  const double top = std::max(std::abs(lo.convert_to<double>()), std::abs(hi.convert_to<double>()));
+  if (!std::isfinite(top) || top == 0) return std::nullopt;
+  for (int e = std::ilogb(top) + 1; e >= std::ilogb(top) - 53; --e) {
+    const Rational step = e >= 0 ? Rational(Integer(1) << e) : Rational(Integer(1), Integer(1) << -e);
+    const Rational first = Rational(-floor_of(-(lo / step)) ) * step;  // ⌈lo/2ᵉ⌉ 2ᵉ
+    if (first >= hi) continue;
+    const Rational nearest = std::clamp(Rational(floor_of(target / step + Rational(1, 2))) * step, first, hi);
+    for (const Rational& v : {nearest, first}) {
+      if (v <= lo || v >= hi) continue;
+      const double d = v.convert_to<double>();
+      if (Rational(d) == v) return d;
+    }
+  }
+  return std::nullopt;
+}
+
+// The grid's point (split_point's first way).
+std::optional<Point2<double>> grid_split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
+                                               const Rational& wanted) {
   const Rational half(1, 2);
   if (wanted == half && lo <= half && half <= hi)
     if (const auto m = common::exact_midpoint(a, b)) return m;
@@ -156,17 +193,36 @@ std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<
   return z;
 }
 
+}  // namespace
+
+std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
+                                          const Rational& wanted) {
+  if (const auto z = grid_split_point(a, b, lo, hi, wanted)) return z;
+  const auto axis = axis_segment(a, b);
+  if (!axis) return std::nullopt;
+  const Rational t = std::clamp(wanted, std::max(lo, Rational(0)), std::min(hi, Rational(1)));
+  const double v = axis->value(t).convert_to<double>();
+  const Rational u = axis->parameter(v);
+  if (u < lo || u > hi || u <= 0 || u >= 1) return std::nullopt;
+  return axis->at(a, v);
+}
+
 std::optional<Point2<double>> coarse_split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
                                                  const Rational& target, const Rational& slack) {
-  const int most = std::min(common::exact_halvings(a, b), 60);
   const Rational from = std::max(lo, target - slack), to = std::min(hi, target + slack);
+  const int most = std::min(common::exact_halvings(a, b), 60);
   for (int k = 1; k <= most; ++k) {
     const Integer scale = Integer(1) << k;
     const Rational t(floor_of(std::clamp(target, from, to) * scale + Rational(1, 2)), scale);
     if (t <= from || t >= to || t <= 0 || t >= 1) continue;
-    if (const auto z = split_point(a, b, t, t, t)) return z;
+    if (const auto z = grid_split_point(a, b, t, t, t)) return z;
   }
-  return std::nullopt;
+  const auto axis = axis_segment(a, b);
+  if (!axis) return std::nullopt;
+  const Rational v0 = axis->value(std::max(from, Rational(0))), v1 = axis->value(std::min(to, Rational(1)));
+  const auto v = coarsest_double_between(std::min(v0, v1), std::max(v0, v1), axis->value(std::clamp(target, from, to)));
+  if (!v) return std::nullopt;
+  return axis->at(a, *v);
 }
 
 }  // namespace anisocert::refiners::common

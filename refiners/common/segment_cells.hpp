@@ -51,14 +51,17 @@ bool outside_diametral_ellipse(const Point2<double>& a, const Point2<double>& b,
 
 // LS §9's split point: the point of z([lo, hi]) nearest the "midpoint" t = `target` (d_a(z) =
 // d_b(z): ½ for one metric), as a double exactly on s: a + j 2⁻ᵏ (b − a) with k the exact halvings
-// of ab (at most 60) and 0 < j < 2ᵏ; nothing when [lo, hi] holds no such point.
+// of ab (at most 60) and 0 < j < 2ᵏ; on an axis-parallel s, whose every double between a and b
+// lies on it, the double nearest z(target) when it lies in z([lo, hi]); nothing when [lo, hi]
+// holds no such point.
 std::optional<Point2<double>> split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
                                           const Rational& target = Rational(1, 2));
 
 // The same with the fewest bits: of the points a + j 2⁻ᵏ (b − a) strictly between z(lo) and z(hi)
 // within `slack` of `target` (strictly inside the window), one with the least k (an end of the
 // range is a site when the range is a subsegment's). A split far from ½ then leaves subsegments that can be split
-// again exactly (each split at 2⁻ᵏ spends k of the halvings a double allows).
+// again exactly (each split at 2⁻ᵏ spends k of the halvings a double allows). On an axis-parallel
+// s, the double of fewest significant bits strictly inside the window.
 std::optional<Point2<double>> coarse_split_point(const Point2<double>& a, const Point2<double>& b, const Rational& lo, const Rational& hi,
                                                  const Rational& target, const Rational& slack);
 
