@@ -1,6 +1,7 @@
 // `anisocert refine --algo NAME`: a refiner of the registry (refiners/registry.hpp) on a domain and a
 // metric field (io/field_source.hpp: a built-in field or a background mesh); writes the mesh for
 // `anisocert certify`, Medit .mesh/.sol and SVG.
+#include "cli/coarsen.hpp"
 #include "cli/diagram_job.hpp"
 #include "cli/output.hpp"
 #include "cli/refine_from.hpp"
@@ -29,6 +30,9 @@
 #include <sstream>
 
 namespace anisocert::cli {
+
+std::string refiners_where(bool dual_of_diagram);
+
 namespace {
 
 // "a, b, c"
@@ -43,7 +47,7 @@ struct RefineOptions {
   CLI::Option* field_option = nullptr;
   CLI::Option* domain_option = nullptr;
   MeshInput from;  // --from MESH: its path, format, metric file (refine_from.hpp)
-  bool exact_sites = false;
+  bool exact_sites = false, coarsen = false;
   int threads = 0;
   std::vector<std::string> params;
   std::map<std::string, double> values;            // every refiner parameter's default
@@ -215,6 +219,9 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   MeshInput in = o.from;
   if (o.field_option->count() > 0) in.field = o.field, in.params = o.params;
   else if (!o.params.empty()) throw UsageError("--param without --field: the metric is the mesh's own");
+  if (o.coarsen && !entry.dual_of_diagram)
+    throw UsageError("--coarsen: --algo " + entry.name + "'s certificate is local uniformity, which removals would need the stars rebuilt for; "
+                     "--algo " + refiners_where(true) + " coarsen");
   const StartingMesh start = starting_mesh(in, o.exact_sites, o.quiet);
   const std::size_t vertices_in = start.domain->vertices().size();
   const auto progress = progress_printer(o.quiet);
@@ -228,7 +235,9 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   } catch (const refiners::ParameterError& e) {
     throw UsageError(e.what());
   }
-  const geometry::Mesh<double>& m = run.result.mesh;
+  Coarsened coarsened{run.result.mesh, 0, 0};
+  if (o.coarsen && run.result.consistent) coarsened = coarsen(run.result.mesh, o.quiet);
+  const geometry::Mesh<double>& m = coarsened.mesh;
   const RefinedCertificate certificate = certify_refined(entry, m, o.quiet);
   std::vector<OutputFile> files;
   std::string written;
@@ -246,7 +255,10 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   std::string text = "refine --from " + o.from.path + ": " + std::to_string(vertices_in) + " vertices (" +
                      std::to_string(start.boundary_vertices) + " on the boundary, " + std::to_string(start.rounded) +
                      " rounded to the nearest doubles), " + std::to_string(start.interior_segments) + " interior segments; metric " +
-                     start.metric_source + "\n" + report_text(run) + before_after_text(start, certificate, vertices_in, 0);
+                     start.metric_source + "\n" + report_text(run) + (o.coarsen ? "  coarsened: " + std::to_string(coarsened.removed) + " vertices removed, each kept out only when the oracle certified the rest (" +
+                                      std::to_string(coarsened.diagrams) + " exact diagrams)\n"
+                                : "") +
+                     before_after_text(start, certificate, vertices_in, coarsened.removed);
   if (format) text += "  mesh: " + written + " (check it with " + check_command(entry, paths) + ")\n";
   if (!o.svg.empty()) text += "  picture: " + o.svg + "\n";
   emit(text);
@@ -276,8 +288,8 @@ int run_refine(const RefineOptions& o) {
     }
   }
   check_outputs({o.output, o.svg, o.json});
-  if (o.from.path.empty() && (!o.from.metric.empty() || !o.from.format.empty() || !o.from.metric_format.empty() || o.exact_sites))
-    throw UsageError("--metric, --from-format, --metric-format and --exact-sites go with --from MESH");
+  if (o.from.path.empty() && (!o.from.metric.empty() || !o.from.format.empty() || !o.from.metric_format.empty() || o.exact_sites || o.coarsen))
+    throw UsageError("--metric, --from-format, --metric-format, --exact-sites and --coarsen go with --from MESH");
   if (!o.from.path.empty()) {
     if (!o.json.empty()) throw UsageError("--json: the certificate of a 3D run (a 2D run's mesh is certified by anisocert certify --json)");
     return run_refine_from(o, *entry, values, budget, format);
@@ -398,6 +410,9 @@ void add_refine(CLI::App& app, int& exit_code) {
   c->add_option("--metric-format", o->from.metric_format, "--from: the metric file's format (medit, bamg)");
   c->add_flag("--exact-sites", o->exact_sites,
               "--from: refuse a vertex coordinate that is not a double (by default it is rounded to the nearest, and counted)");
+  c->add_flag("--coarsen", o->coarsen,
+              "--from: then remove vertices where that brings edges nearer unit length, each removal kept only when the oracle\n"
+              "certifies the rest (the dual of the exact D|Ω of the remaining vertices is a triangulation; --algo " + refiners_where(true) + ")");
   // A parameter several refiners share (e.g. --size) is one option: the first refiner's help and
   // default, the refiners that have it, and another's own help where it differs.
   std::map<std::string, std::pair<std::string, std::string>> help;  // name → (first help, the option's text)

@@ -17,6 +17,7 @@ BwyParameters parameters(const ParameterValues& v, const common::Budget& budget)
   BwyParameters p;
   static_cast<common::Budget&>(p) = budget;
   p.shape_bound = v.at("shape-bound"), p.distortion = v.at("distortion"), p.size = v.at("size");
+  p.off_centres = v.at("off-centres") != 0;
   if (!(p.shape_bound > 1 && std::isfinite(p.shape_bound)))
     throw ParameterError("--shape-bound " + shortest_decimal(p.shape_bound) + " is out of range: need 1 < B < ∞ (BWY Lemma 2 takes B > 1)");
   if (!(p.distortion == 0 || (p.distortion >= 1 && std::isfinite(p.distortion))))
@@ -60,7 +61,8 @@ std::vector<std::string> report(const BwyResult& r, const BwyParameters& p) {
                                           : "what is left not counted (the time budget is spent)"),
       section42_line(p), common::rule_counts_line(r)};
   std::ostringstream o;
-  o << "  parameters: B = " << p.shape_bound << ", G = " << p.distortion << ", size = " << p.size << (p.size > 0 ? "" : " (no size rule)");
+  o << "  parameters: B = " << p.shape_bound << ", G = " << p.distortion << ", size = " << p.size << (p.size > 0 ? "" : " (no size rule)")
+    << (p.off_centres ? ", off-centres" : "");
   lines.push_back(o.str());
   return lines;
 }
@@ -76,7 +78,11 @@ RefinerEntry entry() {
           {{"shape-bound", "shape bound B > 1: a Voronoi vertex with radius-edge ratio r(v)/δ(t_v) above B is badly shaped", d.shape_bound},
            {"distortion", "distortion coefficient G of BWY §4.2's conditions (reported, not used), 0: the largest G of Lemma 2 for B",
             d.distortion},
-           {"size", "largest radius r(v) of a Voronoi vertex in the metric, 0 for none", d.size}},
+           {"size", "largest radius r(v) of a Voronoi vertex in the metric, 0 for none", d.size},
+           {"off-centres",
+            "unit-aware insertion: a badly shaped or too large Voronoi vertex gets its site at the off-centre on the way from its shortest "
+            "edge's midpoint, where that edge's end is at unit distance (at least B δ, resp. the size; docs/refiners.md)",
+            0, true}},
           [](const common::Domain& domain, const fields::MetricField& field, const ParameterValues& values,
              const common::Budget& budget, unsigned, const common::Progress& progress) {
             const BwyParameters p = parameters(values, budget);

@@ -11,6 +11,9 @@ struct BwyParameters : common::Budget {
   // largest G for which Lemma 2's condition holds with B, from theory/ (rounded down).
   double distortion = 0;
   double size = 1;  // largest radius r(v) in the metric; 0: no size rule
+  // Rules 3 and 6 insert at the off-centre of the Voronoi vertex's shortest edge whose lengths are
+  // nearest unit (VoronoiRefinement::attack_off_centre), not at the vertex.
+  bool off_centres = false;
   bool filters = true;  // false: the segment tests' decisions in rationals
 };
 

@@ -1,5 +1,7 @@
 #include "refiners/common/voronoi_refinement.hpp"
 
+#include "geometry/ellipse_box.hpp"
+
 #include "refiners/common/exact_split.hpp"
 #include "refiners/common/circumcentre.hpp"
 #include "refiners/common/segment_cells.hpp"
@@ -169,6 +171,29 @@ bool VoronoiRefinement::attack_vertex(int q, int rule) {
   const auto [c, displacement] = rounded_vertex(q);
   const double radius = std::sqrt(squared_distance(site(v.sites[0]), c));  // at the site inserted
   return attack(c, rule, radius, "the Voronoi vertex of sites " + trio_text(v.sites), displacement);
+}
+
+bool VoronoiRefinement::attack_off_centre(int q, int rule, int p, int o, double least, double unit) {
+  const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+  const MetricSite P = site(p), O = site(o);
+  const Point2<double> c = rounded_vertex(q).first;
+  const double r = std::sqrt(squared_distance(P, c));
+  const double l = std::clamp(unit, std::min(least, r), r);
+  const double tm = midpoint_parameter(P, O);
+  const Point2<double> m{P.p.x + tm * (O.p.x - P.p.x), P.p.y + tm * (O.p.y - P.p.y)};
+  const auto at = [&](double t) { return Point2<double>{m.x + t * (c.x - m.x), m.y + t * (c.y - m.y)}; };
+  if (!(l < r * (1 - 1e-9)) || !(std::sqrt(squared_distance(P, m)) < l)) return attack_vertex(q, rule);
+  double lo = 0, hi = 1;  // d_p(at(lo)) < ℓ ≤ d_p(at(hi)): d_p is convex along the way
+  for (int i = 0; i < 60; ++i) {
+    const double t = (lo + hi) / 2;
+    (std::sqrt(squared_distance(P, at(t))) < l ? lo : hi) = t;
+  }
+  const Point2<double> x = at(hi);
+  if (!domain_.contains(x)) return attack_vertex(q, rule);
+  const auto h = geometry::ellipse_half_widths(P.M, 16 * l * l);
+  for (int s : sites_.grid.sites_in({x.x - h.hx, x.x + h.hx, x.y - h.hy, x.y + h.hy}, sites_.points))
+    if (squared_distance(site(s), x) < l * l * (1 - 1e-9)) return attack_vertex(q, rule);
+  return attack(x, rule, l, "the off-centre of the Voronoi vertex of sites " + trio_text(v.sites));
 }
 
 bool VoronoiRefinement::attack_tie(const ExactTie& tie, int rule) {

@@ -1,0 +1,29 @@
+#pragma once
+// `refine --from MESH --coarsen` (issue 41): vertices removed from a refiner's output where that
+// brings its edges nearer unit length, each removal kept only when the oracle certifies the rest:
+// the dual of the exact D|Ω of the remaining vertices is a triangulation of Ω (LS Theorem 7's
+// conclusion, decided exactly; oracle/diagram), and that dual is the new mesh.
+//
+// Where to remove is a choice in doubles (it never makes a verdict): an interior vertex (on no
+// segment) with an edge shorter than 1/√2 and none longer than 1 in the geometric mean of its ends'
+// lengths; no two removed at once are neighbours. A round removes such a set; the oracle then
+// judges the remaining vertices: the removals next to the cells its check names are put back,
+// and the rest tried again; a round whose certified mesh has no larger share of unit edges (both
+// lengths in [1/√2, √2], in doubles) keeps the better half, and coarsening ends when a round
+// removes nothing. Only a dual_of_diagram refiner's output is coarsened (its certificate is the
+// dual; a star refiner's, local uniformity, would need the stars rebuilt).
+#include "geometry/mesh.hpp"
+
+#include <cstddef>
+
+namespace anisocert::cli {
+
+struct Coarsened {
+  geometry::Mesh<double> mesh;
+  std::size_t removed = 0, diagrams = 0;
+};
+
+// m: a finished run's mesh, the exact dual of D|Ω of its sites (sites, metrics, domain, segments).
+Coarsened coarsen(const geometry::Mesh<double>& m, bool quiet);
+
+}  // namespace anisocert::cli
