@@ -128,6 +128,9 @@ class VoronoiRefinement {
   std::pair<Point2<double>, double> rounded_vertex(int q) const;
   // A rational point rounded to doubles, within an ulp per coordinate, with its displacement.
   static std::pair<Point2<double>, double> rounded(const Point2<Rational>& c);
+  // Where split() aims on subsegment ab: the concentric shells' parameter from a at a corner of
+  // less than 60° in its metric, else nothing (the metric midpoint).
+  std::optional<double> shell_parameter(int a, int b) const;
   // Every site that can be nearest somewhere on subsegment s.
   std::vector<common::MetricSite> near(int s) const;
   // d_s(p)² in doubles (for choices, never for decisions).

@@ -1,0 +1,202 @@
+// `anisocert refine --from MESH` (issue 41) as a user runs it: a peer's mesh becomes a certified
+// mesh, checked here by a second command (`anisocert dual`, the oracle's own verdict on the file
+// written) and against the input (every input vertex, rounded to the nearest double, is a vertex
+// of the output; the counts the report gives are the files'); --coarsen removes only interior
+// vertices and keeps the certificate; --off-centres changes where BWY inserts and raises the share
+// of unit edges from scratch; every bad input is one line, exit 2, nothing written.
+#include "cli_run.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <utility>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string fixtures = std::string(ANISOCERT_REGRESSIONS_DIR) + "/../peers/fixtures/";
+// FreeFem's adaptmesh of the L-shape for the coarse shock field (tests/peers/fixtures/README.md).
+// It is also the regression of the corner ping-pong: before the concentric shells
+// (VoronoiRefinement::shell_parameter) BWY split the edges at the re-entrant corner, 20° in its
+// metric, down to 10⁻⁶ of the corner and stopped there.
+const std::string freefem_l = fixtures + "freefem-lshape-shock-coarse.msh";
+const std::string shock_coarse = " --field shock --param h=0.1";
+
+fs::path fresh(const std::string& name) { return fresh_folder("cli_refine_from", name); }
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The sites of an anisocert JSON mesh as doubles (each text is the exact decimal of a double).
+std::set<std::pair<double, double>> sites_of(const fs::path& json) {
+  std::set<std::pair<double, double>> s;
+  const auto j = nlohmann::json::parse(read(json));
+  for (const auto& site : j["sites"])
+    s.insert({std::stod(site["x"].get<std::string>()), std::stod(site["y"].get<std::string>())});
+  return s;
+}
+
+// The vertices of a FreeFem .msh file ("nv nt ne", then "x y label" per vertex), each read as the
+// nearest double.
+std::vector<std::pair<double, double>> freefem_vertices(const std::string& path) {
+  std::ifstream in(path);
+  std::size_t nv = 0, nt = 0, ne = 0;
+  in >> nv >> nt >> ne;
+  std::vector<std::pair<double, double>> v;
+  for (std::size_t k = 0; k < nv; ++k) {
+    std::string x, y, label;
+    in >> x >> y >> label;
+    v.push_back({std::strtod(x.c_str(), nullptr), std::strtod(y.c_str(), nullptr)});
+  }
+  return v;
+}
+
+// "N in, A added, R removed" from the report.
+std::array<std::size_t, 3> counts(const std::string& report) {
+  std::smatch m;
+  EXPECT_TRUE(std::regex_search(report, m, std::regex("vertices: ([0-9]+) in, ([0-9]+) added, ([0-9]+) removed"))) << report;
+  if (m.size() < 4) return {0, 0, 0};
+  return {std::stoul(m[1]), std::stoul(m[2]), std::stoul(m[3])};
+}
+
+TEST(RefineFrom, FreeFemsLShapeBecomesACertifiedDualKeepingEveryVertex) {
+  const fs::path d = fresh("freefem");
+  const Outcome r = run("refine --quiet --algo bwy --from " + freefem_l + shock_coarse + " -o " + (d / "out.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("certified: the exact dual of D|Ω"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stopped: no rule of BWY §3.2.2 applies"), std::string::npos) << r.out;  // the ping-pong ends
+  // The oracle's verdict on the file written, by another command.
+  const Outcome dual = run("dual --quiet " + (d / "out.json").string());
+  EXPECT_EQ(dual.exit_code, 0) << dual.out << dual.err;
+  const auto input = freefem_vertices(freefem_l);
+  const auto output = sites_of(d / "out.json");
+  for (const auto& v : input) EXPECT_TRUE(output.count(v)) << v.first << ", " << v.second;
+  const auto [in, added, removed] = counts(r.out);
+  EXPECT_EQ(in, input.size());
+  EXPECT_EQ(removed, 0u);
+  EXPECT_EQ(in + added, output.size());
+  // FreeFem writes decimals, which are not doubles: every vertex off the axes moved, and the run says how many.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("([0-9]+) rounded to the nearest doubles"))) << r.out;
+  EXPECT_GT(std::stoul(m[1]), input.size() / 2);
+}
+
+TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
+  const fs::path d = fresh("coarsen");
+  const Outcome r = run("refine --quiet --algo bwy --coarsen --from " + freefem_l + shock_coarse + " -o " + (d / "out.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(run("dual --quiet " + (d / "out.json").string()).exit_code, 0);
+  const auto [in, added, removed] = counts(r.out);
+  EXPECT_GT(removed, 0u) << r.out;
+  const auto output = sites_of(d / "out.json");
+  EXPECT_EQ(in + added - removed, output.size());
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("coarsened: ([0-9]+) vertices removed"))) << r.out;
+  EXPECT_EQ(std::stoul(m[1]), removed);
+  // Every vertex on ∂Ω (x or y 0 or 1, or on the re-entrant edges x = 1/2, y ≥ 1/2 and y = 1/2, x ≥ 1/2) stays.
+  for (const auto& [x, y] : freefem_vertices(freefem_l)) {
+    const bool boundary = x == 0 || y == 0 || x == 1 || y == 1 || (x == 0.5 && y >= 0.5) || (y == 0.5 && x >= 0.5);
+    if (boundary) {
+      EXPECT_TRUE(output.count({x, y})) << x << ", " << y;
+    }
+  }
+  // Its unit share is the certifier's: no lower than without --coarsen.
+  const auto share = [](const std::string& report) {
+    std::smatch s;
+    EXPECT_TRUE(std::regex_search(report, s, std::regex("after: .*unit edges ([0-9.]+)%"))) << report;
+    return s.size() > 1 ? std::stod(s[1]) : 0.0;
+  };
+  const Outcome plain = run("refine --quiet --algo bwy --from " + freefem_l + shock_coarse);
+  EXPECT_GT(share(r.out), share(plain.out)) << r.out << plain.out;
+}
+
+TEST(RefineFrom, OffCentresMoveBwysInsertionsAndRaiseTheUnitShareFromScratch) {
+  const fs::path d = fresh("offcentres");
+  const auto unit_share = [&](const std::string& extra, const std::string& name) {
+    const std::string mesh = (d / name).string();
+    const Outcome r = run("refine --quiet --algo bwy" + shock_coarse + extra + " -o " + mesh);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(run("dual --quiet " + mesh).exit_code, 0) << extra;
+    run("certify " + mesh + " --checks metric --json " + (d / (name + ".certify")).string());
+    const auto j = nlohmann::json::parse(read(d / (name + ".certify")))["lengths"];
+    return double(j["unit_edges"].get<std::size_t>()) / double(j["edges"].get<std::size_t>());
+  };
+  const double vertex = unit_share("", "vertex.json"), off = unit_share(" --off-centres", "off.json");
+  EXPECT_NE(sites_of(d / "vertex.json"), sites_of(d / "off.json"));
+  EXPECT_GT(off, vertex);
+}
+
+// The bad inputs: one line naming what is wrong, exit 2, nothing written.
+void refused(const std::string& args, const std::string& says, const fs::path& d) {
+  const std::string out = (d / "out.json").string();
+  const Outcome r = run("refine --quiet " + args + " -o " + out);
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out << r.err;
+  EXPECT_NE(r.err.find(says), std::string::npos) << args << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// A JSON mesh of `sites` (x, y, m11, m12, m22 as texts) and `triangles`.
+std::string json_mesh(const fs::path& d, const std::string& name, const std::vector<std::array<std::string, 5>>& sites,
+                      const std::string& triangles) {
+  std::string s = "{\"sites\": [";
+  for (std::size_t k = 0; k < sites.size(); ++k)
+    s += std::string(k ? ", " : "") + "{\"x\": \"" + sites[k][0] + "\", \"y\": \"" + sites[k][1] + "\", \"metric\": [\"" + sites[k][2] + "\", \"" +
+         sites[k][3] + "\", \"" + sites[k][4] + "\"]}";
+  const std::string path = (d / name).string();
+  std::ofstream(path) << s << "], \"triangles\": " << triangles << "}\n";
+  return path;
+}
+
+TEST(RefineFrom, BadInputIsOneLineAndExit2) {
+  const fs::path d = fresh("bad");
+  const auto I = [](const std::string& x, const std::string& y) { return std::array<std::string, 5>{x, y, "100", "0", "100"}; };
+  const std::string square = json_mesh(d, "square.json", {I("0", "0"), I("1", "0"), I("1", "1"), I("0", "1"), I("0.4", "0.6")},
+                                       "[[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]]");
+  // Two triangles over the same place: no triangulation.
+  refused("--algo bwy --from " + json_mesh(d, "overlap.json", {I("0", "0"), I("1", "0"), I("1", "1"), I("0", "1")}, "[[0, 1, 2], [0, 1, 3], [0, 2, 3]]"),
+          "is not a valid triangulation", d);
+  // A metric that is not positive definite at vertex 4.
+  refused("--algo bwy --from " + json_mesh(d, "indefinite.json",
+                                          {I("0", "0"), I("1", "0"), I("1", "1"), I("0", "1"), {"0.5", "0.5", "1", "2", "1"}},
+                                          "[[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]]"),
+          "is not positive definite", d);
+  // Two triangles that meet at one vertex: the boundary pinches there.
+  refused("--algo bwy --from " + json_mesh(d, "bowtie.json", {I("0", "0"), I("1", "0"), I("1", "1"), I("2", "1"), I("2", "2")},
+                                          "[[0, 1, 2], [2, 3, 4]]"),
+          "passes through site 2 twice", d);
+  // A square with a square hole: the boundary is two loops.
+  {
+    std::vector<std::array<std::string, 5>> v;
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) v.push_back(I(std::to_string(i), std::to_string(j)));
+    std::string t = "[";
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        if (i == 1 && j == 1) continue;
+        const int a = 4 * j + i;
+        t += (t.size() > 1 ? ", " : "") + std::string("[") + std::to_string(a) + ", " + std::to_string(a + 1) + ", " + std::to_string(a + 5) +
+             "], [" + std::to_string(a) + ", " + std::to_string(a + 5) + ", " + std::to_string(a + 4) + "]";
+      }
+    refused("--algo bwy --from " + json_mesh(d, "annulus.json", v, t + "]"), "more than one loop", d);
+  }
+  refused("--algo bwy --exact-sites --from " + square, "vertex 4 (0.4, 0.6) is not a pair of doubles", d);
+  refused("--algo bwy --from " + fixtures + "gmsh-lshape-shock-coarse.msh", "has no metric (give --metric FILE or --field NAME)", d);
+  refused("--algo bwy --domain square --from " + square, "--domain and --from", d);
+  refused("--algo star --coarsen --from " + square, "--coarsen: --algo star", d);
+  refused("--algo bwy --metric m.sol", "go with --from MESH", d);
+  refused("--algo bwy --from " + (d / "missing.msh").string(), "missing.msh", d);
+}
+
+}  // namespace
