@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <deque>
-#include <limits>
 
 namespace anisocert::refiners::bwy {
 namespace {
@@ -196,19 +195,11 @@ class BwyRefinement : public common::VoronoiRefinement {
     return false;
   }
   // The site of vertex rule `rule` at vertex q: at q, or, with off-centres, rules 3 and 6 at the
-  // off-centre of q's shortest edge (δ(t_v)'s pair, as rule 3 measures it) at least B δ, resp. the
-  // size, from every site (the guarantee of the vertex they replace).
+  // off-centre of q's shortest edge at least B δ, resp. the size, from every site (the guarantee
+  // of the vertex they replace).
   bool insert_for(Rule rule, int q) {
     if (!p_.off_centres || (rule != Rule::bad_shape && rule != Rule::too_large)) return attack_vertex(q, number(rule));
-    const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
-    int from = v.sites[0], to = v.sites[1];
-    double delta2 = std::numeric_limits<double>::infinity();
-    for (int i : v.sites)
-      for (int j : v.sites)
-        if (i != j)
-          if (const double l2 = squared_distance(site(i), sites_.points[static_cast<std::size_t>(j)]); l2 < delta2) delta2 = l2, from = i, to = j;
-    const double least = rule == Rule::bad_shape ? p_.shape_bound * std::sqrt(delta2) : p_.size;
-    return attack_off_centre(q, number(rule), from, to, least);
+    return attack_off_centre(q, number(rule), rule == Rule::bad_shape ? p_.shape_bound : 0, p_.size);
   }
   // The first tie to which `rule` applies gets a site at its vertex (conditionally).
   bool tie_rule(Rule rule) {

@@ -173,8 +173,15 @@ bool VoronoiRefinement::attack_vertex(int q, int rule) {
   return attack(c, rule, radius, "the Voronoi vertex of sites " + trio_text(v.sites), displacement);
 }
 
-bool VoronoiRefinement::attack_off_centre(int q, int rule, int p, int o, double least, double unit) {
+bool VoronoiRefinement::attack_off_centre(int q, int rule, double ratio, double size) {
   const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
+  int p = v.sites[0], o = v.sites[1];
+  double delta2 = std::numeric_limits<double>::infinity();
+  for (int i : v.sites)
+    for (int j : v.sites)
+      if (i != j)
+        if (const double l2 = squared_distance(site(i), sites_.points[static_cast<std::size_t>(j)]); l2 < delta2) delta2 = l2, p = i, o = j;
+  const double least = ratio > 0 ? ratio * std::sqrt(delta2) : size, unit = 1;
   const MetricSite P = site(p), O = site(o);
   const Point2<double> c = rounded_vertex(q).first;
   const double r = std::sqrt(squared_distance(P, c));

@@ -100,13 +100,14 @@ class VoronoiRefinement {
   // an exact tie's vertex rounded (rounded).
   bool attack_vertex(int q, int rule);
   // The unit-aware choice (issue 41, docs/refiners.md § Off-centres): Üngör's off-centre carried to
-  // the metric. For a rule whose guarantee is a new site at least `least` from the others (bad
-  // shape: B δ; too large: the size), instead of Voronoi vertex q of the short edge p–o (p's
-  // length δ): the point x on the way from the edge's midpoint (d_p = d_o on it) to q where
-  // d_p(x) = ℓ = clamp(unit, least, r(q)), when x lies in Ω and no site is nearer to it than ℓ;
-  // else q itself. A choice in doubles, as every choice of where to insert: the certificate never
+  // the metric. For a rule whose guarantee is a new site at least `least` from the others, instead
+  // of Voronoi vertex q: the point x on the way from the midpoint (d_p = d_o) of q's shortest edge
+  // p–o (δ = d_p(o), the least of the six lengths of its sites) to q where d_p(x) = ℓ =
+  // clamp(1, least, r(q)), least = ratio·δ when ratio > 0 (a shape rule: r(q) > ratio·δ), else
+  // size (a size rule: r(q) > size), when x lies in Ω and no site is nearer to it than ℓ; else q
+  // itself. A choice in doubles, as every choice of where to insert: the certificate never
   // depends on it.
-  bool attack_off_centre(int q, int rule, int p, int o, double least, double unit = 1);
+  bool attack_off_centre(int q, int rule, double ratio, double size);
   bool attack_tie(const ExactTie& tie, int rule);
   // The sign of d_a(q)² − R² at Voronoi vertex q, decided exactly; nothing when undecided (the size
   // rules).

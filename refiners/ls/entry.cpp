@@ -14,6 +14,7 @@ LsParameters parameters(const ParameterValues& v, const common::Budget& budget) 
   LsParameters p;
   static_cast<common::Budget&>(p) = budget;
   p.theta_bound = v.at("theta-bound"), p.size = v.at("size");
+  p.off_centres = v.at("off-centres") != 0;
   p.normalized_metric = v.at("normalized-metric") != 0;
   if (!(p.theta_bound > 0 && p.theta_bound < 60))
     throw ParameterError("--theta-bound " + shortest_decimal(p.theta_bound) + " is out of range: need 0 < θ_bound < 60 (degrees)");
@@ -58,7 +59,8 @@ std::vector<std::string> report(const LsResult& r, const LsParameters& p, const 
                                    "(LS: every point of the triangle)"
                                  : "  angles checked in the metric of the triangle's vertices and of its Voronoi vertex (one metric: LS checks every point of the triangle)");
   o.str("");
-  o << "  parameters: θ_bound = " << p.theta_bound << "°, size = " << p.size << (p.size > 0 ? "" : " (no size rule)");
+  o << "  parameters: θ_bound = " << p.theta_bound << "°, size = " << p.size << (p.size > 0 ? "" : " (no size rule)")
+    << (p.off_centres ? ", off-centres" : "");
   lines.push_back(o.str());
   if (p.normalized_metric)
     lines.push_back("  normalized metric (LS §9): the diagram, the angles and the mesh's metrics in M′ = det(M)^(−1/2) M rounded to doubles; "
@@ -77,10 +79,17 @@ RefinerEntry entry() {
           {{"theta-bound", "smallest angle θ_bound in degrees (LS Theorem 11 needs θ_bound < arcsin(1/(2√2)) ≈ 20.7048°)", d.theta_bound},
            {"size", "largest circumradius in the metric, 0 for none", d.size},
            {"normalized-metric",
-            "LS §9's variation: the diagram from M′ = det(M)^(−1/2) M, sizes judged with M (the mesh's metrics are then M′)", 0, true}},
+            "LS §9's variation: the diagram from M′ = det(M)^(−1/2) M, sizes judged with M (the mesh's metrics are then M′)", 0, true},
+           {"off-centres",
+            "unit-aware insertion: a Voronoi vertex of poor angle or too large gets its site at the off-centre on the way from its "
+            "shortest edge's midpoint, where that edge's end is at unit distance (at least δ/(2 sin θ_bound), resp. the size; "
+            "fields that vary)",
+            0, true}},
           [](const common::Domain& domain, const fields::MetricField& field, const ParameterValues& values,
              const common::Budget& budget, unsigned, const common::Progress& progress) {
             const LsParameters p = parameters(values, budget);
+            if (p.off_centres && field.name == "constant")
+              throw ParameterError("--off-centres: LS with the constant field runs Del_M, which inserts at circumcentres only");
             LsResult r = refine_ls(domain, field, p, progress);
             std::vector<std::string> lines = report(r, p, domain, field.name == "constant");
             return Run{std::move(r), std::move(lines)};

@@ -48,6 +48,15 @@ class LsVaryingRefinement : public VoronoiRefinement {
       if (diagram_.vertices()[q].holders > 0) violators_.push_back(static_cast<int>(q));
   }
 
+  // The site of violator q: at q, or, with off-centres, poor angle and too large at the off-centre
+  // of q's shortest edge at least δ/(2 sin θ_bound) (the radius of a triangle whose least angle is
+  // θ_bound, which a poor angle's vertex exceeds), resp. the size, from every site.
+  bool insert_for(Rule rule, int q) {
+    if (!p_.off_centres || (rule != Rule::poor_angle && rule != Rule::too_large)) return attack_vertex(q, static_cast<int>(rule));
+    const double ratio = rule == Rule::poor_angle ? 1 / (2 * std::sin(p_.theta_bound * std::acos(-1.0) / 180)) : 0;
+    return attack_off_centre(q, static_cast<int>(rule), ratio, p_.size);
+  }
+
   std::size_t queued() const { return subsegments_.queued() + ties_.size() + violators_.size(); }
   std::string done() const { return "no encroached subsegment and no violator"; }
 
@@ -60,7 +69,7 @@ class LsVaryingRefinement : public VoronoiRefinement {
       const Rule rule = violation(q);
       if (!stalled_.empty()) return true;
       if (rule == Rule::none) continue;
-      if (!attack_vertex(q, static_cast<int>(rule))) violators_.push_front(q);
+      if (!insert_for(rule, q)) violators_.push_front(q);
       return true;
     }
     for (const JudgedTie& judged : exact_ties_) {
