@@ -194,7 +194,7 @@ TEST(RefineFrom, BadInputIsOneLineAndExit2) {
   refused("--algo bwy --exact-sites --from " + square, "vertex 4 (0.4, 0.6) is not a pair of doubles", d);
   refused("--algo bwy --from " + fixtures + "gmsh-lshape-shock-coarse.msh", "has no metric (give --metric FILE or --field NAME)", d);
   refused("--algo bwy --domain square --from " + square, "--domain and --from", d);
-  refused("--algo star --coarsen --from " + square, "--coarsen: --algo star", d);
+  refused("--algo star --from " + square, "--from: --algo star starts from the domain's corners only", d);
   refused("--algo bwy --metric m.sol", "go with --from MESH", d);
   refused("--algo bwy --from " + (d / "missing.msh").string(), "missing.msh", d);
 }

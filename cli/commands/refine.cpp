@@ -219,9 +219,11 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   MeshInput in = o.from;
   if (o.field_option->count() > 0) in.field = o.field, in.params = o.params;
   else if (!o.params.empty()) throw UsageError("--param without --field: the metric is the mesh's own");
-  if (o.coarsen && !entry.dual_of_diagram)
-    throw UsageError("--coarsen: --algo " + entry.name + "'s certificate is local uniformity, which removals would need the stars rebuilt for; "
-                     "--algo " + refiners_where(true) + " coarsen");
+  // The star refiner builds its stars from Ω's corners and splits ∂Ω at exact midpoints (LU §4.1), which a mesh's
+  // boundary vertices, with all their bits, do not have: it would drop the mesh's vertices.
+  if (!entry.dual_of_diagram)
+    throw UsageError("--from: --algo " + entry.name + " starts from the domain's corners only and would drop the mesh's vertices; --algo " +
+                     refiners_where(true) + " start from a mesh");
   const StartingMesh start = starting_mesh(in, o.exact_sites, o.quiet);
   const std::size_t vertices_in = start.domain->vertices().size();
   const auto progress = progress_printer(o.quiet);
@@ -236,7 +238,7 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
     throw UsageError(e.what());
   }
   Coarsened coarsened{run.result.mesh, 0, 0};
-  if (o.coarsen) coarsened = coarsen(run.result.mesh, o.quiet);
+  if (o.coarsen && run.result.consistent) coarsened = coarsen(run.result.mesh, o.quiet);  // a stopped run is not coarsened (said)
   const geometry::Mesh<double>& m = coarsened.mesh;
   const RefinedCertificate certificate = certify_refined(entry, m, o.quiet);
   std::vector<OutputFile> files;
@@ -255,7 +257,8 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   std::string text = "refine --from " + o.from.path + ": " + std::to_string(vertices_in) + " vertices (" +
                      std::to_string(start.boundary_vertices) + " on the boundary, " + std::to_string(start.rounded) +
                      " rounded to the nearest doubles), " + std::to_string(start.interior_segments) + " interior segments; metric " +
-                     start.metric_source + "\n" + report_text(run) + (o.coarsen ? "  coarsened: " + std::to_string(coarsened.removed) + " vertices removed, each kept out only when the oracle certified the rest (" +
+                     start.metric_source + "\n" + report_text(run) + (o.coarsen && !run.result.consistent ? "  not coarsened: the refiner stopped early\n"
+                     : o.coarsen ? "  coarsened: " + std::to_string(coarsened.removed) + " vertices removed, each kept out only when the oracle certified the rest (" +
                                       std::to_string(coarsened.diagrams) + " exact diagrams)\n"
                                 : "") +
                      before_after_text(start, certificate, vertices_in, coarsened.removed);

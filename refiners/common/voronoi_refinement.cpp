@@ -258,26 +258,33 @@ std::vector<int> VoronoiRefinement::encroachers(int s) const {
 }
 
 // Ruppert's concentric shells carried to the metric (Shewchuk's modified segment splitting): a
-// subsegment with exactly one end at a corner of Ω whose two edges meet at less than 60° in the
-// corner's metric M_c is split at a power-of-two distance from the corner in M_c, between a third
+// subsegment with exactly one end at a sharp corner of Ω, whose two edges meet at less than 60° in
+// the corner's metric M_c, is split at a power-of-two distance from the corner in M_c, between a third
 // and two thirds of the subsegment. Splits on both edges then come at the same distances, where
 // neither encroaches the other's, and the ping-pong of splits towards the corner ends (seen: a
 // peer's L-shape mesh for the shock field, whose re-entrant corner is 20° in its metric, split
 // down to 10⁻⁶ of the corner). The parameter from a, or nothing for the metric midpoint.
 std::optional<double> VoronoiRefinement::shell_parameter(int a, int b) const {
   const int n = static_cast<int>(domain_.size());
-  if ((a < n) == (b < n)) return std::nullopt;
-  const int c = a < n ? a : b, o = a < n ? b : a;
   const auto& corners = domain_.corners();
-  const Point2<double>&p = corners[static_cast<std::size_t>(c)], &u = corners[static_cast<std::size_t>((c + n - 1) % n)],
-                       &w = corners[static_cast<std::size_t>((c + 1) % n)];
-  const Sym2<double>& M = sites_.metrics[static_cast<std::size_t>(c)];
-  const auto dot = [&](double x1, double y1, double x2, double y2) { return M.m11 * x1 * x2 + M.m12 * (x1 * y2 + y1 * x2) + M.m22 * y1 * y2; };
-  const double ux = u.x - p.x, uy = u.y - p.y, wx = w.x - p.x, wy = w.y - p.y;
-  const double cosine = dot(ux, uy, wx, wy) / std::sqrt(dot(ux, uy, ux, uy) * dot(wx, wy, wx, wy));
-  if (!(cosine > 0.5)) return std::nullopt;  // 60° or more: the metric midpoint
-  const Point2<double>& q = sites_.points[static_cast<std::size_t>(o)];
-  const double L = std::sqrt(dot(q.x - p.x, q.y - p.y, q.x - p.x, q.y - p.y));
+  const auto dot = [](const Sym2<double>& M, double x1, double y1, double x2, double y2) {
+    return M.m11 * x1 * x2 + M.m12 * (x1 * y2 + y1 * x2) + M.m22 * y1 * y2;
+  };
+  // Corner k's edges meet at less than 60° in its metric (a straight corner, as every boundary
+  // vertex of a mesh is under `refine --from`, does not).
+  const auto sharp = [&](int k) {
+    if (k >= n) return false;
+    const Point2<double>&p = corners[static_cast<std::size_t>(k)], &u = corners[static_cast<std::size_t>((k + n - 1) % n)],
+                         &w = corners[static_cast<std::size_t>((k + 1) % n)];
+    const Sym2<double>& M = sites_.metrics[static_cast<std::size_t>(k)];
+    const double ux = u.x - p.x, uy = u.y - p.y, wx = w.x - p.x, wy = w.y - p.y;
+    return dot(M, ux, uy, wx, wy) > 0.5 * std::sqrt(dot(M, ux, uy, ux, uy) * dot(M, wx, wy, wx, wy));
+  };
+  const bool sa = sharp(a), sb = sharp(b);
+  if (sa == sb) return std::nullopt;
+  const int c = sa ? a : b, o = sa ? b : a;
+  const Point2<double>&p = sites_.points[static_cast<std::size_t>(c)], &q = sites_.points[static_cast<std::size_t>(o)];
+  const double L = std::sqrt(dot(sites_.metrics[static_cast<std::size_t>(c)], q.x - p.x, q.y - p.y, q.x - p.x, q.y - p.y));
   const double d = std::exp2(std::floor(std::log2(2 * L / 3)));  // in [L/3, 2L/3]
   if (!(d > 0 && d < L)) return std::nullopt;
   return c == a ? d / L : 1 - d / L;
