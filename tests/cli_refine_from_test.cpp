@@ -2,8 +2,8 @@
 // mesh, checked here by a second command (`anisocert dual`, the oracle's own verdict on the file
 // written) and against the input (every input vertex, rounded to the nearest double, is a vertex
 // of the output; the counts the report gives are the files'); --coarsen removes only interior
-// vertices and keeps the certificate; --off-centres changes where BWY inserts and raises the share
-// of unit edges from scratch; every bad input is one line, exit 2, nothing written.
+// vertices and keeps the certificate; --off-centres changes where BWY inserts and keeps the
+// certificate; every bad input is one line, exit 2, nothing written.
 #include "cli_run.hpp"
 
 #include <nlohmann/json.hpp>
@@ -120,20 +120,20 @@ TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
   EXPECT_GT(share(r.out), share(plain.out)) << r.out << plain.out;
 }
 
-TEST(RefineFrom, OffCentresMoveBwysInsertionsAndRaiseTheUnitShareFromScratch) {
+TEST(RefineFrom, OffCentresMoveBwysInsertionsAndKeepTheCertificate) {
+  // The share of unit edges they give is measured, not promised (docs/validation.md: up on the
+  // default shock field, down on the coarse one); that they change where BWY inserts, and that the
+  // oracle still certifies the result, is the property (BWY_R and LS_S9 run half their cases with them).
   const fs::path d = fresh("offcentres");
-  const auto unit_share = [&](const std::string& extra, const std::string& name) {
-    const std::string mesh = (d / name).string();
+  for (const std::string& extra : {std::string(), std::string(" --off-centres")}) {
+    const std::string mesh = (d / (extra.empty() ? "vertex.json" : "off.json")).string();
     const Outcome r = run("refine --quiet --algo bwy" + shock_coarse + extra + " -o " + mesh);
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
     EXPECT_EQ(run("dual --quiet " + mesh).exit_code, 0) << extra;
-    run("certify " + mesh + " --checks metric --json " + (d / (name + ".certify")).string());
-    const auto j = nlohmann::json::parse(read(d / (name + ".certify")))["lengths"];
-    return double(j["unit_edges"].get<std::size_t>()) / double(j["edges"].get<std::size_t>());
-  };
-  const double vertex = unit_share("", "vertex.json"), off = unit_share(" --off-centres", "off.json");
+  }
   EXPECT_NE(sites_of(d / "vertex.json"), sites_of(d / "off.json"));
-  EXPECT_GT(off, vertex);
+  EXPECT_EQ(run("refine --quiet --algo ls --field constant --off-centres").err,
+            "anisocert: --off-centres: LS with the constant field runs Del_M, which inserts at circumcentres only\n");
 }
 
 // The bad inputs: one line naming what is wrong, exit 2, nothing written.
