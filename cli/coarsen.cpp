@@ -108,15 +108,18 @@ Coarsened coarsen(const Mesh<double>& m, bool quiet) {
   const auto progress = progress_printer(quiet);
   std::vector<int> origin(m.sites.size());  // each current site's index in m
   for (std::size_t k = 0; k < origin.size(); ++k) origin[k] = static_cast<int>(k);
-  std::vector<char> fixed(m.sites.size(), 0);  // by index in m: on a segment, or put back once
-  for (const auto& [a, b] : m.segments) fixed[static_cast<std::size_t>(a)] = fixed[static_cast<std::size_t>(b)] = 1;
+  // By index in m: how often a removal was put back (a vertex is tried at most `tries` times), and
+  // the vertices on segments, never removed.
+  constexpr int tries = 3;
+  std::vector<int> refused(m.sites.size(), 0);
+  for (const auto& [a, b] : m.segments) refused[static_cast<std::size_t>(a)] = refused[static_cast<std::size_t>(b)] = tries;
   double share = unit_share(m);
   for (int round = 1;; ++round) {
     const Mesh<double>& cur = c.mesh;
     const auto n = neighbours(cur);
     std::vector<std::pair<double, int>> candidates;  // (shortest mean length, site)
     for (std::size_t v = 0; v < n.size(); ++v) {
-      if (fixed[static_cast<std::size_t>(origin[v])] || n[v].empty()) continue;
+      if (refused[static_cast<std::size_t>(origin[v])] >= tries || n[v].empty()) continue;
       double shortest = INFINITY, longest = 0;
       for (int w : n[v]) {
         const double l = mean_length(cur, static_cast<int>(v), w);
@@ -144,7 +147,7 @@ Coarsened coarsen(const Mesh<double>& m, bool quiet) {
         for (int v : batch) {
           bool near = t.near_failures.count(v) > 0;
           for (int w : n[static_cast<std::size_t>(v)]) near = near || t.near_failures.count(w) > 0;
-          if (near) fixed[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])] = 1;
+          if (near) ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])];
           else rest.push_back(v);
         }
         if (rest.size() == batch.size()) rest.resize(batch.size() / 2);
@@ -166,8 +169,8 @@ Coarsened coarsen(const Mesh<double>& m, bool quiet) {
     if (progress)
       progress("refine --coarsen: round " + std::to_string(round) + ": " + std::to_string(kept) + " of " + std::to_string(tried.size()) +
                " vertices removed (" + std::to_string(c.removed) + " in all, " + std::to_string(c.diagrams) + " exact diagrams)");
-    if (kept == 0)  // none of them again: every round removes vertices or fixes some, so coarsening ends
-      for (int v : tried) fixed[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])] = 1;
+    if (kept == 0)  // every round removes vertices or counts a refusal of each it tried, so coarsening ends
+      for (int v : tried) ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])];
   }
   return c;
 }

@@ -5,13 +5,14 @@
 // conclusion, decided exactly; oracle/diagram), and that dual is the new mesh.
 //
 // Where to remove is a choice in doubles (it never makes a verdict): an interior vertex (on no
-// segment) with an edge shorter than 1/√2 and none longer than 1 in the geometric mean of its ends'
-// lengths; no two removed at once are neighbours. A round removes such a set; the oracle then
-// judges the remaining vertices: the removals next to the cells its check names are put back,
-// and the rest tried again; a round whose certified mesh has no larger share of unit edges (both
-// lengths in [1/√2, √2], in doubles) keeps the better half, and coarsening ends when a round
-// removes nothing. Only a dual_of_diagram refiner's output is coarsened (its certificate is the
-// dual; a star refiner's, local uniformity, would need the stars rebuilt).
+// segment) with an edge shorter than 1/√2 and none longer than √2 in the geometric mean of its
+// ends' lengths, shortest first; no two removed at once are neighbours. A round removes such a
+// set; the oracle then judges the remaining vertices: the removals next to the cells its check
+// names are put back, and the rest tried again; a round whose certified mesh has no larger share
+// of unit edges (both lengths in [1/√2, √2], in doubles) tries the better half. A vertex put back
+// three times is not tried again, so coarsening ends; it ends when a round removes nothing and no
+// vertex is left to try. Only a dual_of_diagram refiner's output is coarsened (its certificate is
+// the dual; a star refiner's, local uniformity, would need the stars rebuilt).
 #include "geometry/mesh.hpp"
 
 #include <cstddef>
