@@ -142,9 +142,9 @@ RC_GTEST_PROP(BwyRefiner, TraceRecordsEveryInsertion, ()) {
   for (std::size_t i = 0; i < r.trace.size(); ++i) {
     const auto& e = r.trace[i];
     RC_ASSERT(e.x == r.mesh.sites[first + i].x && e.y == r.mesh.sites[first + i].y);
-    RC_ASSERT(e.rule >= 1 && e.rule <= 9);
+    RC_ASSERT(e.rule >= 1 && e.rule <= 10);
     const Rule rule = static_cast<Rule>(e.rule);
-    const bool split = rule == Rule::encroached_segment || rule == Rule::not_an_edge || rule == Rule::split_instead;
+    const bool split = rule == Rule::encroached_segment || rule == Rule::not_an_edge || rule == Rule::split_instead || rule == Rule::corner_shell;
     const bool at_vertex = rule == Rule::bad_shape || rule == Rule::several_vertices || rule == Rule::overlap || rule == Rule::too_large;
     if (split) RC_ASSERT(e.radius == 0);
     if (at_vertex) RC_ASSERT(e.radius > 0);

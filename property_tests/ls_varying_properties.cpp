@@ -155,7 +155,7 @@ RC_GTEST_PROP(LsRefiner, TraceRecordsEveryInsertionWithItsNearestSite, ()) {
     RC_ASSERT(std::abs(recorded - least) <= 1e-12L * least);
     const Rule rule = static_cast<Rule>(e.rule);
     RC_ASSERT(std::find(refiners::ls::rules_by_priority.begin(), refiners::ls::rules_by_priority.end(), rule) != refiners::ls::rules_by_priority.end());
-    const bool split = rule == Rule::encroached_segment || rule == Rule::violator_encroaches;
+    const bool split = rule == Rule::encroached_segment || rule == Rule::violator_encroaches || rule == Rule::corner_shell;
     const bool at_vertex = rule == Rule::poor_angle || rule == Rule::too_large || rule == Rule::inverted || rule == Rule::unwedged;
     if (split) RC_ASSERT(e.radius == 0);
     if (at_vertex) RC_ASSERT(e.radius > 0);

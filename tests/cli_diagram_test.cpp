@@ -394,7 +394,7 @@ TEST(CliMesh, BwyAppliesOneRulePerStepInTheOrderOfSection322) {
                           "--shape-bound 100 --size 0 --quiet -o " + base + "_tie_out.json";
   const Outcome first = run(tie + " --max-vertices 14");
   EXPECT_EQ(first.exit_code, 1) << first.err;
-  EXPECT_NE(first.out.find("insertions by rule: encroached segment 4, unresolved 0, not an edge 0, split instead 0, bad shape 0, several vertices 1,"),
+  EXPECT_NE(first.out.find("insertions by rule: corner shell 0, encroached segment 4, unresolved 0, not an edge 0, split instead 0, bad shape 0, several vertices 1,"),
             std::string::npos) << first.out;
   const Outcome whole = run(tie);
   EXPECT_EQ(whole.exit_code, 0) << whole.err;

@@ -4,6 +4,7 @@
 #include "numbers/rational.hpp"
 #include "refiners/common/domain.hpp"
 #include "refiners/common/exact_split.hpp"
+#include "refiners/common/segment_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@ using anisocert::rational_from_double;
 using anisocert::predicates::Point2;
 using anisocert::refiners::common::exact_halvings;
 using anisocert::refiners::common::exact_midpoint;
+using anisocert::refiners::common::split_halvings;
 
 bool is_double(const Rational& q) { return rational_from_double(q.convert_to<double>()) == q; }
 
@@ -131,3 +133,34 @@ TEST(ExactSplit, DomainAtTheHalvingBoundIsAccepted) {
 }
 
 }  // namespace
+
+// A mesh's boundary vertex has all 53 bits (`refine --from`): the edge from (0, 0) to (x, 0), x the
+// double nearest 0.0131408939483 (an odd multiple of 2⁻⁵⁹), has no grid point a + j2⁻ᵏ(b − a)
+// that is a double beyond the first halving, but every double between its ends lies on it:
+// split_halvings counts ilogb(x) − ilogb(ulp(x)) − 2 = −7 + 59 − 2 = 50 halvings, and the split
+// points are doubles of the edge. The coarsest double within 1/64 of the edge around its midpoint
+// x/2 ≈ 0.0065704 (the window [0.0063651, 0.0067758]) is 27/4096: no multiple of 2⁻¹¹ lies in
+// it (13/2048 and 14/2048 do not), one of 2⁻¹² does.
+TEST(ExactSplit, AxisParallelEdgesOfFullMantissaVerticesSplitAtTheirDoubles) {
+  const double x = 0.0131408939483;
+  const Point2<double> a{0, 0}, b{x, 0};
+  EXPECT_EQ(exact_halvings(a, b), 0);
+  EXPECT_FALSE(level_is_exact(a, b, 2));
+  EXPECT_EQ(split_halvings(a, b), 50);
+  EXPECT_EQ(split_halvings(Point2<double>{0.25, x}, Point2<double>{0.25, 0}), 50);  // the same upright
+  EXPECT_EQ(split_halvings(Point2<double>{INFINITY, 0}, Point2<double>{INFINITY, 1}), 0);
+  EXPECT_EQ(split_halvings(Point2<double>{0, 0}, Point2<double>{x, x}), exact_halvings(Point2<double>{0, 0}, Point2<double>{x, x}));  // slanted
+  const auto z = anisocert::refiners::common::split_point(a, b, Rational(1, 4), Rational(3, 4), Rational(1, 3));
+  ASSERT_TRUE(z);
+  EXPECT_EQ(z->y, 0);
+  EXPECT_EQ(z->x, (rational_from_double(x) / 3).convert_to<double>());  // the double nearest x/3
+  const auto c = anisocert::refiners::common::coarse_split_point(a, b, Rational(0), Rational(1), Rational(1, 2), Rational(1, 64));
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->y, 0);
+  EXPECT_EQ(c->x, 27.0 / 4096);
+  // A window that holds no double is refused, not rounded into it: x/7 lies a seventh of an ulp
+  // or more from every double (x = m 2⁻⁵⁹ with m not divisible by 7; the doubles near x/7 are
+  // 2⁻⁶² apart), far more than the window's 2⁻⁶² x on either side.
+  ASSERT_NE(denominator(rational_from_double(x) * Rational(anisocert::Integer(1) << 59) / 7), 1);
+  EXPECT_FALSE(anisocert::refiners::common::coarse_split_point(a, b, Rational(0), Rational(1), Rational(1, 7), Rational(1, 1) / Rational(1L << 62)));
+}

@@ -19,7 +19,7 @@ using common::ExactTie;
 using predicates::Point2;
 
 common::VoronoiRules bwy_rules() {
-  return {number(Rule::encroached_segment), number(Rule::split_instead), number(Rule::unresolved), number(Rule::island), rule_table()};
+  return {number(Rule::encroached_segment), number(Rule::split_instead), number(Rule::unresolved), number(Rule::island), number(Rule::corner_shell), rule_table()};
 }
 
 // A tie's key in T (a Voronoi vertex's is its id): −1 − its index among the ties in closed Ω.

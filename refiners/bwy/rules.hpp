@@ -30,6 +30,9 @@
 //     metrics: no triangle), a site (not BWY's), before rule 2: T lacks the vertices there, and a
 //     subsegment near them would be judged no edge (seen: near-cocircular corners of a rectangle
 //     with two metrics of distortion 1.001 got rule 2 splits at half the inter-site distance).
+//  10 corner shell: before every other rule, each corner of Ω whose edges meet at less than 60° in
+//     its metric gets a site on both its subsegments at the same power-of-two distance in that
+//     metric (Ruppert's corner lopping; common/voronoi_refinement.hpp, not BWY's).
 // A Voronoi vertex of degree k ≥ 4 among sites of one metric (an exact tie, common/exact_tie.hpp) puts a
 // fan of its k-gon in T; it is badly shaped when r/δ > B for δ the k-gon's shortest side, which
 // every fan has in one triangle (a diagonal of cocircular points is at least the shortest side on
@@ -50,11 +53,12 @@ enum class Rule {
   too_large = 6,
   split_instead = 7,
   island = 8,
-  unresolved = 9
+  unresolved = 9,
+  corner_shell = 10
 };
 
 inline std::vector<common::RuleName> rule_table() {
-  return {{1, "encroached segment"}, {9, "unresolved"}, {2, "not an edge"}, {7, "split instead"}, {3, "bad shape"},
+  return {{10, "corner shell"}, {1, "encroached segment"}, {9, "unresolved"}, {2, "not an edge"}, {7, "split instead"}, {3, "bad shape"},
           {4, "several vertices"},   {5, "overlap"},     {6, "too large"},     {8, "island"}};
 }
 

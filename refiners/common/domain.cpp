@@ -24,7 +24,7 @@ Domain::Domain(const Polygon<double>& corners, const std::vector<Point2<double>>
   if (const auto defect = geometry::simplicity_defect(exact_)) throw DomainError(geometry::describe(*defect, exact_, "domain"));
   for (std::size_t i = 0; i < corners_.size(); ++i) {
     const Point2<double>&a = corners_[i], &b = corners_[(i + 1) % corners_.size()];
-    const int k = exact_halvings(a, b);
+    const int k = split_halvings(a, b);
     if (k < min_halvings)
       throw DomainError("domain edge " + std::to_string(i) + " from " + point_text(a) + " to " + point_text(b) +
                         " can be halved exactly in doubles only " + std::to_string(k) + " times (" +

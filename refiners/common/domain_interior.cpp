@@ -53,7 +53,7 @@ void Domain::check_interior() {
     for (std::size_t k = 0; k < v; ++k)
       if (static_cast<int>(k) != a && static_cast<int>(k) != b && geometry::on_segment(exact[k], exact[a], exact[b]))
         throw DomainError(ends + " passes through " + vertex(k) + "; split it there");
-    if (const int h = exact_halvings(vertices_[a], vertices_[b]); h < min_halvings)
+    if (const int h = split_halvings(vertices_[a], vertices_[b]); h < min_halvings)
       throw DomainError(ends + " can be halved exactly in doubles only " + std::to_string(h) + " times (" + std::to_string(min_halvings) +
                         " needed: split points must lie exactly on it); give coordinates with fewer binary digits");
   }

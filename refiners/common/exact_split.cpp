@@ -52,12 +52,16 @@ int axis_halvings(double u, double w) {
 }  // namespace
 
 int exact_halvings(const predicates::Point2<double>& a, const predicates::Point2<double>& b) {
-  const int grid = std::min(halvings(a.x, b.x), halvings(a.y, b.y));
+  return std::min(halvings(a.x, b.x), halvings(a.y, b.y));
+}
+
+int split_halvings(const predicates::Point2<double>& a, const predicates::Point2<double>& b) {
+  const int grid = exact_halvings(a, b);
+  if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) return grid;
   if (a.x == b.x && a.y != b.y) return std::max(grid, axis_halvings(a.y, b.y));
   if (a.y == b.y && a.x != b.x) return std::max(grid, axis_halvings(a.x, b.x));
   return grid;
 }
-
 int exact_halvings(const predicates::Point3<double>& a, const predicates::Point3<double>& b) {
   return std::min({halvings(a.x, b.x), halvings(a.y, b.y), halvings(a.z, b.z)});
 }

@@ -17,11 +17,13 @@ constexpr int min_halvings = 30;
 
 // How many times segment ab can be halved with every point a double: a lower bound from the
 // coordinates' common binary grid and magnitude (a coordinate equal at both ends never limits).
-// On an axis-parallel segment, where every double between the ends lies on it, at least the
-// halvings that leave each piece two units in the last place long (a mesh's boundary vertices,
-// whose coordinates have all their bits: `refine --from`); split points are then taken among
-// all its doubles (segment_cells.hpp), not only the grid's.
 int exact_halvings(const predicates::Point2<double>& a, const predicates::Point2<double>& b);
+// How many times ab can be split with a double exactly on it inside every piece: exact_halvings,
+// or on an axis-parallel segment, where every double between the ends lies on it, the halvings
+// that leave each piece two units in the last place long if that is more (a mesh's boundary
+// vertices, whose coordinates have all their bits: `refine --from`). Split points are then taken
+// among all its doubles when the grid has none (segment_cells.hpp). What Domain checks.
+int split_halvings(const predicates::Point2<double>& a, const predicates::Point2<double>& b);
 
 // The midpoint of ab when it is a double (exactly on ab), else nothing.
 std::optional<predicates::Point2<double>> exact_midpoint(const predicates::Point2<double>& a,

@@ -17,6 +17,15 @@ namespace anisocert::refiners::common {
 
 namespace {
 
+// uᵀ M v.
+double metric_dot(const Sym2<double>& M, double x1, double y1, double x2, double y2) {
+  return M.m11 * x1 * x2 + M.m12 * (x1 * y2 + y1 * x2) + M.m22 * y1 * y2;
+}
+
+}  // namespace
+
+namespace {
+
 // An upper bound on |b − a|²_M: the quadratic form in doubles plus a bound on its rounding error
 // (under 2⁻⁵⁰ of the sum of its terms' magnitudes).
 double squared_length_above(const Sym2<double>& M, const Point2<double>& a, const Point2<double>& b) {
@@ -70,9 +79,11 @@ void VoronoiRefinement::start() {
     const auto [a, b] = domain_.segment_ends(e);
     subsegments_.add(a, b, static_cast<int>(e));
   }
+  plan_corner_shells();
 }
 
 bool VoronoiRefinement::split_encroached() {
+  if (split_corner_shell()) return true;
   while (const auto s = subsegments_.pop()) {
     const std::vector<int> by = encroachers(*s);
     if (by.empty()) {
@@ -264,30 +275,69 @@ std::vector<int> VoronoiRefinement::encroachers(int s) const {
 // neither encroaches the other's, and the ping-pong of splits towards the corner ends (seen: a
 // peer's L-shape mesh for the shock field, whose re-entrant corner is 20° in its metric, split
 // down to 10⁻⁶ of the corner). The parameter from a, or nothing for the metric midpoint.
-std::optional<double> VoronoiRefinement::shell_parameter(int a, int b) const {
+bool VoronoiRefinement::sharp_corner(int k) const {
   const int n = static_cast<int>(domain_.size());
+  if (k < 0 || k >= n) return false;
   const auto& corners = domain_.corners();
-  const auto dot = [](const Sym2<double>& M, double x1, double y1, double x2, double y2) {
-    return M.m11 * x1 * x2 + M.m12 * (x1 * y2 + y1 * x2) + M.m22 * y1 * y2;
-  };
-  // Corner k's edges meet at less than 60° in its metric (a straight corner, as every boundary
-  // vertex of a mesh is under `refine --from`, does not).
-  const auto sharp = [&](int k) {
-    if (k >= n) return false;
-    const Point2<double>&p = corners[static_cast<std::size_t>(k)], &u = corners[static_cast<std::size_t>((k + n - 1) % n)],
-                         &w = corners[static_cast<std::size_t>((k + 1) % n)];
-    const Sym2<double>& M = sites_.metrics[static_cast<std::size_t>(k)];
-    const double ux = u.x - p.x, uy = u.y - p.y, wx = w.x - p.x, wy = w.y - p.y;
-    return dot(M, ux, uy, wx, wy) > 0.5 * std::sqrt(dot(M, ux, uy, ux, uy) * dot(M, wx, wy, wx, wy));
-  };
-  const bool sa = sharp(a), sb = sharp(b);
+  const Point2<double>&p = corners[static_cast<std::size_t>(k)], &u = corners[static_cast<std::size_t>((k + n - 1) % n)],
+                       &w = corners[static_cast<std::size_t>((k + 1) % n)];
+  const Sym2<double>& M = sites_.metrics[static_cast<std::size_t>(k)];
+  const double ux = u.x - p.x, uy = u.y - p.y, wx = w.x - p.x, wy = w.y - p.y;
+  return metric_dot(M, ux, uy, wx, wy) > 0.5 * std::sqrt(metric_dot(M, ux, uy, ux, uy) * metric_dot(M, wx, wy, wx, wy));
+}
+
+double VoronoiRefinement::corner_distance(int c, int o) const {
+  const Point2<double>&p = sites_.points[static_cast<std::size_t>(c)], &q = sites_.points[static_cast<std::size_t>(o)];
+  return std::sqrt(metric_dot(sites_.metrics[static_cast<std::size_t>(c)], q.x - p.x, q.y - p.y, q.x - p.x, q.y - p.y));
+}
+
+std::optional<double> VoronoiRefinement::shell_parameter(int a, int b) const {
+  const bool sa = sharp_corner(a), sb = sharp_corner(b);
   if (sa == sb) return std::nullopt;
   const int c = sa ? a : b, o = sa ? b : a;
-  const Point2<double>&p = sites_.points[static_cast<std::size_t>(c)], &q = sites_.points[static_cast<std::size_t>(o)];
-  const double L = std::sqrt(dot(sites_.metrics[static_cast<std::size_t>(c)], q.x - p.x, q.y - p.y, q.x - p.x, q.y - p.y));
+  const double L = corner_distance(c, o);
   const double d = std::exp2(std::floor(std::log2(2 * L / 3)));  // in [L/3, 2L/3]
   if (!(d > 0 && d < L)) return std::nullopt;
   return c == a ? d / L : 1 - d / L;
+}
+
+// Each sharp corner's first shell, before any other split: its two subsegments split at the same
+// power-of-two distance from it in its metric, at most half the shorter (Ruppert's corner lopping,
+// in the metric). The splits that follow keep to the shells (shell_parameter) from the start,
+// whatever the first sites near the corner were (a peer's boundary vertices are at any distances).
+void VoronoiRefinement::plan_corner_shells() {
+  const int n = static_cast<int>(domain_.size());
+  for (int c = 0; c < n; ++c) {
+    if (!sharp_corner(c)) continue;
+    const int u = (c + n - 1) % n, w = (c + 1) % n;
+    const auto su = subsegments_.find(u, c), sw = subsegments_.find(c, w);
+    if (!su || !sw) continue;
+    const double d = std::exp2(std::floor(std::log2(std::min(corner_distance(c, u), corner_distance(c, w)) / 2)));
+    for (const auto& [s, o] : {std::pair<int, int>{*sw, w}, std::pair<int, int>{*su, u}}) {
+      const double L = corner_distance(c, o);
+      if (d > 0 && d < L) shells_.push_back({s, c, o, d / L});
+    }
+  }
+}
+
+bool VoronoiRefinement::split_corner_shell() {
+  while (!shells_.empty()) {
+    const Shell sh = shells_.front();
+    shells_.pop_front();
+    const auto [a, b] = subsegments_.ends(sh.s);
+    if (!((a == sh.c && b == sh.o) || (a == sh.o && b == sh.c))) continue;  // split already
+    const Rational t(a == sh.c ? sh.t : 1 - sh.t);
+    const Point2<double>&pa = sites_.points[static_cast<std::size_t>(a)], &pb = sites_.points[static_cast<std::size_t>(b)];
+    const auto z = coarse_split_point(pa, pb, Rational(0), Rational(1), t, Rational(1, 1024));
+    if (!z) continue;
+    const MetricSite Z{*z, sites_.field.at(z->x, z->y)};
+    const int k = insert(Z, rules_.corner_shell, 0, 0, 0);
+    if (k < 0) return true;
+    queue_reached(k, Z);
+    subsegments_.split(sh.s, k);
+    return true;
+  }
+  return false;
 }
 
 // LS §9: s is split at a point z in the closed cell of one of `in` among `near` (every site that

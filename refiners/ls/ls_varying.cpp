@@ -29,7 +29,7 @@ using predicates::Sym2;
 // LS's rules as voronoi_refinement.hpp's shared rules.
 VoronoiRules ls_rules() {
   return {static_cast<int>(Rule::encroached_segment), static_cast<int>(Rule::violator_encroaches), static_cast<int>(Rule::tie),
-          static_cast<int>(Rule::island), rule_table()};
+          static_cast<int>(Rule::island), static_cast<int>(Rule::corner_shell), rule_table()};
 }
 
 class LsVaryingRefinement : public VoronoiRefinement {

@@ -19,6 +19,9 @@
 //     metrics, which symmetric fields give: its dual is no triangle), a site, before the other
 //     violators. Not LS §9's rule; ties among sites of one metric are kept exactly instead
 //     (exact_tie.hpp) and judged by rules 3 and 4.
+//   9 corner shell: before every other rule, each corner of Ω whose edges meet at less than 60° in
+//     its metric gets a site on both its subsegments at the same power-of-two distance in that
+//     metric (Ruppert's corner lopping; fields that vary: common/voronoi_refinement.hpp).
 // Rules 5 to 8 cannot fire while every site has one metric (delaunay_in_metric.hpp): every arc
 // lies in its wedge, and the dual of every Voronoi vertex is a counter-clockwise triangle, or a
 // convex polygon of cocircular sites split into such triangles.
@@ -38,9 +41,10 @@ enum class Rule {
   inverted = 5,
   island = 6,
   unwedged = 7,
-  tie = 8
+  tie = 8,
+  corner_shell = 9
 };
-inline constexpr std::array<Rule, 8> rules_by_priority{Rule::encroached_segment, Rule::violator_encroaches, Rule::tie, Rule::inverted,
+inline constexpr std::array<Rule, 9> rules_by_priority{Rule::corner_shell, Rule::encroached_segment, Rule::violator_encroaches, Rule::tie, Rule::inverted,
                                                        Rule::unwedged, Rule::poor_angle, Rule::too_large, Rule::island};
 
 inline const char* rule_name(Rule rule) {
@@ -53,6 +57,7 @@ inline const char* rule_name(Rule rule) {
     case Rule::island: return "island";
     case Rule::unwedged: return "unwedged";
     case Rule::tie: return "tie";
+    case Rule::corner_shell: return "corner shell";
     case Rule::none: break;
   }
   return "none";
