@@ -147,10 +147,12 @@ StartingMesh starting_mesh(const MeshInput& in, bool exact_sites, bool quiet) {
     const int a = loop[i], b = loop[(i + 1) % loop.size()];
     boundary.insert({std::min(a, b), std::max(a, b)});
   }
-  std::vector<std::pair<int, int>> segments;
-  for (const auto& [a, b] : mesh.edges)
-    if (!boundary.count({std::min(a, b), std::max(a, b)}) && a != b)
-      segments.push_back({index[static_cast<std::size_t>(a)], index[static_cast<std::size_t>(b)]});
+  std::vector<std::pair<int, int>> segments;  // a file's declared edges, and a JSON mesh's constrained segments
+  std::set<std::pair<int, int>> seen = boundary;
+  for (const auto* list : {&mesh.edges, &mesh.segments})
+    for (const auto& [a, b] : *list)
+      if (a != b && seen.insert({std::min(a, b), std::max(a, b)}).second)
+        segments.push_back({index[static_cast<std::size_t>(a)], index[static_cast<std::size_t>(b)]});
   start.interior_segments = segments.size();
   try {
     start.domain.emplace(corners, points, segments);

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -134,6 +135,40 @@ TEST(RefineFrom, OffCentresMoveBwysInsertionsAndKeepTheCertificate) {
   EXPECT_NE(sites_of(d / "vertex.json"), sites_of(d / "off.json"));
   EXPECT_EQ(run("refine --quiet --algo ls --field constant --off-centres").err,
             "anisocert: --off-centres: LS with the constant field runs Del_M, which inserts at circumcentres only\n");
+}
+
+// A constrained segment inside Ω (a JSON mesh's "segments", as a Medit file's declared Edges
+// inside Ω) is an interior segment of X: the output has it as a union of its edges, checked here
+// from the triangles: the sites on the segment y = 1/2, 1/4 <= x <= 3/4, sorted by x, are joined
+// one to the next by edges of the mesh.
+TEST(RefineFrom, AConstrainedSegmentInsideStaysAUnionOfEdges) {
+  const fs::path d = fresh("segment");
+  const std::string mesh = (d / "m.json").string();
+  std::ofstream(mesh) << R"({"sites": [{"x": "0", "y": "0", "metric": ["100", "0", "100"]}, {"x": "1", "y": "0", "metric": ["100", "0", "100"]},
+ {"x": "1", "y": "1", "metric": ["100", "0", "100"]}, {"x": "0", "y": "1", "metric": ["100", "0", "100"]},
+ {"x": "0.25", "y": "0.5", "metric": ["100", "0", "100"]}, {"x": "0.75", "y": "0.5", "metric": ["100", "0", "100"]}],
+ "triangles": [[0, 1, 5], [0, 5, 4], [0, 4, 3], [1, 2, 5], [2, 3, 4], [2, 4, 5]], "segments": [[4, 5]]})"
+                      << "\n";
+  const Outcome r = run("refine --quiet --algo bwy --from " + mesh + " -o " + (d / "out.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 interior segments"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(read(d / "out.json"));
+  std::vector<std::pair<double, int>> on;  // (x, site) on the segment
+  for (std::size_t k = 0; k < j["sites"].size(); ++k) {
+    const double x = std::stod(j["sites"][k]["x"].get<std::string>()), y = std::stod(j["sites"][k]["y"].get<std::string>());
+    if (y == 0.5 && x >= 0.25 && x <= 0.75) on.push_back({x, static_cast<int>(k)});
+  }
+  std::sort(on.begin(), on.end());
+  ASSERT_GE(on.size(), 3u);  // the metric 100 I splits it
+  std::set<std::pair<int, int>> edges;
+  for (const auto& t : j["triangles"])
+    for (int i = 0; i < 3; ++i) {
+      const int a = t[i].get<int>(), b = t[(i + 1) % 3].get<int>();
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  for (std::size_t k = 0; k + 1 < on.size(); ++k)
+    EXPECT_TRUE(edges.count({std::min(on[k].second, on[k + 1].second), std::max(on[k].second, on[k + 1].second)})) << on[k].first;
+  EXPECT_EQ(run("dual --quiet " + (d / "out.json").string()).exit_code, 0);
 }
 
 // The bad inputs: one line naming what is wrong, exit 2, nothing written.

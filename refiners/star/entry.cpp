@@ -126,6 +126,7 @@ RefinerEntry entry() {
             const RefineParameters p = parameters(values, budget, seed);
             if (domain.has_interior())
               throw common::DomainError("--algo star meshes Ω with its boundary only: the domain's points and interior segments are for the other refiners");
+            domain.require_exact_midpoints();  // LU §4.1 splits ∂Ω at midpoints
             StarResult r = refine_star(domain, field, p, progress);
             std::vector<std::string> lines = report(r, p);
             return Run{std::move(r), std::move(lines)};
