@@ -21,9 +21,7 @@ using geometry::Mesh;
 double length(const Mesh<double>& m, int a, int b, int in) {
   const auto& p = m.sites[static_cast<std::size_t>(a)];
   const auto& q = m.sites[static_cast<std::size_t>(b)];
-  const auto& M = m.metrics[static_cast<std::size_t>(in)];
-  const double dx = q.x - p.x, dy = q.y - p.y;
-  return std::sqrt(M.m11 * dx * dx + 2 * M.m12 * dx * dy + M.m22 * dy * dy);
+  return std::sqrt(predicates::quadratic_form(m.metrics[static_cast<std::size_t>(in)], q.x - p.x, q.y - p.y));
 }
 double mean_length(const Mesh<double>& m, int a, int b) { return std::sqrt(length(m, a, b, a) * length(m, a, b, b)); }
 

@@ -6,7 +6,6 @@
 #include "fields/background.hpp"
 #include "geometry/boundary_polygon.hpp"
 #include "io/field_source.hpp"
-#include "numbers/excerpt.hpp"
 #include "oracle/certify/mesh_certifier.hpp"
 #include "oracle/diagram/mesh_dual.hpp"
 #include "predicates/metric.hpp"
@@ -42,8 +41,6 @@ oracle::CertifyOptions measuring(bool uniform) {
   return o;
 }
 
-std::string point_text(const Point2<Rational>& p) { return "(" + exact_excerpt(p.x) + ", " + exact_excerpt(p.y) + ")"; }
-
 std::string percent(std::size_t part, std::size_t whole) {
   char s[32];
   std::snprintf(s, sizeof s, "%.1f%%", whole == 0 ? 0.0 : 100.0 * double(part) / double(whole));
@@ -67,7 +64,7 @@ StartingMesh starting_mesh(const MeshInput& in, bool exact_sites, bool quiet) {
   if (mesh.metrics.empty()) throw UsageError(in.path + ": has no metric (give --metric FILE or --field NAME)");
   for (std::size_t k = 0; k < mesh.metrics.size(); ++k)
     if (!predicates::positive_definite(mesh.metrics[k]))
-      throw UsageError(in.path + ": the metric at vertex " + std::to_string(k) + " " + point_text(mesh.sites[k]) + " (" + file.metric_source +
+      throw UsageError(in.path + ": the metric at vertex " + std::to_string(k) + " " + geometry::point_excerpt(mesh.sites[k]) + " (" + file.metric_source +
                        ") is not positive definite");
   StartingMesh start;
   start.metric_source = in.field.empty() ? file.metric_source : "--field " + in.field;
@@ -102,7 +99,7 @@ StartingMesh starting_mesh(const MeshInput& in, bool exact_sites, bool quiet) {
     rounded.sites[k] = {Rational(q.x), Rational(q.y)};
     if (rounded.sites[k].x != p.x || rounded.sites[k].y != p.y) {
       if (exact_sites)
-        throw UsageError(in.path + ": vertex " + std::to_string(k) + " " + point_text(p) +
+        throw UsageError(in.path + ": vertex " + std::to_string(k) + " " + geometry::point_excerpt(p) +
                          " is not a pair of doubles (--exact-sites; without it, it is rounded to the nearest)");
       ++start.rounded;
     }

@@ -62,6 +62,19 @@ std::vector<std::pair<double, double>> freefem_vertices(const std::string& path)
   return v;
 }
 
+// Whether a decimal text ("0.411121466087", "-1", "0.5") denotes a double, by integer arithmetic
+// on its digits (not the program's parser): n/10ᵏ is dyadic exactly when 5ᵏ divides n, and it is a
+// double when it is dyadic with at most 53 significant bits (FreeFem's 12 digits always fit).
+bool decimal_is_dyadic(const std::string& text) {
+  const std::size_t dot = text.find('.');
+  const std::string frac = dot == std::string::npos ? "" : text.substr(dot + 1);
+  std::string digits = (dot == std::string::npos ? text : text.substr(0, dot)) + frac;
+  if (!digits.empty() && (digits[0] == '-' || digits[0] == '+')) digits.erase(0, 1);
+  unsigned long long n = std::stoull(digits), five = 1;
+  for (std::size_t k = 0; k < frac.size(); ++k) five *= 5;
+  return n % five == 0;
+}
+
 // "N in, A added, R removed" from the report.
 std::array<std::size_t, 3> counts(const std::string& report) {
   std::smatch m;
@@ -86,10 +99,23 @@ TEST(RefineFrom, FreeFemsLShapeBecomesACertifiedDualKeepingEveryVertex) {
   EXPECT_EQ(in, input.size());
   EXPECT_EQ(removed, 0u);
   EXPECT_EQ(in + added, output.size());
-  // FreeFem writes decimals, which are not doubles: every vertex off the axes moved, and the run says how many.
+  // FreeFem writes 12-digit decimals: the run counts exactly the vertices with a coordinate that
+  // is not a double, counted here from the file's text.
+  std::size_t not_doubles = 0;
+  {
+    std::ifstream in(freefem_l);
+    std::size_t nv = 0, nt = 0, ne = 0;
+    in >> nv >> nt >> ne;
+    for (std::size_t k = 0; k < nv; ++k) {
+      std::string x, y, label;
+      in >> x >> y >> label;
+      not_doubles += !decimal_is_dyadic(x) || !decimal_is_dyadic(y);
+    }
+  }
   std::smatch m;
   ASSERT_TRUE(std::regex_search(r.out, m, std::regex("([0-9]+) rounded to the nearest doubles"))) << r.out;
-  EXPECT_GT(std::stoul(m[1]), input.size() / 2);
+  EXPECT_GT(not_doubles, 0u);
+  EXPECT_EQ(std::stoul(m[1]), not_doubles);
 }
 
 TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
@@ -168,6 +194,31 @@ TEST(RefineFrom, AConstrainedSegmentInsideStaysAUnionOfEdges) {
     }
   for (std::size_t k = 0; k + 1 < on.size(); ++k)
     EXPECT_TRUE(edges.count({std::min(on[k].second, on[k + 1].second), std::max(on[k].second, on[k + 1].second)})) << on[k].first;
+  EXPECT_EQ(run("dual --quiet " + (d / "out.json").string()).exit_code, 0);
+}
+
+// The degenerate input: a 5 × 5 grid of the unit square in the metric 16 I, every square's corners
+// cocircular (each Voronoi vertex of degree 4, an exact tie). The grid is already a dual of D|Ω
+// (any diagonal of a cocircular square is a tie): nothing is added, and the oracle certifies it.
+TEST(RefineFrom, AGridOfCocircularSquaresIsCertifiedAsItIs) {
+  const fs::path d = fresh("grid");
+  std::string sites, triangles;
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i)
+      sites += std::string(sites.empty() ? "" : ", ") + "{\"x\": \"" + std::to_string(i) + "/4\", \"y\": \"" + std::to_string(j) +
+               "/4\", \"metric\": [\"16\", \"0\", \"16\"]}";
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const int a = 5 * j + i;
+      triangles += std::string(triangles.empty() ? "" : ", ") + "[" + std::to_string(a) + ", " + std::to_string(a + 1) + ", " +
+                   std::to_string(a + 6) + "], [" + std::to_string(a) + ", " + std::to_string(a + 6) + ", " + std::to_string(a + 5) + "]";
+    }
+  std::ofstream(d / "grid.json") << "{\"sites\": [" << sites << "], \"triangles\": [" << triangles << "]}\n";
+  const Outcome r = run("refine --quiet --algo bwy --from " + (d / "grid.json").string() + " -o " + (d / "out.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("vertices: 25 in, 0 added, 0 removed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("16 on the boundary, 0 rounded"), std::string::npos) << r.out;
+  EXPECT_EQ(sites_of(d / "out.json").size(), 25u);
   EXPECT_EQ(run("dual --quiet " + (d / "out.json").string()).exit_code, 0);
 }
 

@@ -142,6 +142,16 @@ std::string mesh_files(const io::MeshFormat& format, const io::MeshFile& file, c
   return written;
 }
 
+// A 2D run's mesh (doubles, its boundary subsegments declared as every mesher's file declares them)
+// in `format` at `path`, as mesh_files adds them.
+std::string mesh_files(const io::MeshFormat& format, const geometry::Mesh<double>& m, const std::string& path, std::vector<OutputFile>& files,
+                       std::vector<std::string>& paths) {
+  io::MeshFile file;
+  file.mesh = geometry::exact(m);
+  file.mesh.edges = file.mesh.segments;
+  return mesh_files(format, file, path, files, paths);
+}
+
 // `refine` on a polyhedron (issue 40): the run, its files, and the exact 3D certifier's verdict on
 // its mesh (valid, locally uniform, ρ₀ and γ₀ met, LU's sliver measure at γ₀): exit 0 only when
 // the run finished with consistent stars and the certifier certifies the mesh.
@@ -212,7 +222,7 @@ int run_refine3(const RefineOptions& o, const refiners::RefinerEntry& entry, con
 }
 
 // `refine --from MESH` (refine_from.hpp): the run from the mesh's vertices, its before/after report
-// and the output's certificate; exit 0 only when the run finished and the output is certified.
+// and the output's certificate; exit 0 only when the output is certified.
 int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry, const refiners::ParameterValues& values,
                     const refiners::common::Budget& budget, const io::MeshFormat* format) {
   if (o.domain_option->count() > 0) throw UsageError("--domain and --from: the domain is the boundary of the mesh's triangles");
@@ -244,12 +254,7 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   std::vector<OutputFile> files;
   std::string written;
   std::vector<std::string> paths;
-  if (format) {
-    io::MeshFile file;
-    file.mesh = geometry::exact(m);
-    file.mesh.edges = file.mesh.segments;
-    written = mesh_files(*format, file, o.output, files, paths);
-  }
+  if (format) written = mesh_files(*format, m, o.output, files, paths);
   if (!o.svg.empty())
     files.push_back({o.svg, io::mesh_svg(m, entry.name + " refiner from " + o.from.path + ": " + std::to_string(m.sites.size()) + " vertices, " +
                                                 (certificate.holds ? "certified" : "not certified"))});
@@ -329,12 +334,7 @@ int run_refine(const RefineOptions& o) {
   std::vector<OutputFile> files;
   std::string written;
   std::vector<std::string> paths;  // written, the mesh's first
-  if (format) {
-    io::MeshFile file;
-    file.mesh = geometry::exact(m);
-    file.mesh.edges = file.mesh.segments;  // the boundary subsegments, as every mesher's file declares them
-    written = mesh_files(*format, file, o.output, files, paths);
-  }
+  if (format) written = mesh_files(*format, m, o.output, files, paths);
   Picture drawn;
   if (!o.svg.empty()) {
     drawn = picture(*entry, m, o);

@@ -17,15 +17,6 @@ namespace anisocert::refiners::common {
 
 namespace {
 
-// uᵀ M v.
-double metric_dot(const Sym2<double>& M, double x1, double y1, double x2, double y2) {
-  return M.m11 * x1 * x2 + M.m12 * (x1 * y2 + y1 * x2) + M.m22 * y1 * y2;
-}
-
-}  // namespace
-
-namespace {
-
 // An upper bound on |b − a|²_M: the quadratic form in doubles plus a bound on its rounding error
 // (under 2⁻⁵⁰ of the sum of its terms' magnitudes).
 double squared_length_above(const Sym2<double>& M, const Point2<double>& a, const Point2<double>& b) {
@@ -268,13 +259,6 @@ std::vector<int> VoronoiRefinement::encroachers(int s) const {
   return by;
 }
 
-// Ruppert's concentric shells carried to the metric (Shewchuk's modified segment splitting): a
-// subsegment with exactly one end at a sharp corner of Ω, whose two edges meet at less than 60° in
-// the corner's metric M_c, is split at a power-of-two distance from the corner in M_c, between a third
-// and two thirds of the subsegment. Splits on both edges then come at the same distances, where
-// neither encroaches the other's, and the ping-pong of splits towards the corner ends (seen: a
-// peer's L-shape mesh for the shock field, whose re-entrant corner is 20° in its metric, split
-// down to 10⁻⁶ of the corner). The parameter from a, or nothing for the metric midpoint.
 bool VoronoiRefinement::sharp_corner(int k) const {
   const int n = static_cast<int>(domain_.size());
   if (k < 0 || k >= n) return false;
@@ -283,14 +267,21 @@ bool VoronoiRefinement::sharp_corner(int k) const {
                        &w = corners[static_cast<std::size_t>((k + 1) % n)];
   const Sym2<double>& M = sites_.metrics[static_cast<std::size_t>(k)];
   const double ux = u.x - p.x, uy = u.y - p.y, wx = w.x - p.x, wy = w.y - p.y;
-  return metric_dot(M, ux, uy, wx, wy) > 0.5 * std::sqrt(metric_dot(M, ux, uy, ux, uy) * metric_dot(M, wx, wy, wx, wy));
+  return predicates::bilinear_form(M.m11, M.m12, M.m22, ux, uy, wx, wy) >
+         0.5 * std::sqrt(predicates::quadratic_form(M, ux, uy) * predicates::quadratic_form(M, wx, wy));
 }
 
 double VoronoiRefinement::corner_distance(int c, int o) const {
-  const Point2<double>&p = sites_.points[static_cast<std::size_t>(c)], &q = sites_.points[static_cast<std::size_t>(o)];
-  return std::sqrt(metric_dot(sites_.metrics[static_cast<std::size_t>(c)], q.x - p.x, q.y - p.y, q.x - p.x, q.y - p.y));
+  return std::sqrt(squared_distance(site(c), sites_.points[static_cast<std::size_t>(o)]));
 }
 
+// Ruppert's concentric shells carried to the metric (Shewchuk's modified segment splitting): a
+// subsegment with exactly one end at a sharp corner of Ω, whose two edges meet at less than 60° in
+// the corner's metric M_c, is split at a power-of-two distance from the corner in M_c, between a third
+// and two thirds of the subsegment. Splits on both edges then come at the same distances, where
+// neither encroaches the other's, and the ping-pong of splits towards the corner ends (seen: a
+// peer's L-shape mesh for the shock field, whose re-entrant corner is 20° in its metric, split
+// down to 10⁻⁶ of the corner). The parameter from a, or nothing for the metric midpoint.
 std::optional<double> VoronoiRefinement::shell_parameter(int a, int b) const {
   const bool sa = sharp_corner(a), sb = sharp_corner(b);
   if (sa == sb) return std::nullopt;
