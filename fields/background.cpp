@@ -147,6 +147,13 @@ std::optional<Sym2<double>> BackgroundMesh::metric_at(const Point2<double>& p) c
   const Query q{{Rational(p.x), Rational(p.y)}, {p.x, p.y}};
   const auto t = locate(q);
   if (!t) return std::nullopt;
+  // At a site, M is the site's own metric, rounded to nearest (the intervals' midpoint can be ulps
+  // off: 16 came back as 16 + 2⁻⁴⁸, and an edge of exactly √2 in M looked longer).
+  for (const int v : triangles_[*t])
+    if (const Point2<Rational>& site = sites_[static_cast<std::size_t>(v)]; q.exact.x == site.x && q.exact.y == site.y) {
+      const Sym2<Rational>& M = metrics_[static_cast<std::size_t>(v)];
+      return Sym2<double>{M.m11.convert_to<double>(), M.m12.convert_to<double>(), M.m22.convert_to<double>()};
+    }
   const int a = triangles_[*t][0];
   if (const auto M = tight_midpoints(p1_value(site_intervals_[a], metric_intervals_[a], gradients_[*t], q.interval))) return M;
   const Sym2<Rational> M = interpolate(triangles_[*t], sites_, metrics_, q.exact);

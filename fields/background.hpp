@@ -51,7 +51,8 @@ class BackgroundMesh {
   // M(p) for the refiners: p located exactly (each coordinate the rational it denotes), the value
   // within 2⁻⁴⁹ relative (about eight units in the last place) of the exact one: m11 and m22 of
   // themselves, m12 of √(m11 m22). From intervals when they are that tight (p1_enclosure.hpp),
-  // else the exact value rounded to nearest. Nothing when no triangle holds p or p is not finite.
+  // else the exact value rounded to nearest; at a site, its own metric rounded to nearest. Nothing
+  // when no triangle holds p or p is not finite.
   std::optional<Sym2<double>> metric_at(const Point2<double>& p) const;
 
   std::size_t triangle_count() const { return triangles_.size(); }

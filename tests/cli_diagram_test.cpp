@@ -255,7 +255,7 @@ TEST(CliMesh, RefineTakesAPslg) {
 
   const Outcome star = run("refine --quiet --domain " + base + "_slit.json -o " + base + "_never.json");
   EXPECT_EQ(star.exit_code, 2);
-  EXPECT_NE(star.err.find("--algo star meshes Ω with its boundary only"), std::string::npos) << star.err;
+  EXPECT_NE(star.err.find("--algo star keeps no interior segments (LU §4.1 protects ∂Ω only)"), std::string::npos) << star.err;
   std::ofstream(base + "_cross.json") << R"({"domain": [[0,0],[1,0],[1,1],[0,1]],
       "points": [[0.25,0.5],[0.75,0.5],[0.5,0.25],[0.5,0.75]], "interior_segments": [[4,5],[6,7]]})";
   const Outcome cross = run("refine --algo ls --quiet --domain " + base + "_cross.json -o " + base + "_never.json");

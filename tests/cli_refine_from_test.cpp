@@ -3,7 +3,8 @@
 // written) and against the input (every input vertex, rounded to the nearest double, is a vertex
 // of the output; the counts the report gives are the files'); --coarsen removes only interior
 // vertices and keeps the certificate; --off-centres changes where BWY inserts and keeps the
-// certificate; every bad input is one line, exit 2, nothing written.
+// certificate; the star refiner starts from the same vertices and is certified locally uniform;
+// every bad input is one line, exit 2, nothing written.
 #include "cli_run.hpp"
 
 #include <nlohmann/json.hpp>
@@ -163,6 +164,56 @@ TEST(RefineFrom, OffCentresMoveBwysInsertionsAndKeepTheCertificate) {
             "anisocert: --off-centres: LS with the constant field runs Del_M, which inserts at circumcentres only\n");
 }
 
+// The star refiner from the same mesh, for a constant metric: every vertex of the mesh is a site from
+// the start (beside Ω's corners), ∂Ω's subsegments, axis-parallel with 12-digit ends whose midpoints
+// are no doubles, are split at the double nearest the midpoint, exactly on ∂Ω; and the output is
+// locally uniform by `certify`, a second command. A mesh with a segment inside Ω is refused.
+TEST(RefineFrom, StarStartsFromEveryVertexAndIsCertifiedLocallyUniform) {
+  const fs::path d = fresh("star");
+  const std::string out = (d / "out.json").string();
+  const Outcome r = run("refine --quiet --algo star --field constant --from " + freefem_l + " -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("certified: locally uniform"), std::string::npos) << r.out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("encroachment ([0-9]+),"))) << r.out;
+  EXPECT_GT(std::stoul(m[1]), 0u);  // ∂Ω was split
+  const auto input = freefem_vertices(freefem_l);
+  const auto output = sites_of(out);
+  for (const auto& v : input) EXPECT_TRUE(output.count(v)) << v.first << ", " << v.second;
+  const auto [in, added, removed] = counts(r.out);
+  EXPECT_EQ(in, input.size());
+  EXPECT_EQ(in + added, output.size());
+  const Outcome c = run("certify " + out);
+  EXPECT_EQ(c.exit_code, 0) << c.out << c.err;
+  EXPECT_NE(c.out.find("valid (a triangulation of the domain, segments are unions of edges): holds"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("locally uniform (every triangle at v has an empty M_v-circumellipse): holds"), std::string::npos) << c.out;
+  // The splits are off any coarse grid: some output site on ∂Ω (x or y 0 or 1, or on the re-entrant
+  // edges x = 1/2, y ≥ 1/2 and y = 1/2, x ≥ 1/2) that is no input vertex has a coordinate along its
+  // edge that is no multiple of 2⁻⁴⁰ (exact midpoints of the 12-digit ends would not be doubles).
+  std::size_t new_on_boundary = 0, fine = 0;
+  for (const auto& [x, y] : output) {
+    const bool vertical = x == 0 || x == 1 || (x == 0.5 && y >= 0.5), horizontal = y == 0 || y == 1 || (y == 0.5 && x >= 0.5);
+    if (!(vertical || horizontal) || std::count(input.begin(), input.end(), std::pair{x, y})) continue;
+    ++new_on_boundary;
+    const double along = vertical ? y : x;
+    fine += std::ldexp(along, 40) != std::floor(std::ldexp(along, 40));
+  }
+  EXPECT_EQ(new_on_boundary, std::stoul(m[1]));
+  EXPECT_GT(fine, 0u);
+
+  const std::string mesh = (d / "segment.json").string();
+  std::ofstream(mesh) << R"({"sites": [{"x": "0", "y": "0", "metric": ["1", "0", "1"]}, {"x": "1", "y": "0", "metric": ["1", "0", "1"]},
+ {"x": "1", "y": "1", "metric": ["1", "0", "1"]}, {"x": "0", "y": "1", "metric": ["1", "0", "1"]},
+ {"x": "0.25", "y": "0.5", "metric": ["1", "0", "1"]}, {"x": "0.75", "y": "0.5", "metric": ["1", "0", "1"]}],
+ "triangles": [[0, 1, 5], [0, 5, 4], [0, 4, 3], [1, 2, 5], [2, 3, 4], [2, 4, 5]], "segments": [[4, 5]]})"
+                      << "\n";
+  const Outcome seg = run("refine --quiet --algo star --from " + mesh + " -o " + (d / "never.json").string());
+  EXPECT_EQ(seg.exit_code, 2);
+  EXPECT_NE(seg.err.find("--algo star keeps no interior segments"), std::string::npos) << seg.err;
+  EXPECT_EQ(std::count(seg.err.begin(), seg.err.end(), '\n'), 1) << seg.err;
+  EXPECT_FALSE(fs::exists(d / "never.json"));
+}
+
 // A constrained segment inside Ω (a JSON mesh's "segments", as a Medit file's declared Edges
 // inside Ω) is an interior segment of X: the output has it as a union of its edges, checked here
 // from the triangles: the sites on the segment y = 1/2, 1/4 <= x <= 3/4, sorted by x, are joined
@@ -218,6 +269,10 @@ TEST(RefineFrom, AGridOfCocircularSquaresIsCertifiedAsItIs) {
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("vertices: 25 in, 0 added, 0 removed"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("16 on the boundary, 0 rounded"), std::string::npos) << r.out;
+  // The 16 sides and 16 diagonals of length 1 and exactly √2 in 16 I, and 24 more sides: unit before
+  // and after (the output's metrics are the file's, to the bit, at its vertices).
+  EXPECT_NE(r.out.find("before: 25 vertices, 32 triangles, unit edges 100.0% of 56"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("after:  25 vertices, 32 triangles, unit edges 100.0% of 56"), std::string::npos) << r.out;
   EXPECT_EQ(sites_of(d / "out.json").size(), 25u);
   EXPECT_EQ(run("dual --quiet " + (d / "out.json").string()).exit_code, 0);
 }
@@ -280,7 +335,6 @@ TEST(RefineFrom, BadInputIsOneLineAndExit2) {
   refused("--algo bwy --exact-sites --from " + square, "vertex 4 (0.4, 0.6) is not a pair of doubles", d);
   refused("--algo bwy --from " + fixtures + "gmsh-lshape-shock-coarse.msh", "has no metric (give --metric FILE or --field NAME)", d);
   refused("--algo bwy --domain square --from " + square, "--domain and --from", d);
-  refused("--algo star --from " + square, "--from: --algo star starts from the domain's corners only", d);
   refused("--algo bwy --metric m.sol", "go with --from MESH", d);
   refused("--algo bwy --from " + (d / "missing.msh").string(), "missing.msh", d);
 }

@@ -316,6 +316,29 @@ TEST(BackgroundMesh, DoubleFieldIsTheExactValueRounded) {
   }
 }
 
+// At a vertex the double field is the vertex's own metric rounded to nearest, bit for bit (found by
+// refine --from on a grid in 16 I: the intervals' midpoint gave 16 + 2⁻⁴⁸ there, and an edge of
+// exactly √2 in the metric counted as too long); random metrics, and the constant 16 I.
+TEST(BackgroundMesh, DoubleFieldAtAVertexIsItsMetricRounded) {
+  std::mt19937 rng(12);
+  for (const bool constant : {true, false}) {
+    Mesh m = square_mesh(8, rng, false);  // vertices i/8: doubles
+    if (constant)
+      for (Sym& M : m.metrics) M = {16, 0, 16};
+    else
+      randomize_metrics(m, rng);
+    const BackgroundMesh b(m);
+    for (std::size_t k = 0; k < m.sites.size(); ++k) {
+      const auto got = b.metric_at(anisocert::predicates::Point2<double>{m.sites[k].x.convert_to<double>(), m.sites[k].y.convert_to<double>()});
+      ASSERT_TRUE(got) << k;
+      const Sym& M = m.metrics[k];
+      EXPECT_EQ(got->m11, M.m11.convert_to<double>()) << k;
+      EXPECT_EQ(got->m12, M.m12.convert_to<double>()) << k;
+      EXPECT_EQ(got->m22, M.m22.convert_to<double>()) << k;
+    }
+  }
+}
+
 // Where triangles overlap (not a conforming mesh), the value is the lowest-indexed triangle's,
 // whatever the order the grid finds them in: two triangles on the base (0, 0)–(4, 0) with apexes
 // (0, 4) and (4, 4), metrics differing at the apexes, meet over (2, 1).

@@ -204,6 +204,7 @@ TEST(Polygon, PointInPolygonAgreesWithTheWindingNumber) {
 // Segment meeting against a second method: solving p1 + t(p2 − p1) = q1 + u(q2 − q1) by Cramer's
 // rule in rationals (t, u ∈ (0, 1) with a non-zero determinant: a crossing unless an endpoint is on
 // the other segment), and, for parallel segments, overlap of the parameter ranges on the line.
+// On a grid of −4 … 4 most pairs have disjoint boxes and many boxes only touch.
 geometry::Meeting meeting_by_parameters(const Point2<Rational>& p1, const Point2<Rational>& p2, const Point2<Rational>& q1,
                                         const Point2<Rational>& q2) {
   const Rational ax = p2.x - p1.x, ay = p2.y - p1.y, bx = q2.x - q1.x, by = q2.y - q1.y, cx = q1.x - p1.x, cy = q1.y - p1.y;
@@ -229,6 +230,8 @@ TEST(Polygon, SegmentMeetingAgreesWithTheParametricSolution) {
     if ((p[0].x == p[1].x && p[0].y == p[1].y) || (p[2].x == p[3].x && p[2].y == p[3].y)) continue;
     const geometry::Meeting expected = meeting_by_parameters(exact(p[0]), exact(p[1]), exact(p[2]), exact(p[3]));
     EXPECT_EQ(geometry::segments_meet(p[0], p[1], p[2], p[3]), expected) << "case " << k;
+    // segments_cross's box filter (disjoint boxes: no crossing) only spares orientations.
+    EXPECT_EQ(geometry::segments_cross(p[0], p[1], p[2], p[3]), expected == geometry::Meeting::crossing) << "case " << k;
     ++counts[static_cast<int>(expected)];
   }
   for (int c : counts) EXPECT_GT(c, 1000);

@@ -229,11 +229,6 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   MeshInput in = o.from;
   if (o.field_option->count() > 0) in.field = o.field, in.params = o.params;
   else if (!o.params.empty()) throw UsageError("--param without --field: the metric is the mesh's own");
-  // The star refiner builds its stars from Ω's corners and splits ∂Ω at exact midpoints (LU §4.1), which a mesh's
-  // boundary vertices, with all their bits, do not have: it would drop the mesh's vertices.
-  if (!entry.dual_of_diagram)
-    throw UsageError("--from: --algo " + entry.name + " starts from the domain's corners only and would drop the mesh's vertices; --algo " +
-                     refiners_where(true) + " start from a mesh");
   const StartingMesh start = starting_mesh(in, o.exact_sites, o.quiet);
   const std::size_t vertices_in = start.domain->vertices().size();
   const auto progress = progress_printer(o.quiet);
@@ -398,7 +393,7 @@ void add_refine(CLI::App& app, int& exit_code) {
   c->add_option("--algo", o->algo, "the refiner: " + names_of(refiners::refiner_names()))->capture_default_str();
   o->domain_option = c->add_option("--domain", o->domain,
                 "square, or a JSON file with a \"domain\" polygon, perhaps with \"points\" and \"interior_segments\" (a PSLG;\n"
-                "--algo star takes its boundary only); in 3D (--algo star): cube, cube-cylinder (UGAWG's), or a closed outward\n"
+                "--algo star takes its points, not its interior segments); in 3D (--algo star): cube, cube-cylinder (UGAWG's), or a closed outward\n"
                 "surface of triangles (.off, Medit .mesh/.meshb, Gmsh .msh)")
       ->capture_default_str();
   o->field_option = c->add_option("--field", o->field,

@@ -4,6 +4,7 @@
 #include "predicates/encroachment.hpp"
 #include "predicates/metric_dot.hpp"
 #include "refiners/common/exact_split.hpp"
+#include "refiners/common/segment_cells.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -82,16 +83,16 @@ std::optional<int> Boundary::next_encroached() {
 
 std::variant<Point2<double>, std::string> Boundary::begin_split(int s) {
   const auto [a, b] = segments_[s];
-  const std::optional<Point2<double>> exact = exact_midpoint(sites_.points[a], sites_.points[b]);
-  if (!exact) {
-    // The domain allows at least `min_halvings` exact splits of every edge (Domain), so
-    // encroachment does not end at a corner: name it, and say whether Lemma 4.1 explains it.
+  const std::optional<Point2<double>> at = split_point(sites_.points[a], sites_.points[b], Rational(0), Rational(1));
+  if (!at) {
+    // The domain allows at least `min_halvings` splits of every edge (Domain), so encroachment
+    // does not end at a corner: name it, and say whether Lemma 4.1 explains it.
     const auto& corners = domain_.corners();
     const Point2<double>& pa = sites_.points[a];
     std::size_t k = 0;
     for (std::size_t i = 1; i < corners.size(); ++i)
       if (std::hypot(corners[i].x - pa.x, corners[i].y - pa.y) < std::hypot(corners[k].x - pa.x, corners[k].y - pa.y)) k = i;
-    return "boundary segments near " + domain_.corner_text(k) + " were split until their midpoints are no longer doubles: " +
+    return "boundary segments near " + domain_.corner_text(k) + " were split until they hold no double to split at: " +
            (!corner_is_obtuse(k)
                 ? "encroachment does not end at a corner whose angle is not obtuse in the metric (LU Lemma 4.1 needs > 90°)"
                 : "refinement does not end there although LU Lemma 4.1 holds at that corner (a refiner failure)");
@@ -106,7 +107,7 @@ std::variant<Point2<double>, std::string> Boundary::begin_split(int s) {
     if (neighbours_[a][e] == b) neighbours_[a][e] = k;
     if (neighbours_[b][e] == a) neighbours_[b][e] = k;
   }
-  return *exact;
+  return *at;
 }
 
 void Boundary::end_split(int s) {

@@ -1,7 +1,9 @@
 #pragma once
 // The edge level of every refiner (CGAL Mesh_2's Refine_edges; LU §4.1 rule 1, LS §9, BWY §3.2.2
 // rule 1): the constrained subsegments, initially the edges of Ω, split at their exact midpoints
-// while a site encroaches them; and LU §4.1's Insert_or_snap: a point a
+// while a site encroaches them (on an axis-parallel subsegment whose midpoint is no double, at the
+// double on it nearest the midpoint: segment_cells.hpp's split_point; a mesh's boundary vertices
+// have all 53 bits, `refine --from`); and LU §4.1's Insert_or_snap: a point a
 // refiner wants to insert that lies outside Ω or encroaches a subsegment splits that subsegment
 // instead.
 //
@@ -47,8 +49,8 @@ class Boundary {
 
   // The edge level: the next queued subsegment that a site still encroaches, or nothing.
   std::optional<int> next_encroached();
-  // Splitting subsegment s: its exact midpoint, to be inserted as the next site, or, when the
-  // midpoint is not a double, why refinement cannot go on (naming the nearest corner and whether
+  // Splitting subsegment s: its exact midpoint (or, axis-parallel, the double nearest it), to be
+  // inserted as the next site, or, when s has no such point, why refinement cannot go on (naming the nearest corner and whether
   // LU Lemma 4.1 fails there). Then end_split queues the halves a site still encroaches.
   std::variant<Point2<double>, std::string> begin_split(int s);
   void end_split(int s);

@@ -22,7 +22,7 @@ Domain::Domain(const Polygon<double>& corners, const std::vector<Point2<double>>
   for (const auto& q : corners_) exact_.push_back({Rational(q.x), Rational(q.y)});
   if (corners_.size() < 3) throw DomainError("the domain needs at least 3 corners");
   if (const auto defect = geometry::simplicity_defect(exact_)) throw DomainError(geometry::describe(*defect, exact_, "domain"));
-  check_halvings(split_halvings);
+  check_halvings();
   convex_ = geometry::is_convex(corners_);
   vertices_ = corners_;
   vertices_.insert(vertices_.end(), points.begin(), points.end());
@@ -46,10 +46,10 @@ Domain Domain::from_exact(const Polygon<Rational>& corners, const std::vector<Po
   return Domain(doubles(corners, "domain vertex"), doubles(points, "point"), interior_segments);
 }
 
-void Domain::check_halvings(int (*halvings)(const Point2<double>&, const Point2<double>&)) const {
+void Domain::check_halvings() const {
   for (std::size_t i = 0; i < corners_.size(); ++i) {
     const Point2<double>&a = corners_[i], &b = corners_[(i + 1) % corners_.size()];
-    const int k = halvings(a, b);
+    const int k = split_halvings(a, b);
     if (k < min_halvings)
       throw DomainError("domain edge " + std::to_string(i) + " from " + point_text(a) + " to " + point_text(b) +
                         " can be halved exactly in doubles only " + std::to_string(k) + " times (" +
@@ -58,8 +58,6 @@ void Domain::check_halvings(int (*halvings)(const Point2<double>&, const Point2<
                         "binary digits, e.g. 0.375 or 13/32 rather than 0.4");
   }
 }
-
-void Domain::require_exact_midpoints() const { check_halvings(exact_halvings); }
 
 std::pair<int, int> Domain::segment_ends(std::size_t e) const {
   const std::size_t n = corners_.size();

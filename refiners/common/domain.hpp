@@ -2,8 +2,8 @@
 // The domain Ω as every refiner sees it, checked once, here: a simple counter-clockwise polygon
 // (geometry::simplicity_defect) whose corners are doubles (the refiners work in floating point)
 // and whose edges can each be split exactly min_halvings times (exact_split.hpp: boundary
-// vertices must lie exactly on ∂Ω; split_halvings, and exact_halvings for the star refiner). With it, the rest of a PSLG X (LS §9's input): points inside
-// Ω, and interior segments between its vertices (the corners, then the points), each inside Ω but
+// vertices must lie exactly on ∂Ω: split_halvings). With it, the rest of a PSLG X (LS §9's input):
+// points inside Ω, and interior segments between its vertices (the corners, then the points), each inside Ω but
 // for its ends, meeting ∂Ω, other segments and vertices at its ends only, and halvable like an
 // edge. X's segments are Ω's edges (0 … n − 1, edge k from corner k to corner k + 1) and then the
 // interior ones. And the exact questions a refiner asks of it.
@@ -66,18 +66,14 @@ class Domain {
   std::optional<bool> contains(const Box& b) const;
   // The segment ab crosses no edge of Ω properly (always true in a convex Ω, for a, b in Ω).
   bool visible(const Point2<double>& a, const Point2<double>& b) const { return convex_ || crosses_no_edge(a, b); }
-  // Throws DomainError naming the first edge that cannot be halved min_halvings times at exact
-  // midpoints (exact_halvings): what a refiner that splits ∂Ω at midpoints needs (the star
-  // refiner, LU §4.1). The constructor asks less of an axis-parallel edge (split_halvings: any
-  // double on it will do for LS's and BWY's splits).
-  void require_exact_midpoints() const;
   // "corner k (x, y)" or "point k (x, y)" for X's vertex k, with the shortest decimals that read
   // back as its doubles.
   std::string corner_text(std::size_t k) const;
 
  private:
   bool crosses_no_edge(const Point2<double>& a, const Point2<double>& b) const;
-  void check_halvings(int (*halvings)(const Point2<double>&, const Point2<double>&)) const;
+  // Throws DomainError naming the first edge that cannot be split min_halvings times (split_halvings).
+  void check_halvings() const;
   void check_interior();
 
   Polygon<double> corners_;

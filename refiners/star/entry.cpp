@@ -124,9 +124,9 @@ RefinerEntry entry() {
           [](const common::Domain& domain, const fields::MetricField& field, const ParameterValues& values,
              const common::Budget& budget, unsigned seed, const common::Progress& progress) {
             const RefineParameters p = parameters(values, budget, seed);
-            if (domain.has_interior())
-              throw common::DomainError("--algo star meshes Ω with its boundary only: the domain's points and interior segments are for the other refiners");
-            domain.require_exact_midpoints();  // LU §4.1 splits ∂Ω at midpoints
+            if (!domain.interior_segments().empty())
+              throw common::DomainError("--algo star keeps no interior segments (LU §4.1 protects ∂Ω only): the domain's " +
+                                        std::to_string(domain.interior_segments().size()) + " interior segments are for the other refiners");
             StarResult r = refine_star(domain, field, p, progress);
             std::vector<std::string> lines = report(r, p);
             return Run{std::move(r), std::move(lines)};

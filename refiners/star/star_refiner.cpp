@@ -13,9 +13,11 @@
 namespace anisocert::refiners::star {
 namespace {
 
-common::Sites corner_sites(const common::Domain& domain, const fields::MetricField& field) {
+// The first sites: Ω's corners (LU §4.1 starts from them), then the domain's points (a mesh's
+// interior vertices, `refine --from`).
+common::Sites first_sites(const common::Domain& domain, const fields::MetricField& field) {
   common::Sites sites(domain, field);
-  for (const auto& q : domain.corners()) {
+  for (const auto& q : domain.vertices()) {
     sites.add(q);
     sites.grow_grid();  // no box is filed yet
   }
@@ -27,11 +29,12 @@ common::Sites corner_sites(const common::Domain& domain, const fields::MetricFie
 class StarRefiner {
  public:
   StarRefiner(const common::Domain& domain, const fields::MetricField& field, const RefineParameters& p)
-      : domain_(domain), p_(p), sites_(corner_sites(domain, field)), boundary_(domain, sites_),
+      : domain_(domain), p_(p), sites_(first_sites(domain, field)), boundary_(domain, sites_),
         stars_(domain, sites_, boundary_), pick_(domain, sites_, p) {
-    for (std::size_t v = 0; v < domain.size(); ++v) stars_.add(0), queued_.push_back(false);
-    for (int v = 0; v < static_cast<int>(domain.size()); ++v) stars_.recompute(v);
-    for (int v = 0; v < static_cast<int>(domain.size()); ++v) enqueue(v);
+    const int first = static_cast<int>(sites_.size());
+    for (int v = 0; v < first; ++v) stars_.add(0), queued_.push_back(false);
+    for (int v = 0; v < first; ++v) stars_.recompute(v);
+    for (int v = 0; v < first; ++v) enqueue(v);
   }
 
   std::size_t vertices() const { return sites_.size(); }

@@ -94,12 +94,17 @@ void StarSet::recompute(int v) {
   const auto& x = sites_.points;
   const Point2<double>& pv = x[v];
   double R2 = reach2_[v] > 0 ? reach2_[v] * reach_margin : default_first_reach2;
-  const double diameter2 = [&] {
-    double d = 0;
-    for (const auto& a : domain_.corners())
-      for (const auto& b : domain_.corners()) d = std::max(d, predicates::quadratic_form(M, a.x - b.x, a.y - b.y));
-    return d;
-  }();
+  // Ω's squared M-diameter, beyond which the reach stops growing: asked only when the search falls
+  // short, and then computed once (over the corners' pairs: a mesh's Ω has hundreds, `refine --from`).
+  double diameter2_once = -1;
+  const auto diameter2 = [&] {
+    if (diameter2_once < 0) {
+      diameter2_once = 0;
+      for (const auto& a : domain_.corners())
+        for (const auto& b : domain_.corners()) diameter2_once = std::max(diameter2_once, predicates::quadratic_form(M, a.x - b.x, a.y - b.y));
+    }
+    return diameter2_once;
+  };
   Star star;
   while (true) {
     const auto e = geometry::ellipse_half_widths(M, R2);
@@ -113,7 +118,7 @@ void StarSet::recompute(int v) {
                cand.end());
     star = Star{};
     if (cand.empty()) {
-      if (R2 > reach_growth * diameter2) break;
+      if (R2 > reach_growth * diameter2()) break;
       R2 *= reach_growth;
       continue;
     }
@@ -157,7 +162,7 @@ void StarSet::recompute(int v) {
     const auto& nb = boundary_.neighbours(v);
     const bool complete = closed || (k >= 2 && boundary_.is_segment(v, ring.front()) && boundary_.is_segment(v, ring.back())) ||
                           (nb[0] >= 0 && in_ring(nb[0]) && in_ring(nb[1]));
-    if ((!fits || !complete) && R2 < reach_growth * diameter2) {
+    if ((!fits || !complete) && R2 < reach_growth * diameter2()) {
       R2 *= reach_growth;
       continue;
     }
