@@ -167,7 +167,8 @@ TEST(RefineFrom, OffCentresMoveBwysInsertionsAndKeepTheCertificate) {
 // The star refiner from the same mesh, for a constant metric: every vertex of the mesh is a site from
 // the start (beside Ω's corners), ∂Ω's subsegments, axis-parallel with 12-digit ends whose midpoints
 // are no doubles, are split at the double nearest the midpoint, exactly on ∂Ω; and the output is
-// locally uniform by `certify`, a second command. A mesh with a segment inside Ω is refused.
+// locally uniform by `certify`, a second command (a mesh with a segment inside Ω is refused: the
+// bad inputs below).
 TEST(RefineFrom, StarStartsFromEveryVertexAndIsCertifiedLocallyUniform) {
   const fs::path d = fresh("star");
   const std::string out = (d / "out.json").string();
@@ -200,18 +201,18 @@ TEST(RefineFrom, StarStartsFromEveryVertexAndIsCertifiedLocallyUniform) {
   }
   EXPECT_EQ(new_on_boundary, std::stoul(m[1]));
   EXPECT_GT(fine, 0u);
+}
 
-  const std::string mesh = (d / "segment.json").string();
-  std::ofstream(mesh) << R"({"sites": [{"x": "0", "y": "0", "metric": ["1", "0", "1"]}, {"x": "1", "y": "0", "metric": ["1", "0", "1"]},
- {"x": "1", "y": "1", "metric": ["1", "0", "1"]}, {"x": "0", "y": "1", "metric": ["1", "0", "1"]},
- {"x": "0.25", "y": "0.5", "metric": ["1", "0", "1"]}, {"x": "0.75", "y": "0.5", "metric": ["1", "0", "1"]}],
- "triangles": [[0, 1, 5], [0, 5, 4], [0, 4, 3], [1, 2, 5], [2, 3, 4], [2, 4, 5]], "segments": [[4, 5]]})"
-                      << "\n";
-  const Outcome seg = run("refine --quiet --algo star --from " + mesh + " -o " + (d / "never.json").string());
-  EXPECT_EQ(seg.exit_code, 2);
-  EXPECT_NE(seg.err.find("--algo star keeps no interior segments"), std::string::npos) << seg.err;
-  EXPECT_EQ(std::count(seg.err.begin(), seg.err.end(), '\n'), 1) << seg.err;
-  EXPECT_FALSE(fs::exists(d / "never.json"));
+// The unit square in the metric 100 I, its six triangles around the constrained segment from
+// (1/4, 1/2) to (3/4, 1/2) (a JSON mesh's "segments").
+std::string slit_square(const fs::path& d) {
+  std::string sites;
+  for (const auto& [x, y] : {std::pair{"0", "0"}, {"1", "0"}, {"1", "1"}, {"0", "1"}, {"0.25", "0.5"}, {"0.75", "0.5"}})
+    sites += std::string(sites.empty() ? "" : ", ") + "{\"x\": \"" + x + "\", \"y\": \"" + y + "\", \"metric\": [\"100\", \"0\", \"100\"]}";
+  const std::string path = (d / "slit.json").string();
+  std::ofstream(path) << "{\"sites\": [" << sites
+                      << "], \"triangles\": [[0, 1, 5], [0, 5, 4], [0, 4, 3], [1, 2, 5], [2, 3, 4], [2, 4, 5]], \"segments\": [[4, 5]]}\n";
+  return path;
 }
 
 // A constrained segment inside Ω (a JSON mesh's "segments", as a Medit file's declared Edges
@@ -220,12 +221,7 @@ TEST(RefineFrom, StarStartsFromEveryVertexAndIsCertifiedLocallyUniform) {
 // one to the next by edges of the mesh.
 TEST(RefineFrom, AConstrainedSegmentInsideStaysAUnionOfEdges) {
   const fs::path d = fresh("segment");
-  const std::string mesh = (d / "m.json").string();
-  std::ofstream(mesh) << R"({"sites": [{"x": "0", "y": "0", "metric": ["100", "0", "100"]}, {"x": "1", "y": "0", "metric": ["100", "0", "100"]},
- {"x": "1", "y": "1", "metric": ["100", "0", "100"]}, {"x": "0", "y": "1", "metric": ["100", "0", "100"]},
- {"x": "0.25", "y": "0.5", "metric": ["100", "0", "100"]}, {"x": "0.75", "y": "0.5", "metric": ["100", "0", "100"]}],
- "triangles": [[0, 1, 5], [0, 5, 4], [0, 4, 3], [1, 2, 5], [2, 3, 4], [2, 4, 5]], "segments": [[4, 5]]})"
-                      << "\n";
+  const std::string mesh = slit_square(d);
   const Outcome r = run("refine --quiet --algo bwy --from " + mesh + " -o " + (d / "out.json").string());
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("1 interior segments"), std::string::npos) << r.out;
@@ -335,6 +331,8 @@ TEST(RefineFrom, BadInputIsOneLineAndExit2) {
   refused("--algo bwy --exact-sites --from " + square, "vertex 4 (0.4, 0.6) is not a pair of doubles", d);
   refused("--algo bwy --from " + fixtures + "gmsh-lshape-shock-coarse.msh", "has no metric (give --metric FILE or --field NAME)", d);
   refused("--algo bwy --domain square --from " + square, "--domain and --from", d);
+  refused("--algo star --coarsen --from " + square, "--coarsen: --algo star is certified locally uniform", d);
+  refused("--algo star --from " + slit_square(d), "--algo star keeps no interior segments (LU §4.1 protects ∂Ω only)", d);
   refused("--algo bwy --metric m.sol", "go with --from MESH", d);
   refused("--algo bwy --from " + (d / "missing.msh").string(), "missing.msh", d);
 }

@@ -229,6 +229,9 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   MeshInput in = o.from;
   if (o.field_option->count() > 0) in.field = o.field, in.params = o.params;
   else if (!o.params.empty()) throw UsageError("--param without --field: the metric is the mesh's own");
+  if (o.coarsen && !entry.dual_of_diagram)
+    throw UsageError("--coarsen: --algo " + entry.name + " is certified locally uniform, and coarsening keeps the exact dual (--algo " +
+                     refiners_where(true) + ")");
   const StartingMesh start = starting_mesh(in, o.exact_sites, o.quiet);
   const std::size_t vertices_in = start.domain->vertices().size();
   const auto progress = progress_printer(o.quiet);
@@ -404,8 +407,9 @@ void add_refine(CLI::App& app, int& exit_code) {
   c->add_option("--from", o->from.path,
                 "start from a triangle mesh someone else made (any format certify reads): its vertices are the first sites,\n"
                 "the boundary of its triangles the domain (every boundary vertex a corner), its declared interior edges\n"
-                "segments, its metric its own (P1 over its triangles) unless --metric or --field gives one; the report\n"
-                "compares before and after, and the exit is 0 only when the output is certified (docs/refiners.md)");
+                "segments (not with --algo star), its metric its own (P1 over its triangles) unless --metric or --field gives\n"
+                "one; the report compares before and after, and the exit is 0 only when the output is certified: the exact\n"
+                "dual (--algo " + refiners_where(true) + "), locally uniform (--algo " + refiners_where(false) + ") (docs/refiners.md)");
   c->add_option("--from-format", o->from.format, "the format of --from's mesh, when its extension does not tell");
   c->add_option("--metric", o->from.metric, "--from: the mesh's per-vertex metrics in a separate file (.sol/.solb, .mtr)");
   c->add_option("--metric-format", o->from.metric_format, "--from: the metric file's format (medit, bamg)");
