@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <deque>
+#include <limits>
 
 namespace anisocert::refiners::bwy {
 namespace {
@@ -194,12 +195,44 @@ class BwyRefinement : public common::VoronoiRefinement {
     }
     return false;
   }
-  // The site of vertex rule `rule` at vertex q: at q, or, with off-centres, rules 3 and 6 at the
-  // off-centre of q's shortest edge at least B δ, resp. the size, from every site (the guarantee
-  // of the vertex they replace).
+  // The site of vertex rule `rule` at vertex q: at q, or, with off-centres (the unit-aware choice),
+  // rules 3 and 6 at the off-centre of q's shortest edge at least B δ, resp. the size, from every
+  // site (the guarantee of the vertex they replace), and rules 4 and 5 at the vertex their rule
+  // allows whose radius is nearest unit (unit_nearest_choice).
   bool insert_for(Rule rule, int q) {
-    if (!p_.off_centres || (rule != Rule::bad_shape && rule != Rule::too_large)) return attack_vertex(q, number(rule));
-    return attack_off_centre(q, number(rule), rule == Rule::bad_shape ? p_.shape_bound : 0, p_.size);
+    if (!p_.off_centres) return attack_vertex(q, number(rule));
+    if (rule == Rule::several_vertices || rule == Rule::overlap) return attack_vertex(unit_nearest_choice(rule, q), number(rule));
+    if (rule == Rule::bad_shape || rule == Rule::too_large)
+      return attack_off_centre(q, number(rule), rule == Rule::bad_shape ? p_.shape_bound : 0, p_.size);
+    return attack_vertex(q, number(rule));
+  }
+  // BWY §3.2.2 lets rule 4 insert at any of the Voronoi vertices dual to one triangle ("one of
+  // them") and rule 5 at the vertex of either of two overlapping triangles ("one of them"), and its
+  // minimal inter-distance (§4.2) holds whichever: of q and those others in T, the vertex whose
+  // radius r(v) = d_a(a, v) is nearest 1 (least |log r|), a choice in doubles; q on a tie.
+  int unit_nearest_choice(Rule rule, int q) const {
+    const int t = triangles_.of_key(q).front();
+    std::vector<int> candidates{q};
+    if (rule == Rule::several_vertices) {
+      for (int u : triangles_.same_sites(t)) candidates.push_back(triangles_.triangle(u).key);
+    } else {
+      const auto& tri = triangles_.triangle(t);
+      for (int i = 0; i < 3; ++i) {
+        const int a = tri.sites[static_cast<std::size_t>(i)], b = tri.sites[static_cast<std::size_t>((i + 1) % 3)];
+        for (int u : triangles_.on_edge(a, b))
+          if (u != t && (tri.flat || triangles_.triangle(u).flat || overlaps(u))) candidates.push_back(triangles_.triangle(u).key);
+      }
+    }
+    int best = q;
+    double best_score = std::numeric_limits<double>::infinity();
+    for (int k : candidates) {
+      if (k < 0 || !in_T(k)) continue;  // a tie's fan: its rule is tie_rule's
+      const auto& v = diagram_.vertices()[static_cast<std::size_t>(k)];
+      const double r2 = squared_distance(site(v.sites[0]), rounded_vertex(k).first);
+      const double score = std::abs(std::log(r2));
+      if (score < best_score) best_score = score, best = k;
+    }
+    return best;
   }
   // The first tie to which `rule` applies gets a site at its vertex (conditionally).
   bool tie_rule(Rule rule) {
