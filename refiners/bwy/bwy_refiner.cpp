@@ -58,6 +58,7 @@ class BwyRefinement : public common::VoronoiRefinement {
     r.mesh.segments = subsegments_.all();
     for (int t : triangles_.alive()) r.mesh.triangles.push_back(triangles_.triangle(t).sites);
     r.left_counted = !stop.out_of_time;
+    r.other_vertex_choices = other_vertex_choices_;
     const std::string stalled = stalled_;
     if (r.left_counted) {
       for (std::size_t s = 0; s < subsegments_.size(); ++s) {
@@ -195,13 +196,23 @@ class BwyRefinement : public common::VoronoiRefinement {
     }
     return false;
   }
-  // The site of vertex rule `rule` at vertex q: at q, or, with off-centres (the unit-aware choice),
+  // The site of vertex rule `rule` at vertex q; false when q is to be judged again (its site was a
+  // split instead, or went at another vertex). At q, or, with off-centres (the unit-aware choice),
   // rules 3 and 6 at the off-centre of q's shortest edge at least B δ, resp. the size, from every
   // site (the guarantee of the vertex they replace), and rules 4 and 5 at the vertex their rule
   // allows whose radius is nearest unit (unit_nearest_choice).
   bool insert_for(Rule rule, int q) {
     if (!p_.off_centres) return attack_vertex(q, number(rule));
-    if (rule == Rule::several_vertices || rule == Rule::overlap) return attack_vertex(unit_nearest_choice(rule, q), number(rule));
+    if (rule == Rule::several_vertices || rule == Rule::overlap) {
+      const int chosen = unit_nearest_choice(rule, q);
+      if (chosen == q) return attack_vertex(q, number(rule));
+      // q stays in T and is judged again: the site at the other vertex may leave its triangle
+      // overlapping a third one, or dual to a third vertex (seen by BWY_R: "no rule applies, but T
+      // is no triangulation").
+      ++other_vertex_choices_;
+      attack_vertex(chosen, number(rule));
+      return false;
+    }
     if (rule == Rule::bad_shape || rule == Rule::too_large)
       return attack_off_centre(q, number(rule), rule == Rule::bad_shape ? p_.shape_bound : 0, p_.size);
     return attack_vertex(q, number(rule));
@@ -329,6 +340,7 @@ class BwyRefinement : public common::VoronoiRefinement {
   BwyParameters p_;
   DualTriangles triangles_;
   int tie_keys_ = 0;  // the ties whose fans are in T
+  std::size_t other_vertex_choices_ = 0;
   std::array<std::deque<int>, vertex_rules.size()> vertex_queues_;  // vertices of T to judge, rule by rule
   std::vector<int> pending_;            // vertices whose place in Ω is undecided so far (enter)
   std::deque<int> unedged_;             // subsegments to test for rule 2

@@ -31,6 +31,8 @@ struct BwyResult : common::RefineResult {
   bool left_counted = true;
   // Why T is not a local embedding (BWY §3.2.1) at the end; empty when it is (or not counted).
   std::string embedding_failure;
+  // With off-centres: how often rule 4 or 5 took another vertex it allows than the one it fired at.
+  std::size_t other_vertex_choices = 0;
 };
 
 // Throws common::FieldError when the field's metric is not finite and positive definite at a site.

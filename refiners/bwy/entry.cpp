@@ -62,7 +62,7 @@ std::vector<std::string> report(const BwyResult& r, const BwyParameters& p) {
       section42_line(p), common::rule_counts_line(r)};
   std::ostringstream o;
   o << "  parameters: B = " << p.shape_bound << ", G = " << p.distortion << ", size = " << p.size << (p.size > 0 ? "" : " (no size rule)")
-    << (p.off_centres ? ", off-centres" : "");
+    << (p.off_centres ? ", off-centres (rules 4 and 5 took another vertex they allow " + std::to_string(r.other_vertex_choices) + " times)" : "");
   lines.push_back(o.str());
   return lines;
 }
