@@ -218,21 +218,16 @@ class BwyRefinement : public common::VoronoiRefinement {
     return attack_vertex(q, number(rule));
   }
   // BWY §3.2.2 lets rule 4 insert at any of the Voronoi vertices dual to one triangle ("one of
-  // them") and rule 5 at the vertex of either of two overlapping triangles ("one of them"), and its
-  // minimal inter-distance (§4.2) holds whichever: of q and those others in T, the vertex whose
-  // radius r(v) = d_a(a, v) is nearest 1 (least |log r|), a choice in doubles; q on a tie.
+  // them") and rule 5 at the vertex of either of two overlapping triangles ("one of them"), and
+  // §4.2 states its minimal inter-distance whatever the rule: of q and those others in T, the
+  // vertex whose radius r(v) = d_a(a, v) is nearest 1 (least |log r|), a choice in doubles.
   int unit_nearest_choice(Rule rule, int q) const {
     const int t = triangles_.of_key(q).front();
     std::vector<int> candidates{q};
     if (rule == Rule::several_vertices) {
       for (int u : triangles_.same_sites(t)) candidates.push_back(triangles_.triangle(u).key);
-    } else {
-      const auto& tri = triangles_.triangle(t);
-      for (int i = 0; i < 3; ++i) {
-        const int a = tri.sites[static_cast<std::size_t>(i)], b = tri.sites[static_cast<std::size_t>((i + 1) % 3)];
-        for (int u : triangles_.on_edge(a, b))
-          if (u != t && (tri.flat || triangles_.triangle(u).flat || overlaps(u))) candidates.push_back(triangles_.triangle(u).key);
-      }
+    } else if (!triangles_.triangle(t).flat) {  // a flat triangle's site goes at its own vertex
+      for (int u : bwy::overlapping(triangles_, t, sites_.points)) candidates.push_back(triangles_.triangle(u).key);
     }
     int best = q;
     double best_score = std::numeric_limits<double>::infinity();

@@ -21,21 +21,33 @@ int third(const DualTriangles& T, int t, int a, int b) {
   return a;  // a triangle with a repeated site: never made (sites are distinct)
 }
 
-}  // namespace
-
-bool overlaps(const DualTriangles& T, int t, const std::vector<Point2<double>>& sites) {
+// The triangles on an edge of t whose third vertex is on t's side of it, or only the first found.
+std::vector<int> overlapping(const DualTriangles& T, int t, const std::vector<Point2<double>>& sites, bool first_only) {
   const auto& tri = T.triangle(t);
-  if (tri.flat) return true;
   const auto side = [&](int a, int b, int c) {
     return predicates::orientation(sites[static_cast<std::size_t>(a)], sites[static_cast<std::size_t>(b)], sites[static_cast<std::size_t>(c)]);
   };
+  std::vector<int> found;
   for (int i = 0; i < 3; ++i) {
     const int a = tri.sites[static_cast<std::size_t>(i)], b = tri.sites[static_cast<std::size_t>((i + 1) % 3)],
               c = tri.sites[static_cast<std::size_t>((i + 2) % 3)];
     for (int u : T.on_edge(a, b))
-      if (u != t && side(a, b, third(T, u, a, b)) == side(a, b, c)) return true;
+      if (u != t && side(a, b, third(T, u, a, b)) == side(a, b, c)) {
+        found.push_back(u);
+        if (first_only) return found;
+      }
   }
-  return false;
+  return found;
+}
+
+}  // namespace
+
+bool overlaps(const DualTriangles& T, int t, const std::vector<Point2<double>>& sites) {
+  return T.triangle(t).flat || !overlapping(T, t, sites, true).empty();
+}
+
+std::vector<int> overlapping(const DualTriangles& T, int t, const std::vector<Point2<double>>& sites) {
+  return overlapping(T, t, sites, false);
 }
 
 std::string embedding_failure(const DualTriangles& T, const std::vector<Point2<double>>& sites, const std::vector<Constraint>& subsegments) {

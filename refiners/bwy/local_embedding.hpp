@@ -20,6 +20,8 @@ struct Constraint {
 // Rule 5 at triangle t of T: flat, or another triangle on one of its edges has its third vertex on
 // t's side of that edge (orientations of the sites, exact).
 bool overlaps(const DualTriangles& T, int t, const std::vector<predicates::Point2<double>>& sites);
+// The triangles that overlap t so: on one of its edges, their third vertex on t's side of it.
+std::vector<int> overlapping(const DualTriangles& T, int t, const std::vector<predicates::Point2<double>>& sites);
 
 // Why T is not a local embedding of the sites with these subsegments, or empty: a flat triangle,
 // a site in no triangle, a boundary subsegment not in exactly one triangle or an interior one not

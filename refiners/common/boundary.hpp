@@ -50,8 +50,9 @@ class Boundary {
   // The edge level: the next queued subsegment that a site still encroaches, or nothing.
   std::optional<int> next_encroached();
   // Splitting subsegment s: its exact midpoint (or, axis-parallel, the double nearest it), to be
-  // inserted as the next site, or, when s has no such point, why refinement cannot go on (naming the nearest corner and whether
-  // LU Lemma 4.1 fails there). Then end_split queues the halves a site still encroaches.
+  // inserted as the next site, or, when s has no such point, why refinement cannot go on (naming
+  // the nearest corner and whether LU Lemma 4.1 fails there). Then end_split queues the halves a
+  // site still encroaches.
   std::variant<Point2<double>, std::string> begin_split(int s);
   void end_split(int s);
   std::size_t queued() const { return queue_.size(); }

@@ -3,9 +3,9 @@
 // (geometry::simplicity_defect) whose corners are doubles (the refiners work in floating point)
 // and whose edges can each be split exactly min_halvings times (exact_split.hpp: boundary
 // vertices must lie exactly on ∂Ω: split_halvings). With it, the rest of a PSLG X (LS §9's input):
-// points inside Ω, and interior segments between its vertices (the corners, then the points), each inside Ω but
-// for its ends, meeting ∂Ω, other segments and vertices at its ends only, and halvable like an
-// edge. X's segments are Ω's edges (0 … n − 1, edge k from corner k to corner k + 1) and then the
+// points inside Ω, and interior segments between its vertices (the corners, then the points), each
+// inside Ω but for its ends, meeting ∂Ω, other segments and vertices at its ends only, and
+// halvable like an edge. X's segments are Ω's edges (0 … n − 1, edge k from corner k to corner k + 1) and then the
 // interior ones. And the exact questions a refiner asks of it.
 #include "geometry/polygon.hpp"
 #include "numbers/shortest_decimal.hpp"
