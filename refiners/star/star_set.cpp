@@ -20,8 +20,8 @@ namespace {
 // anisotropic beyond about 10⁶ : 1 or nearly flat fans they are not a proof. A star made wrong that
 // way makes the final mesh fail the certifier's exact local-uniformity check; it cannot make two
 // stars disagree unnoticed (consistency is decided on the stars as computed).
-//  - the first search of a site without a star reaches M-distance 2.5 (corners) or twice its
-//    nearest site's distance (inserted sites);
+//  - the first search of a site without a star reaches M-distance 2.5 (the first sites: corners,
+//    and a mesh's interior vertices) or twice its nearest site's distance (inserted sites);
 constexpr double default_first_reach2 = 6.25;
 //  - a star's later searches reach its previous reach (stars only shrink, LU Lemma 3.5), 10⁻⁴ more;
 //  - a fan fits when every circumellipse's reach is 10⁻⁴ inside the search radius;
