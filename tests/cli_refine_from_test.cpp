@@ -2,7 +2,7 @@
 // mesh, checked here by a second command (`anisocert dual`, the oracle's own verdict on the file
 // written) and against the input (every input vertex, rounded to the nearest double, is a vertex
 // of the output; the counts the report gives are the files'); --coarsen removes only interior
-// vertices and keeps the certificate; --off-centres changes where BWY inserts and keeps the
+// vertices and keeps the certificate, --relocate moves only interior ones and keeps it; --off-centres changes where BWY inserts and keeps the
 // certificate; the star refiner starts from the same vertices and is certified locally uniform;
 // every bad input is one line, exit 2, nothing written.
 #include "cli_run.hpp"
@@ -145,6 +145,51 @@ TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
     return s.size() > 1 ? std::stod(s[1]) : 0.0;
   };
   const Outcome plain = run("refine --quiet --algo bwy --from " + freefem_l + shock_coarse);
+  EXPECT_GT(share(r.out), share(plain.out)) << r.out << plain.out;
+}
+
+// --relocate moves interior vertices only, never adds or removes one, and keeps the certificate:
+// `dual` (a second command) certifies the file; each site's metric is the field's at its new place
+// (`metric --at`, a second command, evaluates the field there); the certifier's unit share rises.
+TEST(RefineFrom, RelocateMovesInteriorVerticesOnlyAndKeepsTheCertificate) {
+  const fs::path d = fresh("relocate");
+  const std::string plain_mesh = (d / "plain.json").string(), moved_mesh = (d / "moved.json").string();
+  const Outcome plain = run("refine --quiet --algo bwy --from " + freefem_l + shock_coarse + " -o " + plain_mesh);
+  const Outcome r = run("refine --quiet --algo bwy --relocate --from " + freefem_l + shock_coarse + " -o " + moved_mesh);
+  ASSERT_EQ(plain.exit_code, 0) << plain.out << plain.err;
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(run("dual --quiet " + moved_mesh).exit_code, 0);
+  const auto [in, added, removed] = counts(r.out);
+  EXPECT_EQ(removed, 0u) << r.out;
+  EXPECT_EQ(counts(plain.out), (std::array<std::size_t, 3>{in, added, 0}));
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("relocated: ([0-9]+) moves of a vertex"))) << r.out;
+  EXPECT_GT(std::stoul(m[1]), 0u) << r.out;
+  // The same number of sites as the run it moved; the ones that moved lie strictly inside the
+  // L-shape (0 < x, y < 1, not in [1/2, 1]²), and every vertex on ∂Ω stayed.
+  const auto before = sites_of(plain_mesh), after = sites_of(moved_mesh);
+  EXPECT_EQ(after.size(), before.size());
+  std::size_t moved = 0;
+  for (const auto& [x, y] : after)
+    if (!before.count({x, y})) {
+      ++moved;
+      EXPECT_TRUE(x > 0 && y > 0 && x < 1 && y < 1 && !(x >= 0.5 && y >= 0.5)) << x << ", " << y;
+    }
+  EXPECT_GT(moved, 0u);
+  for (const auto& [x, y] : freefem_vertices(freefem_l))
+    if (x == 0 || y == 0 || x == 1 || y == 1 || (x == 0.5 && y >= 0.5) || (y == 0.5 && x >= 0.5)) {
+      EXPECT_TRUE(after.count({x, y})) << x << ", " << y;
+    }
+  const std::string field_mesh = (d / "field.json").string();
+  ASSERT_EQ(run("metric --field shock --param h=0.1 --at " + moved_mesh + " -o " + field_mesh).exit_code, 0);
+  const auto ours = nlohmann::json::parse(read(moved_mesh))["sites"], field = nlohmann::json::parse(read(field_mesh))["sites"];
+  ASSERT_EQ(ours.size(), field.size());
+  for (std::size_t k = 0; k < ours.size(); ++k) EXPECT_EQ(ours[k]["metric"], field[k]["metric"]) << "site " << k;
+  const auto share = [](const std::string& report) {
+    std::smatch s;
+    EXPECT_TRUE(std::regex_search(report, s, std::regex("after: .*unit edges ([0-9.]+)%"))) << report;
+    return s.size() > 1 ? std::stod(s[1]) : 0.0;
+  };
   EXPECT_GT(share(r.out), share(plain.out)) << r.out << plain.out;
 }
 
@@ -340,6 +385,8 @@ TEST(RefineFrom, BadInputIsOneLineAndExit2) {
   refused("--algo bwy --from " + fixtures + "gmsh-lshape-shock-coarse.msh", "has no metric (give --metric FILE or --field NAME)", d);
   refused("--algo bwy --domain square --from " + square, "--domain and --from", d);
   refused("--algo star --coarsen --from " + square, "--coarsen: --algo star is certified locally uniform", d);
+  refused("--algo star --relocate --from " + square, "--relocate: --algo star is certified locally uniform", d);
+  refused("--algo bwy --relocate", "go with --from MESH", d);
   refused("--algo star --from " + slit_square(d), "--algo star keeps no interior segments (LU §4.1 protects ∂Ω only)", d);
   refused("--algo bwy --metric m.sol", "go with --from MESH", d);
   refused("--algo bwy --from " + (d / "missing.msh").string(), "missing.msh", d);

@@ -2,6 +2,7 @@
 // metric field (io/field_source.hpp: a built-in field or a background mesh); writes the mesh for
 // `anisocert certify`, Medit .mesh/.sol and SVG.
 #include "cli/coarsen.hpp"
+#include "cli/relocate.hpp"
 #include "cli/diagram_job.hpp"
 #include "cli/output.hpp"
 #include "cli/refine_from.hpp"
@@ -47,7 +48,7 @@ struct RefineOptions {
   CLI::Option* field_option = nullptr;
   CLI::Option* domain_option = nullptr;
   MeshInput from;  // --from MESH: its path, format, metric file (refine_from.hpp)
-  bool exact_sites = false, coarsen = false;
+  bool exact_sites = false, coarsen = false, relocate = false;
   int threads = 0;
   std::vector<std::string> params;
   std::map<std::string, double> values;            // every refiner parameter's default
@@ -229,6 +230,9 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   MeshInput in = o.from;
   if (o.field_option->count() > 0) in.field = o.field, in.params = o.params;
   else if (!o.params.empty()) throw UsageError("--param without --field: the metric is the mesh's own");
+  if (o.relocate && !entry.dual_of_diagram)
+    throw UsageError("--relocate: --algo " + entry.name + " is certified locally uniform, and relocating keeps the exact dual (--algo " +
+                     refiners_where(true) + ")");
   if (o.coarsen && !entry.dual_of_diagram)
     throw UsageError("--coarsen: --algo " + entry.name + " is certified locally uniform, and coarsening keeps the exact dual (--algo " +
                      refiners_where(true) + ")");
@@ -245,9 +249,23 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   } catch (const refiners::ParameterError& e) {
     throw UsageError(e.what());
   }
+  // --coarsen and --relocate, in turn while a turn changes the mesh (at most 4 turns): a move can
+  // make a removal certifiable, and a removal leaves room to move. A stopped run is neither (said).
   Coarsened coarsened{run.result.mesh, 0, 0};
-  if (o.coarsen && run.result.consistent) coarsened = coarsen(run.result.mesh, o.quiet);  // a stopped run is not coarsened (said)
-  const geometry::Mesh<double>& m = coarsened.mesh;
+  Relocated relocated{run.result.mesh, 0, 0};
+  for (int turn = 0; turn < 4 && run.result.consistent && (o.coarsen || o.relocate); ++turn) {
+    const std::size_t removed = coarsened.removed, moves = relocated.moves;
+    if (o.coarsen) {
+      Coarsened c = coarsen(relocated.mesh, o.quiet);
+      coarsened.removed += c.removed, coarsened.diagrams += c.diagrams, relocated.mesh = std::move(c.mesh);
+    }
+    if (o.relocate) {
+      Relocated r = relocate(relocated.mesh, start.field, o.quiet);
+      relocated.moves += r.moves, relocated.diagrams += r.diagrams, relocated.mesh = std::move(r.mesh);
+    }
+    if (!(o.coarsen && o.relocate) || (coarsened.removed == removed && relocated.moves == moves)) break;
+  }
+  const geometry::Mesh<double>& m = relocated.mesh;
   const RefinedCertificate certificate = certify_refined(entry, m, o.quiet);
   std::vector<OutputFile> files;
   std::string written;
@@ -264,6 +282,10 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
                      : o.coarsen ? "  coarsened: " + std::to_string(coarsened.removed) + " vertices removed, each kept out only when the oracle certified the rest (" +
                                       std::to_string(coarsened.diagrams) + " exact diagrams)\n"
                                 : "") +
+                     (o.relocate && run.result.consistent ? "  relocated: " + std::to_string(relocated.moves) +
+                                                                " moves of a vertex, each kept only when the oracle certified the moved vertices (" +
+                                                                std::to_string(relocated.diagrams) + " exact diagrams)\n"
+                                                          : "") +
                      before_after_text(start, certificate, vertices_in, coarsened.removed);
   if (format) text += "  mesh: " + written + " (check it with " + check_command(entry, paths) + ")\n";
   if (!o.svg.empty()) text += "  picture: " + o.svg + "\n";
@@ -297,8 +319,9 @@ int run_refine(const RefineOptions& o) {
     }
   }
   check_outputs({o.output, o.svg, o.json});
-  if (o.from.path.empty() && (!o.from.metric.empty() || !o.from.format.empty() || !o.from.metric_format.empty() || o.exact_sites || o.coarsen))
-    throw UsageError("--metric, --from-format, --metric-format, --exact-sites and --coarsen go with --from MESH");
+  if (o.from.path.empty() && (!o.from.metric.empty() || !o.from.format.empty() || !o.from.metric_format.empty() || o.exact_sites || o.coarsen ||
+                              o.relocate))
+    throw UsageError("--metric, --from-format, --metric-format, --exact-sites, --coarsen and --relocate go with --from MESH");
   if (!o.from.path.empty()) {
     if (!o.json.empty()) throw UsageError("--json: the certificate of a 3D run (a 2D run's mesh is certified by anisocert certify --json)");
     return run_refine_from(o, *entry, values, budget, format);
@@ -418,6 +441,9 @@ void add_refine(CLI::App& app, int& exit_code) {
   c->add_flag("--coarsen", o->coarsen,
               "--from: then remove vertices where that brings edges nearer unit length, each removal kept only when the oracle\n"
               "certifies the rest (the dual of the exact D|Ω of the remaining vertices is a triangulation; --algo " + refiners_where(true) + ")");
+  c->add_flag("--relocate", o->relocate,
+              "--from: then move interior vertices toward unit edges (after --coarsen), each move kept only when the oracle\n"
+              "certifies the moved vertices (the dual of their exact D|Ω is a triangulation; --algo " + refiners_where(true) + ")");
   // A parameter several refiners share (e.g. --size) is one option: the first refiner's help and
   // default, the refiners that have it, and another's own help where it differs.
   std::map<std::string, std::pair<std::string, std::string>> help;  // name → (first help, the option's text)

@@ -1,0 +1,33 @@
+#pragma once
+// `refine --from MESH --relocate` (issue 41): interior vertices of a refiner's output moved toward
+// unit edges, each move kept only when the oracle certifies the moved sites: the dual of the exact
+// D|Ω of the sites is a triangulation of Ω (LS Theorem 7's conclusion, decided exactly;
+// dual_trial.hpp), and that dual is the new mesh. A moved site takes the field's metric at its new
+// place. No vertex is added or removed, so the sites keep their indices.
+//
+// Where to move is a choice in doubles (it never makes a verdict). Each neighbour w of v proposes
+// the point at unit length from w toward v (w + (v − w)/ℓ, ℓ the geometric mean of the edge's
+// lengths in its ends' metrics, the rest length of DistMesh's springs); v goes halfway to the
+// proposals' mean, or a quarter of the way when that point is not strictly inside one of v's
+// triangles (so it stays inside Ω and off every other site). A vertex is a candidate when the move
+// makes more of its own edges unit (both lengths in [1/√2, √2]); no two moved at once are
+// neighbours, best gain first. The oracle then judges the moved set: the moves next to the cells its
+// check names are undone and the rest tried again; a round whose certified mesh has no larger share
+// of unit edges tries the better half. A vertex undone three times is not tried again, and at most
+// `rounds` rounds run, so relocating ends.
+#include "fields/metric_field.hpp"
+#include "geometry/mesh.hpp"
+
+#include <cstddef>
+
+namespace anisocert::cli {
+
+struct Relocated {
+  geometry::Mesh<double> mesh;
+  std::size_t moves = 0, diagrams = 0;
+};
+
+// m: a finished run's mesh, the exact dual of D|Ω of its sites; field: the metric of a moved site.
+Relocated relocate(const geometry::Mesh<double>& m, const fields::MetricField& field, bool quiet, int rounds = 20);
+
+}  // namespace anisocert::cli
