@@ -55,7 +55,8 @@ Score score_at(const Mesh<double>& m, int v, const std::set<int>& around) {
   return s;
 }
 
-// The move proposed for v (relocate.hpp), with its score; none when no step beats staying.
+// The move proposed for v (relocate.hpp), with its gain over staying (unit edges gained, Σ (log ℓ)²
+// lost); none when no step beats staying.
 std::optional<std::pair<Score, Move>> proposal(Mesh<double>& m, int v, const std::set<int>& around, const std::vector<std::size_t>& star,
                                                const fields::MetricField& field) {
   const auto vi = static_cast<std::size_t>(v);
@@ -84,6 +85,7 @@ std::optional<std::pair<Score, Move>> proposal(Mesh<double>& m, int v, const std
     m.sites[vi] = from, m.metrics[vi] = metric;
     if (moved.beats(best ? best->first : stay)) best = std::pair{moved, move};
   }
+  if (best) best->first = Score{best->first.unit - stay.unit, stay.energy - best->first.energy};
   return best;
 }
 
@@ -107,7 +109,9 @@ Relocated relocate(const Mesh<double>& m, const fields::MetricField& field, bool
       if (refused[v] >= tries || n[v].empty()) continue;
       if (auto p = proposal(cur, static_cast<int>(v), n[v], star[v], field)) candidates.push_back(std::move(*p));
     }
-    std::stable_sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) { return a.first.unit > b.first.unit; });
+    std::stable_sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
+      return a.first.unit != b.first.unit ? a.first.unit > b.first.unit : a.first.energy > b.first.energy;
+    });
     std::vector<char> blocked(n.size(), 0);
     std::vector<Move> batch;
     for (const auto& [gain, move] : candidates) {
