@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -15,31 +14,24 @@ namespace {
 
 using geometry::Mesh;
 
-// m without the sites `gone`, judged (dual_trial.hpp); origin: each site's index in m, and the
-// oracle's named failures as indices in m.
-struct Removal {
-  Trial trial;
-  std::vector<int> origin;
-};
-
-Removal without(const Mesh<double>& m, const std::vector<int>& gone, std::size_t& diagrams) {
-  Removal r;
+// m without the sites `gone`, judged (dual_trial.hpp), the oracle's named failures as sites of m.
+Trial without(const Mesh<double>& m, const std::vector<int>& gone, std::size_t& diagrams) {
   Mesh<double> rest;
-  std::vector<int> index(m.sites.size(), 0);
+  std::vector<int> index(m.sites.size(), 0), origin;
   for (int g : gone) index[static_cast<std::size_t>(g)] = -1;
   for (std::size_t k = 0; k < m.sites.size(); ++k)
     if (index[k] == 0) {
-      index[k] = static_cast<int>(r.origin.size());
-      r.origin.push_back(static_cast<int>(k));
+      index[k] = static_cast<int>(origin.size());
+      origin.push_back(static_cast<int>(k));
       rest.sites.push_back(m.sites[k]), rest.metrics.push_back(m.metrics[k]);
     }
   rest.domain = m.domain;
   for (const auto& [a, b] : m.segments) rest.segments.push_back({index[static_cast<std::size_t>(a)], index[static_cast<std::size_t>(b)]});
-  r.trial = judged(std::move(rest), diagrams);
+  Trial t = judged(std::move(rest), diagrams);
   std::set<int> named;
-  for (int s : r.trial.near_failures) named.insert(r.origin[static_cast<std::size_t>(s)]);
-  r.trial.near_failures = std::move(named);
-  return r;
+  for (int s : t.near_failures) named.insert(origin[static_cast<std::size_t>(s)]);
+  t.near_failures = std::move(named);
+  return t;
 }
 
 }  // namespace
@@ -80,32 +72,19 @@ Coarsened coarsen(const Mesh<double>& m, bool quiet) {
     if (batch.empty()) break;
     const std::vector<int> tried = batch;
     std::size_t kept = 0;
-    for (int attempt = 0; attempt < 8 && !batch.empty(); ++attempt) {
-      auto [t, t_origin] = without(cur, batch, c.diagrams);
-      if (!t.certified) {
-        // Put back the removals next to what the oracle named (else the later half of the batch).
-        std::vector<int> rest;
-        for (int v : batch) {
-          bool near = t.near_failures.count(v) > 0;
-          for (int w : n[static_cast<std::size_t>(v)]) near = near || t.near_failures.count(w) > 0;
-          if (near) ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])];
-          else rest.push_back(v);
-        }
-        if (rest.size() == batch.size()) rest.resize(batch.size() / 2);
-        batch = std::move(rest);
-        continue;
-      }
-      const double s = unit_share(t.mesh);
-      if (s <= share) {
-        batch.resize(batch.size() / 2);
-        continue;
-      }
-      share = s, kept = batch.size(), c.removed += kept;
-      std::vector<int> next(t_origin.size());
-      for (std::size_t k = 0; k < next.size(); ++k) next[k] = origin[static_cast<std::size_t>(t_origin[k])];
+    auto kept_batch = keep_certified(
+        batch, n, [](int v) { return v; }, [&](const std::vector<int>& gone) { return without(cur, gone, c.diagrams); },
+        [&](const Trial& t) { return unit_share(t.mesh) > share; },
+        [&](int v) { ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])]; });
+    if (kept_batch) {
+      kept = kept_batch->batch.size(), c.removed += kept, share = unit_share(kept_batch->trial.mesh);
+      std::vector<char> gone(origin.size(), 0);
+      for (int v : kept_batch->batch) gone[static_cast<std::size_t>(v)] = 1;
+      std::vector<int> next;
+      for (std::size_t k = 0; k < origin.size(); ++k)
+        if (!gone[k]) next.push_back(origin[k]);
       origin = std::move(next);
-      c.mesh = std::move(t.mesh);
-      break;
+      c.mesh = std::move(kept_batch->trial.mesh);
     }
     if (progress)
       progress("refine --coarsen: round " + std::to_string(round) + ": " + std::to_string(kept) + " of " + std::to_string(tried.size()) +

@@ -1,8 +1,8 @@
 #pragma once
 // `refine --from MESH --coarsen` (issue 41): vertices removed from a refiner's output where that
 // brings its edges nearer unit length, each removal kept only when the oracle certifies the rest:
-// the dual of the exact D|Ω of the remaining vertices is a triangulation of Ω (LS Theorem 7's
-// conclusion, decided exactly; oracle/diagram), and that dual is the new mesh.
+// the dual of the exact D|Ω of the remaining vertices is a triangulation of Ω with every segment an
+// edge (LS Theorem 7's conclusion, decided exactly; dual_trial.hpp), and that dual is the new mesh.
 //
 // Where to remove is a choice in doubles (it never makes a verdict): an interior vertex (on no
 // segment) with an edge shorter than 1/√2 and none longer than √2 in the geometric mean of its

@@ -87,6 +87,10 @@ Trial judged(Mesh<double> m, std::size_t& diagrams) {
   for (const auto& c : d.dual_triangles) add(c.sites[0], c.sites[1], c.sites[2]);
   for (const auto& c : d.dual_polygons)  // a tie: its polygon fanned (compare_with_dual calls each a tie)
     for (std::size_t i = 1; i + 1 < c.sites.size(); ++i) add(c.sites[0], c.sites[i], c.sites[i + 1]);
+  const auto n = neighbours(t.mesh);
+  for (const auto& [a, b] : t.mesh.segments)
+    if (!n[static_cast<std::size_t>(a)].count(b)) t.certified = false, t.near_failures.insert(a), t.near_failures.insert(b);
+  if (!t.certified) t.mesh.triangles.clear();
   return t;
 }
 

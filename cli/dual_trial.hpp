@@ -7,7 +7,9 @@
 #include "geometry/mesh.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace anisocert::cli {
@@ -18,8 +20,49 @@ struct Trial {
   std::set<int> near_failures;  // sites named by the oracle's failed check (indices into mesh)
 };
 
-// m's sites, metrics, domain and segments (its triangles ignored), judged; ++diagrams.
+// m's sites, metrics, domain and segments (its triangles ignored), judged; ++diagrams. Certified
+// also needs every segment to be an edge of the dual (the certifier's validity asks it of the
+// output); a segment that is not names its two ends.
 Trial judged(geometry::Mesh<double> m, std::size_t& diagrams);
+
+// One round's batch of changes (coarsen's removals, relocate's moves), each at a site of the
+// current mesh with neighbours n, tried as both do: `trial(batch)` is the oracle's judgement of
+// the batch applied (near_failures as sites of the current mesh). When it is not certified, the
+// changes at or next to a site it names are dropped, `refuse(site)` called for each, and the rest
+// tried again (the later half, when none is named); when `better(trial)` rejects a certified
+// mesh, the later half is tried. At most 8 trials. Returns the batch kept and its trial, if any.
+template <class Change>
+struct Kept {
+  std::vector<Change> batch;
+  Trial trial;
+};
+
+template <class Change, class SiteOf, class TrialOf, class Better, class Refuse>
+std::optional<Kept<Change>> keep_certified(std::vector<Change> batch, const std::vector<std::set<int>>& n, SiteOf site, TrialOf trial,
+                                           Better better, Refuse refuse) {
+  for (int attempt = 0; attempt < 8 && !batch.empty(); ++attempt) {
+    Trial t = trial(batch);
+    if (!t.certified) {
+      std::vector<Change> rest;
+      for (const Change& c : batch) {
+        const int v = site(c);
+        bool near = t.near_failures.count(v) > 0;
+        for (int w : n[static_cast<std::size_t>(v)]) near = near || t.near_failures.count(w) > 0;
+        if (near) refuse(v);
+        else rest.push_back(c);
+      }
+      if (rest.size() == batch.size()) rest.resize(batch.size() / 2);
+      batch = std::move(rest);
+      continue;
+    }
+    if (!better(t)) {
+      batch.resize(batch.size() / 2);
+      continue;
+    }
+    return Kept<Change>{std::move(batch), std::move(t)};
+  }
+  return std::nullopt;
+}
 
 // |b − a| in a's metric, and in both (the geometric mean of the two).
 double length_in(const geometry::Mesh<double>& m, int a, int b, int in);

@@ -125,33 +125,23 @@ Relocated relocate(const Mesh<double>& m, const fields::MetricField& field, bool
     std::vector<int> tried;
     for (const Move& mv : batch) tried.push_back(mv.site);
     std::size_t kept = 0;
-    for (int attempt = 0; attempt < 8 && !batch.empty(); ++attempt) {
-      Mesh<double> moved = cur;
-      for (const Move& mv : batch)
-        moved.sites[static_cast<std::size_t>(mv.site)] = mv.to, moved.metrics[static_cast<std::size_t>(mv.site)] = mv.metric;
-      Trial t = judged(std::move(moved), r.diagrams);
-      if (!t.certified) {
-        // Undo the moves next to what the oracle named (else the later half of the batch).
-        std::vector<Move> rest;
-        for (const Move& mv : batch) {
-          const auto v = static_cast<std::size_t>(mv.site);
-          bool near = t.near_failures.count(mv.site) > 0;
-          for (int w : n[v]) near = near || t.near_failures.count(w) > 0;
-          if (near) ++refused[v];
-          else rest.push_back(mv);
-        }
-        if (rest.size() == batch.size()) rest.resize(batch.size() / 2);
-        batch = std::move(rest);
-        continue;
-      }
-      const double s = unit_share(t.mesh), e = length_energy(t.mesh);
-      if (s < share || (s == share && e >= energy)) {
-        batch.resize(batch.size() / 2);
-        continue;
-      }
-      share = s, energy = e, kept = batch.size(), r.moves += kept;
-      r.mesh = std::move(t.mesh);
-      break;
+    auto kept_batch = keep_certified(
+        batch, n, [](const Move& mv) { return mv.site; },
+        [&](const std::vector<Move>& moves) {
+          Mesh<double> moved = cur;
+          for (const Move& mv : moves)
+            moved.sites[static_cast<std::size_t>(mv.site)] = mv.to, moved.metrics[static_cast<std::size_t>(mv.site)] = mv.metric;
+          return judged(std::move(moved), r.diagrams);
+        },
+        [&](const Trial& t) {
+          const double s = unit_share(t.mesh);
+          return s > share || (s == share && length_energy(t.mesh) < energy);
+        },
+        [&](int v) { ++refused[static_cast<std::size_t>(v)]; });
+    if (kept_batch) {
+      kept = kept_batch->batch.size(), r.moves += kept;
+      share = unit_share(kept_batch->trial.mesh), energy = length_energy(kept_batch->trial.mesh);
+      r.mesh = std::move(kept_batch->trial.mesh);
     }
     if (progress)
       progress("refine --relocate: round " + std::to_string(round) + ": " + std::to_string(kept) + " of " + std::to_string(tried.size()) +

@@ -7,13 +7,16 @@
 //
 // Where to move is a choice in doubles (it never makes a verdict). Each neighbour w of v proposes
 // the point at unit length from w toward v (w + (v − w)/ℓ, ℓ the geometric mean of the edge's
-// lengths in its ends' metrics, the rest length of DistMesh's springs); v goes halfway to the
-// proposals' mean, or a quarter of the way when that point is not strictly inside one of v's
-// triangles (so it stays inside Ω and off every other site). A vertex is a candidate when the move
-// makes more of its own edges unit (both lengths in [1/√2, √2]); no two moved at once are
-// neighbours, best gain first. The oracle then judges the moved set: the moves next to the cells its
-// check names are undone and the rest tried again; a round whose certified mesh has no larger share
-// of unit edges tries the better half. A vertex undone three times is not tried again, and at most
+// lengths in its ends' metrics, the rest length of DistMesh's springs). v may go the whole way to
+// the proposals' mean, half or a quarter of it, each step taken only when it lands strictly inside
+// one of v's triangles (so v stays inside Ω and off every other site); the step kept is the one
+// that makes v's own edges best: more of them unit (both lengths in [1/√2, √2]), or as many and
+// Σ (log ℓ)² lower by a tenth. A vertex with such a step is a candidate; no two moved at once are
+// neighbours, best gain first (unit edges gained, then Σ (log ℓ)² lost). The oracle then judges
+// the moved set (keep_certified, dual_trial.hpp): the moves next to what its check names are
+// undone and the rest tried again; a certified mesh with a smaller share of unit edges, or the
+// same share and no lower mean (log ℓ)², tries the better half. A vertex undone three times is not
+// tried again, a round that keeps nothing counts one undoing of each vertex it tried, and at most
 // `rounds` rounds run, so relocating ends.
 #include "fields/metric_field.hpp"
 #include "geometry/mesh.hpp"

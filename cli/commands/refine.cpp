@@ -2,10 +2,10 @@
 // metric field (io/field_source.hpp: a built-in field or a background mesh); writes the mesh for
 // `anisocert certify`, Medit .mesh/.sol and SVG.
 #include "cli/coarsen.hpp"
-#include "cli/relocate.hpp"
 #include "cli/diagram_job.hpp"
 #include "cli/output.hpp"
 #include "cli/refine_from.hpp"
+#include "cli/relocate.hpp"
 #include "cli/reports/refine_report.hpp"
 #include "cli/usage_error.hpp"
 #include "fields/registry.hpp"
@@ -251,21 +251,20 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   }
   // --coarsen and --relocate, in turn while a turn changes the mesh (at most 4 turns): a move can
   // make a removal certifiable, and a removal leaves room to move. A stopped run is neither (said).
-  Coarsened coarsened{run.result.mesh, 0, 0};
-  Relocated relocated{run.result.mesh, 0, 0};
+  geometry::Mesh<double> m = run.result.mesh;
+  std::size_t removed = 0, coarsen_diagrams = 0, moves = 0, relocate_diagrams = 0;
   for (int turn = 0; turn < 4 && run.result.consistent && (o.coarsen || o.relocate); ++turn) {
-    const std::size_t removed = coarsened.removed, moves = relocated.moves;
+    const std::size_t removed_before = removed, moves_before = moves;
     if (o.coarsen) {
-      Coarsened c = coarsen(relocated.mesh, o.quiet);
-      coarsened.removed += c.removed, coarsened.diagrams += c.diagrams, relocated.mesh = std::move(c.mesh);
+      Coarsened c = coarsen(m, o.quiet);
+      removed += c.removed, coarsen_diagrams += c.diagrams, m = std::move(c.mesh);
     }
     if (o.relocate) {
-      Relocated r = relocate(relocated.mesh, start.field, o.quiet);
-      relocated.moves += r.moves, relocated.diagrams += r.diagrams, relocated.mesh = std::move(r.mesh);
+      Relocated r = relocate(m, start.field, o.quiet);
+      moves += r.moves, relocate_diagrams += r.diagrams, m = std::move(r.mesh);
     }
-    if (!(o.coarsen && o.relocate) || (coarsened.removed == removed && relocated.moves == moves)) break;
+    if (!(o.coarsen && o.relocate) || (removed == removed_before && moves == moves_before)) break;
   }
-  const geometry::Mesh<double>& m = relocated.mesh;
   const RefinedCertificate certificate = certify_refined(entry, m, o.quiet);
   std::vector<OutputFile> files;
   std::string written;
@@ -279,14 +278,14 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
                      std::to_string(start.boundary_vertices) + " on the boundary, " + std::to_string(start.rounded) +
                      " rounded to the nearest doubles), " + std::to_string(start.interior_segments) + " interior segments; metric " +
                      start.metric_source + "\n" + report_text(run) + (o.coarsen && !run.result.consistent ? "  not coarsened: the refiner stopped early\n"
-                     : o.coarsen ? "  coarsened: " + std::to_string(coarsened.removed) + " vertices removed, each kept out only when the oracle certified the rest (" +
-                                      std::to_string(coarsened.diagrams) + " exact diagrams)\n"
+                     : o.coarsen ? "  coarsened: " + std::to_string(removed) + " vertices removed, each kept out only when the oracle certified the rest (" +
+                                      std::to_string(coarsen_diagrams) + " exact diagrams)\n"
                                 : "") +
-                     (o.relocate && run.result.consistent ? "  relocated: " + std::to_string(relocated.moves) +
-                                                                " moves of a vertex, each kept only when the oracle certified the moved vertices (" +
-                                                                std::to_string(relocated.diagrams) + " exact diagrams)\n"
-                                                          : "") +
-                     before_after_text(start, certificate, vertices_in, coarsened.removed);
+                     (o.relocate && !run.result.consistent ? "  not relocated: the refiner stopped early\n"
+                      : o.relocate ? "  relocated: " + std::to_string(moves) + " moves of a vertex, each kept only when the oracle certified the moved vertices (" +
+                                         std::to_string(relocate_diagrams) + " exact diagrams)\n"
+                                   : "") +
+                     before_after_text(start, certificate, vertices_in, removed);
   if (format) text += "  mesh: " + written + " (check it with " + check_command(entry, paths) + ")\n";
   if (!o.svg.empty()) text += "  picture: " + o.svg + "\n";
   // The product is the certificate: a run the refiner stopped early (a budget, or its subdivision
