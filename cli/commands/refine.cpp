@@ -442,7 +442,7 @@ void add_refine(CLI::App& app, int& exit_code) {
               "certifies the rest (the dual of the exact D|Ω of the remaining vertices is a triangulation; --algo " + refiners_where(true) + ")");
   c->add_flag("--relocate", o->relocate,
               "--from: then move interior vertices toward unit edges (with --coarsen, the two in turn), each move kept only\n"
-              "certifies the moved vertices (the dual of their exact D|Ω is a triangulation; --algo " + refiners_where(true) + ")");
+              "when the oracle certifies the moved vertices (the dual of their exact D|Ω is a triangulation; --algo " + refiners_where(true) + ")");
   // A parameter several refiners share (e.g. --size) is one option: the first refiner's help and
   // default, the refiners that have it, and another's own help where it differs.
   std::map<std::string, std::pair<std::string, std::string>> help;  // name → (first help, the option's text)
