@@ -46,7 +46,7 @@ Coarsened coarsen(const Mesh<double>& m, bool quiet) {
   constexpr int tries = 3;
   std::vector<int> refused(m.sites.size(), 0);
   for (const auto& [a, b] : m.segments) refused[static_cast<std::size_t>(a)] = refused[static_cast<std::size_t>(b)] = tries;
-  double share = unit_share(m);
+  double share = edge_measures(m).unit_share;
   for (int round = 1;; ++round) {
     const Mesh<double>& cur = c.mesh;
     const auto n = neighbours(cur);
@@ -74,10 +74,13 @@ Coarsened coarsen(const Mesh<double>& m, bool quiet) {
     std::size_t kept = 0;
     auto kept_batch = keep_certified(
         batch, n, [](int v) { return v; }, [&](const std::vector<int>& gone) { return without(cur, gone, c.diagrams); },
-        [&](const Trial& t) { return unit_share(t.mesh) > share; },
+        [&](const Trial& t) {
+          const double s = edge_measures(t.mesh).unit_share;
+          return s > share ? (share = s, true) : false;  // kept only when better, so `share` is the kept mesh's
+        },
         [&](int v) { ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])]; });
     if (kept_batch) {
-      kept = kept_batch->batch.size(), c.removed += kept, share = unit_share(kept_batch->trial.mesh);
+      kept = kept_batch->batch.size(), c.removed += kept;
       std::vector<char> gone(origin.size(), 0);
       for (int v : kept_batch->batch) gone[static_cast<std::size_t>(v)] = 1;
       std::vector<int> next;

@@ -33,26 +33,17 @@ bool unit_edge(const Mesh<double>& m, int a, int b) {
   return la * la >= 0.5 && la * la <= 2 && lb * lb >= 0.5 && lb * lb <= 2;
 }
 
-double unit_share(const Mesh<double>& m) {
+EdgeMeasures edge_measures(const Mesh<double>& m) {
   std::size_t edges = 0, unit = 0;
-  const auto n = neighbours(m);
-  for (std::size_t a = 0; a < n.size(); ++a)
-    for (int b : n[a])
-      if (static_cast<int>(a) < b) ++edges, unit += unit_edge(m, static_cast<int>(a), b);
-  return edges == 0 ? 0 : double(unit) / double(edges);
-}
-
-double length_energy(const Mesh<double>& m) {
-  std::size_t edges = 0;
   double sum = 0;
   const auto n = neighbours(m);
   for (std::size_t a = 0; a < n.size(); ++a)
     for (int b : n[a])
       if (static_cast<int>(a) < b) {
         const double l = std::log(mean_length(m, static_cast<int>(a), b));
-        ++edges, sum += l * l;
+        ++edges, unit += unit_edge(m, static_cast<int>(a), b), sum += l * l;
       }
-  return edges == 0 ? 0 : sum / double(edges);
+  return edges == 0 ? EdgeMeasures{} : EdgeMeasures{double(unit) / double(edges), sum / double(edges)};
 }
 
 Trial judged(Mesh<double> m, std::size_t& diagrams) {

@@ -30,7 +30,8 @@ Trial judged(geometry::Mesh<double> m, std::size_t& diagrams);
 // the batch applied (near_failures as sites of the current mesh). When it is not certified, the
 // changes at or next to a site it names are dropped, `refuse(site)` called for each, and the rest
 // tried again (the later half, when none is named); when `better(trial)` rejects a certified
-// mesh, the later half is tried. At most 8 trials. Returns the batch kept and its trial, if any.
+// mesh, the later half is tried; the first certified trial it accepts is kept (so `better` may
+// record what it measured). At most 8 trials. Returns the batch kept and its trial, if any.
 template <class Change>
 struct Kept {
   std::vector<Change> batch;
@@ -71,11 +72,14 @@ double mean_length(const geometry::Mesh<double>& m, int a, int b);
 // Each vertex's neighbours along the triangles' edges.
 std::vector<std::set<int>> neighbours(const geometry::Mesh<double>& m);
 
-// The share of unit edges: both lengths in [1/√2, √2].
+// A unit edge: both lengths in [1/√2, √2].
 bool unit_edge(const geometry::Mesh<double>& m, int a, int b);
-double unit_share(const geometry::Mesh<double>& m);
 
-// The mean over edges of (log ℓ)², ℓ an edge's geometric-mean length: 0 for a unit mesh.
-double length_energy(const geometry::Mesh<double>& m);
+// Over m's edges, in one pass: the share of unit edges, and the mean of (log ℓ)², ℓ an edge's
+// geometric-mean length (0 for a unit mesh).
+struct EdgeMeasures {
+  double unit_share = 0, energy = 0;
+};
+EdgeMeasures edge_measures(const geometry::Mesh<double>& m);
 
 }  // namespace anisocert::cli

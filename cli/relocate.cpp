@@ -97,7 +97,7 @@ Relocated relocate(const Mesh<double>& m, const fields::MetricField& field, bool
   constexpr int tries = 3;
   std::vector<int> refused(m.sites.size(), 0);  // how often a move was undone; the vertices on segments never move
   for (const auto& [a, b] : m.segments) refused[static_cast<std::size_t>(a)] = refused[static_cast<std::size_t>(b)] = tries;
-  double share = unit_share(m), energy = length_energy(m);
+  EdgeMeasures now = edge_measures(m);
   for (int round = 1; round <= rounds; ++round) {
     Mesh<double>& cur = r.mesh;
     const auto n = neighbours(cur);
@@ -133,14 +133,15 @@ Relocated relocate(const Mesh<double>& m, const fields::MetricField& field, bool
             moved.sites[static_cast<std::size_t>(mv.site)] = mv.to, moved.metrics[static_cast<std::size_t>(mv.site)] = mv.metric;
           return judged(std::move(moved), r.diagrams);
         },
-        [&](const Trial& t) {
-          const double s = unit_share(t.mesh);
-          return s > share || (s == share && length_energy(t.mesh) < energy);
+        [&](const Trial& t) {  // kept only when better, so `now` is the kept mesh's
+          const EdgeMeasures e = edge_measures(t.mesh);
+          const bool better = e.unit_share > now.unit_share || (e.unit_share == now.unit_share && e.energy < now.energy);
+          if (better) now = e;
+          return better;
         },
         [&](int v) { ++refused[static_cast<std::size_t>(v)]; });
     if (kept_batch) {
       kept = kept_batch->batch.size(), r.moves += kept;
-      share = unit_share(kept_batch->trial.mesh), energy = length_energy(kept_batch->trial.mesh);
       r.mesh = std::move(kept_batch->trial.mesh);
     }
     if (progress)
