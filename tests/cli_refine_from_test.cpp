@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 const std::string fixtures = std::string(ANISOCERT_REGRESSIONS_DIR) + "/../peers/fixtures/";
 // FreeFem's adaptmesh of the L-shape for the coarse shock field (tests/peers/fixtures/README.md).
 // It is also the regression of the corner ping-pong: before the concentric shells
-// (VoronoiRefinement::shell_parameter) BWY split the edges at the re-entrant corner, 20° in its
+// (refiners/common/corner_shells.hpp) BWY split the edges at the re-entrant corner, 20° in its
 // metric, down to 10⁻⁶ of the corner and stopped there.
 const std::string freefem_l = fixtures + "freefem-lshape-shock-coarse.msh";
 const std::string shock_coarse = " --field shock --param h=0.1";

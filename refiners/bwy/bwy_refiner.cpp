@@ -67,8 +67,10 @@ class BwyRefinement : public common::VoronoiRefinement {
         r.unedged_left += !triangles_.is_edge(a, b);
       }
       for (std::size_t q = 0; q < diagram_.vertices().size(); ++q)
-        if (in_T(static_cast<int>(q)))
+        if (in_T(static_cast<int>(q))) {
           r.violators_left += std::any_of(vertex_rules.begin(), vertex_rules.end(), [&](Rule rule) { return applies(rule, static_cast<int>(q)); });
+          r.exempt_left += exempt(static_cast<int>(q)) && badly_shaped(static_cast<int>(q));
+        }
       for (std::size_t i = 0; i < exact_ties_.size(); ++i) r.violators_left += exact_ties_[i].rule != 0 || tie_overlaps(i) || tie_shares_sites(i);
       r.embedding_failure = embedding_failure();
     }
@@ -259,7 +261,7 @@ class BwyRefinement : public common::VoronoiRefinement {
     const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
     const int t = triangles_.of_key(q).front();
     switch (rule) {
-      case Rule::bad_shape: return badly_shaped(q);
+      case Rule::bad_shape: return badly_shaped(q) && !exempt(q);
       case Rule::several_vertices: return triangles_.same_sites(t).size() > 1;
       case Rule::overlap: return overlaps(t);
       case Rule::too_large: {
@@ -271,6 +273,9 @@ class BwyRefinement : public common::VoronoiRefinement {
       default: return false;
     }
   }
+  // Rule 3 leaves alone a triangle that a sharp corner of Ω makes skinny (corner_shells.hpp: the
+  // small-angle exemption); the report counts those left badly shaped.
+  bool exempt(int q) const { return corners_->exempt(diagram_.vertices()[static_cast<std::size_t>(q)].sites, sites_.points); }
   // Rule 3: r(v)² > B² δ(t_v)², i.e. r(v)² > B² d_p(p, q)² for one of the triangle's edges pq and one
   // of its ends p (δ is the least of these six lengths).
   bool badly_shaped(int q) {

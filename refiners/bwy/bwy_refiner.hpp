@@ -28,6 +28,8 @@ struct BwyResult : common::RefineResult {
   // What a stopped run leaves (not counted when the time budget stopped it): subsegments still
   // encroached or no edge of T, and Voronoi vertices of T to which rule 3, 4, 5 or 6 applies.
   std::size_t encroached_left = 0, unedged_left = 0, violators_left = 0;
+  // Voronoi vertices of T left badly shaped by rule 3's exemption at sharp corners (counted with the rest).
+  std::size_t exempt_left = 0;
   bool left_counted = true;
   // Why T is not a local embedding (BWY §3.2.1) at the end; empty when it is (or not counted).
   std::string embedding_failure;

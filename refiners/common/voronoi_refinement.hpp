@@ -18,6 +18,7 @@
 // (refiners/bwy/), whose §3.2.2 takes LS's encroachment and adds the conditional insertion.
 #include "fields/metric_field.hpp"
 #include "refiners/common/certified_point.hpp"
+#include "refiners/common/corner_shells.hpp"
 #include "refiners/common/distance_function.hpp"
 #include "refiners/common/domain.hpp"
 #include "refiners/common/run_record.hpp"
@@ -44,7 +45,7 @@ struct VoronoiRules {
   int split_instead;  // a subsegment split instead of inserting a point that would encroach it
   int unresolved;     // a site where the diagram is unresolved
   int island;         // a site on the bisector of a site whose cell holds no Voronoi vertex
-  int corner_shell;   // a sharp corner's first shell (plan_corner_shells), before any other split
+  int corner_shell;   // a sharp corner's first shell (CornerShells::first), before any other split
   std::vector<common::RuleName> by_priority;
   std::string name(int rule) const;
 };
@@ -130,22 +131,11 @@ class VoronoiRefinement {
   std::pair<Point2<double>, double> rounded_vertex(int q) const;
   // A rational point rounded to doubles, within an ulp per coordinate, with its displacement.
   static std::pair<Point2<double>, double> rounded(const Point2<Rational>& c);
-  // Where split() aims on subsegment ab: the concentric shells' parameter from a at a corner of
-  // less than 60° in its metric, else nothing (the metric midpoint).
-  std::optional<double> shell_parameter(int a, int b) const;
-  // Corner k of Ω is sharp: its edges meet at less than 60° in its metric. The M_c-distance from
-  // site c to site o.
-  bool sharp_corner(int k) const;
-  double corner_distance(int c, int o) const;
-  // The first shells of the sharp corners (start), split one a step before any encroached
-  // subsegment (split_encroached).
-  void plan_corner_shells();
+  // Ω's sharp corners (corner_shells.hpp), known once the corners are sites (start); the first
+  // shells still to split, one a step before any encroached subsegment (split_encroached).
+  std::optional<CornerShells> corners_;
+  std::deque<CornerShells::Shell> lopping_;
   bool split_corner_shell();
-  struct Shell {
-    int s, c, o;  // the subsegment, its corner end and its other end
-    double t;     // the split's parameter from the corner
-  };
-  std::deque<Shell> shells_;
   // Every site that can be nearest somewhere on subsegment s.
   std::vector<common::MetricSite> near(int s) const;
   // d_s(p)² in doubles (for choices, never for decisions).

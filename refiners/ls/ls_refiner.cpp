@@ -3,6 +3,7 @@
 #include "fields/normalized.hpp"
 #include "predicates/angle.hpp"
 #include "predicates/orientation.hpp"
+#include "refiners/common/corner_shells.hpp"
 #include "refiners/common/exact_split.hpp"
 #include "refiners/common/run_record.hpp"
 #include "refiners/common/sites.hpp"
@@ -44,6 +45,7 @@ class LsRefinement {
         sites_(domain, p.normalized_metric ? fields::normalized(field) : field),
         metric_(sites_.field.at(domain.corners()[0].x, domain.corners()[0].y)),
         size_metric_(field.at(domain.corners()[0].x, domain.corners()[0].y)),
+        corners_(domain, std::vector(domain.size(), metric_)),
         diagram_(metric_, domain.bounding_box()),
         s2_(sin2_above(p.theta_bound)),
         t11_(theorem11_conditions(domain, std::vector(domain.vertices().size(), metric_), p.theta_bound)),
@@ -65,6 +67,7 @@ class LsRefinement {
     }
     for (std::size_t t = 0; t < diagram_.slots(); ++t)
       if (diagram_.triangle(static_cast<int>(t)).alive) queue_if_violator(static_cast<int>(t));
+    for (const common::CornerShells::Shell& sh : corners_.first()) lopping_.push_back(sh);
   }
 
   std::size_t vertices() const { return sites_.size(); }
@@ -73,6 +76,7 @@ class LsRefinement {
   std::string done() const { return "no encroached subsegment and no violator"; }
 
   bool step() {
+    if (split_corner_shell()) return true;
     while (const auto s = subsegments_.pop()) {
       const std::vector<CellOnSegment> by = encroachers(*s);
       if (by.empty()) continue;
@@ -114,7 +118,11 @@ class LsRefinement {
       const auto& tri = diagram_.triangle(static_cast<int>(t));
       if (!tri.alive || !diagram_.real(static_cast<int>(t))) continue;
       if (vertex_in_domain(static_cast<int>(t), diagram_.circumcentre_box(static_cast<int>(t)))) r.mesh.triangles.push_back(tri.v);
-      if (r.left_counted) r.violators_left += violation(static_cast<int>(t)) != Rule::none;
+      if (r.left_counted) {
+        bool exempted = false;
+        r.violators_left += violation(static_cast<int>(t), &exempted) != Rule::none;
+        r.exempt_left += exempted;
+      }
     }
     if (r.left_counted)
       for (std::size_t s = 0; s < subsegments_.size(); ++s) r.encroached_left += !encroachers(static_cast<int>(s)).empty();
@@ -129,15 +137,19 @@ class LsRefinement {
 
   // Rule 3 or 4 for the Voronoi vertex dual to triangle t, or none (a vertex outside closed Ω is
   // no violator: LS §9 "q ∈ Ω"). The filtered predicates and boxes decide; rationals when they
-  // cannot.
-  Rule violation(int t) const {
+  // cannot. Rule 3 leaves alone a triangle that a sharp corner of Ω makes skinny (corner_shells.hpp:
+  // the small-angle exemption), and says so in `exempted` when the vertex is in Ω.
+  Rule violation(int t, bool* exempted = nullptr) const {
     if (!diagram_.real(t)) return Rule::none;
     const auto& v = diagram_.triangle(t).v;
     bool poor = false;
     for (int i = 0; i < 3 && !poor; ++i)
       poor = !predicates::angle_at_least_arcsin(diagram_.point(v[(i + 2) % 3]), diagram_.point(v[i]), diagram_.point(v[(i + 1) % 3]),
                                                 metric_, s2_);
+    const bool exempt = poor && corners_.exempt(v, sites_.points);
+    poor = poor && !exempt;
     const Point2<FilterInterval>& c = diagram_.circumcentre_box(t);
+    if (exempt && exempted && vertex_in_domain(t, c)) *exempted = true;
     if (!poor && !too_large(t, c)) return Rule::none;
     if (!vertex_in_domain(t, c)) return Rule::none;
     return poor ? Rule::poor_angle : Rule::too_large;
@@ -211,19 +223,30 @@ class LsRefinement {
   }
 
   // LS §9: s is split in one of the cells `in`, the one nearest its midpoint (one that meets s in
-  // more than a point when there is one), as near the midpoint as a double exactly on s allows.
+  // more than a point when there is one), as near the midpoint as a double exactly on s allows; at
+  // a sharp corner, its shell instead of the midpoint (corner_shells.hpp).
   // cause: rule 1, or the rule of the violator whose site would encroach s (the split is rule 2's).
   void split(int s, const std::vector<CellOnSegment>& in, Rule cause) {
-    const Rational half(1, 2);
-    const auto gap = [&](const CellOnSegment& c) { return c.lo > half ? c.lo - half : c.hi < half ? half - c.hi : Rational(0); };
+    const auto [a, b] = subsegments_.ends(s);
+    const std::optional<double> shell = corners_.parameter(a, b, sites_.points);
+    const Rational target(shell.value_or(0.5));
+    const auto gap = [&](const CellOnSegment& c) { return c.lo > target ? c.lo - target : c.hi < target ? target - c.hi : Rational(0); };
     const auto better = [&](const CellOnSegment& c, const CellOnSegment& d) {
       return c.point() != d.point() ? !c.point() : gap(c) < gap(d);
     };
     const CellOnSegment* best = &in.front();
     for (const CellOnSegment& c : in)
       if (better(c, *best)) best = &c;
-    const auto [a, b] = subsegments_.ends(s);
-    const auto z = split_point(sites_.points[a], sites_.points[b], best->lo, best->hi);
+    std::optional<Point2<double>> z;
+    // A shell's split: near the shell (CornerShells::slack), in whichever cell it falls, the coarsest
+    // point of the edge's grid, so that later splits stay exact (voronoi_refinement.cpp's split says
+    // why not in an encroacher's cell).
+    if (shell) {
+      const auto [c0, c1] = subsegments_.edge_ends(domain_, s);
+      const Rational ua = common::edge_parameter(c0, c1, sites_.points[a]), L = common::edge_parameter(c0, c1, sites_.points[b]) - ua;
+      z = common::coarse_split_point(c0, c1, std::min(ua, ua + L), std::max(ua, ua + L), ua + target * L, abs(L) * common::CornerShells::slack());
+    }
+    if (!z) z = split_point(sites_.points[a], sites_.points[b], best->lo, best->hi, target);
     if (!z) {
       stalled_ = "subsegment " + point_text(sites_.points[a]) + " – " + point_text(sites_.points[b]) +
                  " is to be split in a cell that holds no double point exactly on it" + corner_note(domain_, t11_, a, b);
@@ -236,6 +259,27 @@ class LsRefinement {
     const int kb = subsegments_.split(s, k);
     boxes_.set(s, near_segment(sites_.points[a], sites_.points[k], metric_), sites_.grid);
     boxes_.set(kb, near_segment(sites_.points[k], sites_.points[b], metric_), sites_.grid);
+  }
+
+  // The corner lopping (corner_shells.hpp), one shell a step before any encroached subsegment.
+  bool split_corner_shell() {
+    while (!lopping_.empty()) {
+      const common::CornerShells::Shell sh = lopping_.front();
+      lopping_.pop_front();
+      const auto s = subsegments_.find(sh.c, sh.o);
+      if (!s) continue;  // split already, or no segment
+      const auto [a, b] = subsegments_.ends(*s);
+      const auto z = common::coarse_split_point(sites_.points[a], sites_.points[b], Rational(0), Rational(1), Rational(a == sh.c ? sh.t : 1 - sh.t),
+                                                common::CornerShells::slack());
+      if (!z) continue;
+      const int k = insert(*z, Rule::corner_shell, 0);
+      if (k < 0) return true;
+      const int kb = subsegments_.split(*s, k);
+      boxes_.set(*s, near_segment(sites_.points[a], sites_.points[k], metric_), sites_.grid);
+      boxes_.set(kb, near_segment(sites_.points[k], sites_.points[b], metric_), sites_.grid);
+      return true;
+    }
+    return false;
   }
 
   // Inserts q as a site; its index, or −1 when the run stalls.
@@ -261,6 +305,8 @@ class LsRefinement {
   common::Sites sites_;
   Sym2<double> metric_;       // the diagram's (M′ with normalized_metric)
   Sym2<double> size_metric_;  // the field's, for the size rule
+  common::CornerShells corners_;
+  std::deque<common::CornerShells::Shell> lopping_;  // the first shells still to split
   DelaunayInMetric diagram_;
   double s2_;
   Theorem11Conditions t11_;

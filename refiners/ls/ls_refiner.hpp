@@ -26,6 +26,8 @@ struct LsResult : common::RefineResult {
   // not counted (left_counted false) when the time budget stopped it, since counting is as long as
   // a pass over the whole mesh.
   std::size_t encroached_left = 0, violators_left = 0;
+  // Triangles left with a poor angle by rule 3's exemption at sharp corners (counted with the rest).
+  std::size_t exempt_left = 0;
   bool left_counted = true;
 };
 

@@ -93,7 +93,11 @@ class LsVaryingRefinement : public VoronoiRefinement {
       if (common::in_closed_domain(domain_, P) != std::optional<bool>(true)) continue;
       const auto order = cell_order(static_cast<int>(q));
       r.mesh.triangles.push_back(order == Sign::negative ? std::array<int, 3>{v.sites[0], v.sites[2], v.sites[1]} : v.sites);
-      if (r.left_counted) r.violators_left += violation(static_cast<int>(q)) != Rule::none;
+      if (r.left_counted) {
+        bool exempted = false;
+        r.violators_left += violation(static_cast<int>(q), &exempted) != Rule::none;
+        r.exempt_left += exempted;
+      }
     }
     for (const JudgedTie& judged : exact_ties_) {
       for (const auto& t : judged.triangles) r.mesh.triangles.push_back(t);
@@ -108,8 +112,9 @@ class LsVaryingRefinement : public VoronoiRefinement {
 
  private:
   // Rules 5, 3, 4 at vertex q, or none (a vertex outside closed Ω is no violator: LS §9 "q ∈ Ω").
-  // Sets stalled_ when a decision is undecided.
-  Rule violation(int q) {
+  // Sets stalled_ when a decision is undecided. Rule 3 leaves alone a triangle that a sharp corner
+  // of Ω makes skinny (corner_shells.hpp: the small-angle exemption), and says so in `exempted`.
+  Rule violation(int q, bool* exempted = nullptr) {
     const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
     const CertifiedPoint P = point(q);
     const auto in = common::in_closed_domain(domain_, P);
@@ -146,11 +151,15 @@ class LsVaryingRefinement : public VoronoiRefinement {
     const Point2<double> c = v.box.approx();
     const std::array<Sym2<double>, 4> metrics{sites_.metrics[static_cast<std::size_t>(v.sites[0])], sites_.metrics[static_cast<std::size_t>(v.sites[1])],
                                               sites_.metrics[static_cast<std::size_t>(v.sites[2])], sites_.field.at(c.x, c.y)};
-    for (const auto& M : metrics)
-      for (int i = 0; i < 3; ++i)
-        if (!predicates::angle_at_least_arcsin(t[static_cast<std::size_t>((i + 2) % 3)], t[static_cast<std::size_t>(i)],
-                                               t[static_cast<std::size_t>((i + 1) % 3)], M, s2_))
-          return Rule::poor_angle;
+    bool poor = false;
+    for (std::size_t m = 0; m < metrics.size() && !poor; ++m)
+      for (int i = 0; i < 3 && !poor; ++i)
+        poor = !predicates::angle_at_least_arcsin(t[static_cast<std::size_t>((i + 2) % 3)], t[static_cast<std::size_t>(i)],
+                                                  t[static_cast<std::size_t>((i + 1) % 3)], metrics[m], s2_);
+    if (poor) {
+      if (!corners_->exempt(v.sites, sites_.points)) return Rule::poor_angle;
+      if (exempted) *exempted = true;
+    }
     // Too large: d_p(q) > size in the field's metric M_p. The three sites' distances are equal in
     // the diagram's metrics; with M′ they differ in M, and each is judged.
     const int judged = p_.size <= 0 ? 0 : p_.normalized_metric ? 3 : 1;
