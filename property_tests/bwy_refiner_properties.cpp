@@ -16,7 +16,7 @@
 #include "oracle/diagram/diagram.hpp"
 #include "oracle/diagram/input.hpp"
 #include "property_tests/bwy_zone.hpp"
-#include "property_tests/sharp_corner_exemption.hpp"
+#include "property_tests/small_angle_exemption.hpp"
 #include "property_tests/generators/domains.hpp"
 #include "property_tests/generators/fields.hpp"
 #include "property_tests/ls_same_run.hpp"
@@ -123,13 +123,13 @@ RC_GTEST_PROP(BWY_R, FinishedRunsAreTheExactDualAndNoRuleApplies, ()) {
       for (int j = 0; j < 3; ++j)
         if (i != j) bad = bad || radius_beyond(d, n, t[0], B2 * d2_from(m, t[i], t[j])) == Sign::positive;  // rule 3
     if (bad) {
-      RC_ASSERT(n.sites.size() == 3u && gen::exempt_at_sharp_corner(m, t));
+      RC_ASSERT(n.sites.size() == 3u && gen::exempt_at_small_angle(m, domain, t));
       ++exempt;
     }
     if (p.size > 0) RC_ASSERT(radius_beyond(d, n, t[0], size2) != Sign::positive);
   }
   RC_ASSERT(exempt == r.exempt_left);
-  RC_CLASSIFY(exempt > 0, "triangles left at a sharp corner");
+  RC_CLASSIFY(exempt > 0, "triangles left at a small input angle");
   RC_CLASSIFY(r.mesh.sites.size() > 50, "more than 50 sites");
   RC_CLASSIFY(std::any_of(d.nodes.begin(), d.nodes.end(), [](const oracle::Node& n) { return n.sites.size() > 3; }),
               "a Voronoi vertex of degree 4 or more");

@@ -17,6 +17,7 @@
 #include "refiners/ls/rules.hpp"
 #include "refiners/ls/theorem11_conditions.hpp"
 #include "refiners/common/subsegments.hpp"
+#include "tests/small_angle_triangles.hpp"
 #include "refiners/common/segment_cells.hpp"
 #include "refiners/common/segment_quadratics.hpp"
 
@@ -373,13 +374,10 @@ TEST(LsRefiner, StronglyStretchedMetricKeepsTheTriangles) {
 // run stopped 2⁻³⁰ from the corner; with the concentric shells and the small-angle exemption
 // (refiners/common/corner_shells.hpp) the run finishes and the oracle certifies it. The triangles
 // left with an angle below θ_bound are exactly those the exemption names, as this test finds them
-// in doubles: the shortest edge (none shorter) joins a site on each edge of corner 0, at
-// distances from it within √2 (the same shell), and the report counts them.
+// in doubles: the shortest edge (none shorter) joins two split sites, one inside each edge of
+// corner 0, at one distance from it (squares within 2⁻¹⁰), and the report counts them.
 TEST(LsRefiner, ASharpCornerGetsShellsAndItsSkinnyTrianglesAreTheExemptOnes) {
   const std::vector<Point2<double>> corners{{0, 0}, {1, 0}, {0.96875, 0.25}};
-  const auto on = [](const Point2<double>& a, const Point2<double>& b, const Point2<double>& q) {
-    return predicates::orientation(a, b, q) == Sign::zero && (q.x - a.x) * (b.x - a.x) + (q.y - a.y) * (b.y - a.y) > 0;
-  };
   for (const double size : {0.1, 0.02}) {
     refiners::ls::LsParameters p;
     p.size = size;
@@ -388,28 +386,12 @@ TEST(LsRefiner, ASharpCornerGetsShellsAndItsSkinnyTrianglesAreTheExemptOnes) {
     const oracle::Diagram d = oracle::compute_diagram(geometry::exact(r.mesh));
     EXPECT_TRUE(d.dual_check.is_triangulation);
     EXPECT_TRUE(oracle::compare_with_dual(d, r.mesh.triangles, 3).is_dual());
-    std::size_t skinny = 0;
-    for (const auto& t : r.mesh.triangles) {
-      std::array<Point2<double>, 3> v{};
-      for (int k = 0; k < 3; ++k) v[static_cast<std::size_t>(k)] = r.mesh.sites[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
-      const auto length = [&](int i, int j) { return std::hypot(v[static_cast<std::size_t>(j)].x - v[static_cast<std::size_t>(i)].x, v[static_cast<std::size_t>(j)].y - v[static_cast<std::size_t>(i)].y); };
-      double least = 180;
-      for (int i = 0; i < 3; ++i) {
-        const double a = length(i, (i + 1) % 3), b = length(i, (i + 2) % 3), c = length((i + 1) % 3, (i + 2) % 3);
-        least = std::min(least, std::acos(std::clamp((a * a + b * b - c * c) / (2 * a * b), -1.0, 1.0)) * 180 / M_PI);
-      }
-      if (least >= 20) continue;
-      ++skinny;
-      bool across = false;  // the shortest edge joins the corner's two edges, on one shell
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          const Point2<double>&a = v[static_cast<std::size_t>(i)], &b = v[static_cast<std::size_t>(j)];
-          if (i == j || !on(corners[0], corners[1], a) || !on(corners[0], corners[2], b)) continue;
-          const double da = std::hypot(a.x, a.y), db = std::hypot(b.x, b.y), ab = length(i, j);
-          across = across || (ab <= length(i, 3 - i - j) && ab <= length(j, 3 - i - j) && da <= std::sqrt(2) * db && db <= std::sqrt(2) * da);
-        }
-      EXPECT_TRUE(across) << "a triangle of smallest angle " << least << "° away from the corner's shells";
-    }
+    // Corner 0's lopping: one site on each of its edges before any other split.
+    ASSERT_GE(r.trace.size(), 2u);
+    EXPECT_EQ(r.trace[0].rule, static_cast<int>(refiners::ls::Rule::corner_shell));
+    EXPECT_EQ(r.trace[1].rule, static_cast<int>(refiners::ls::Rule::corner_shell));
+    const std::size_t skinny = test_support::skinny_across_corners(r.mesh, corners, {0}, {1, 0, 1},
+                                                             [](const test_support::MetricTriangle& t) { return t.smallest_angle_deg() >= 20; });
     EXPECT_GT(skinny, 0u);
     EXPECT_EQ(r.exempt_left, skinny);
   }

@@ -61,9 +61,9 @@ std::vector<std::string> report(const BwyResult& r, const BwyParameters& p) {
                                           : "what is left not counted (the time budget is spent)"),
       section42_line(p), common::rule_counts_line(r)};
   if (r.exempt_left > 0)
-    lines.push_back("  left badly shaped at sharp corners: " + std::to_string(r.exempt_left) +
-                    " triangles whose shortest edge joins the two edges of a corner of less than 60° in its metric (rule 3 leaves "
-                    "them; docs/refiners.md § Concentric shells at sharp corners)");
+    lines.push_back("  left badly shaped at small input angles: " + std::to_string(r.exempt_left) +
+                    " triangles across two segments that meet at less than 60° in the metric (their shortest edge joins the "
+                    "two on one shell; rule 3 leaves them: docs/refiners.md § Concentric shells at sharp corners)");
   std::ostringstream o;
   o << "  parameters: B = " << p.shape_bound << ", G = " << p.distortion << ", size = " << p.size << (p.size > 0 ? "" : " (no size rule)")
     << (p.off_centres ? ", off-centres (rules 4 and 5 took another vertex they allow " + std::to_string(r.other_vertex_choices) + " times)" : "");

@@ -13,9 +13,9 @@
 //     edge of T either, and gets the same site;
 //   3 bad shape: a Voronoi vertex v of T with β(v) = r(v)/δ(t_v) > B gets a site at v, r(v) its
 //     radius d_a(a, v), δ(t_v) the shortest edge of its triangle, d(p, q) = min(d_p(p, q), d_q(p, q)),
-//     unless a sharp corner of Ω makes the triangle skinny (its shortest edge joins the corner's
-//     two edges on one shell: Shewchuk's small-angle exemption, common/corner_shells.hpp; not BWY's,
-//     whose §4 assumes no such corner; the report counts those left);
+//     unless the triangle lies across a small input angle (its shortest edge joins two segments
+//     that meet at less than 60°, on one shell: common/corner_shells.hpp; not BWY's, whose §4
+//     assumes no such angle; the report counts those left);
 //   4 several vertices: a triangle dual to more than one Voronoi vertex of T gets a site at one;
 //   5 overlap: two triangles of T that share an edge and overlap (their third vertices on one side
 //     of it) get a site at the Voronoi vertex of one; a flat triangle (three collinear sites) counts
@@ -33,10 +33,10 @@
 //     metrics: no triangle), a site (not BWY's), before rule 2: T lacks the vertices there, and a
 //     subsegment near them would be judged no edge (seen: near-cocircular corners of a rectangle
 //     with two metrics of distortion 1.001 got rule 2 splits at half the inter-site distance).
-//  10 corner shell: before every other rule, each corner of Ω whose edges meet at less than 60° in
-//     its metric gets a site on both its subsegments at the same power-of-two distance in that
+//  10 corner shell: before every other rule, each vertex of X where two segments meet at less than
+//     60° in its metric gets a site on all its subsegments at one power-of-two distance in that
 //     metric (Ruppert's corner lopping; common/corner_shells.hpp, not BWY's); later splits of a
-//     subsegment with one end at such a corner go on the next shell, in whichever cell.
+//     subsegment with one end at such a vertex go on the next shell, in whichever cell.
 // A Voronoi vertex of degree k ≥ 4 among sites of one metric (an exact tie, common/exact_tie.hpp) puts a
 // fan of its k-gon in T; it is badly shaped when r/δ > B for δ the k-gon's shortest side, which
 // every fan has in one triangle (a diagonal of cocircular points is at least the shortest side on

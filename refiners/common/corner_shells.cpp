@@ -9,10 +9,10 @@ namespace anisocert::refiners::common {
 
 namespace {
 
-// p lies on the closed edge from c to u, exactly.
-bool on_edge(const Point2<double>& c, const Point2<double>& u, const Point2<double>& p) {
-  return predicates::orientation(c, u, p) == Sign::zero && std::min(c.x, u.x) <= p.x && p.x <= std::max(c.x, u.x) &&
-         std::min(c.y, u.y) <= p.y && p.y <= std::max(c.y, u.y);
+// p lies on the segment from c to o, strictly between its ends, exactly.
+bool inside_segment(const Point2<double>& c, const Point2<double>& o, const Point2<double>& p) {
+  return predicates::orientation(c, o, p) == Sign::zero && (p.x - c.x) * (o.x - c.x) + (p.y - c.y) * (o.y - c.y) > 0 &&
+         (p.x - o.x) * (c.x - o.x) + (p.y - o.y) * (c.y - o.y) > 0;
 }
 
 Rational squared(const predicates::Sym2<double>& M, const Point2<double>& a, const Point2<double>& b) {
@@ -20,25 +20,37 @@ Rational squared(const predicates::Sym2<double>& M, const Point2<double>& a, con
                                     Rational(b.y) - Rational(a.y));
 }
 
+// Vectors u and w from a vertex meet at less than 60° in M: u·w > ½|u||w| (in doubles: a choice).
+bool narrow(const predicates::Sym2<double>& M, const Point2<double>& c, const Point2<double>& u, const Point2<double>& w) {
+  const double ux = u.x - c.x, uy = u.y - c.y, wx = w.x - c.x, wy = w.y - c.y;
+  return predicates::bilinear_form(M.m11, M.m12, M.m22, ux, uy, wx, wy) >
+         0.5 * std::sqrt(predicates::quadratic_form(M, ux, uy) * predicates::quadratic_form(M, wx, wy));
+}
+
 }  // namespace
 
 CornerShells::CornerShells(const Domain& domain, std::vector<predicates::Sym2<double>> metrics)
-    : domain_(domain), metrics_(std::move(metrics)), sharp_(domain.size(), 0) {
-  const int n = static_cast<int>(domain.size());
-  const auto& corners = domain.corners();
-  for (int k = 0; k < n; ++k) {
-    const Point2<double>&p = corners[static_cast<std::size_t>(k)], &u = corners[static_cast<std::size_t>((k + n - 1) % n)],
-                         &w = corners[static_cast<std::size_t>((k + 1) % n)];
-    const predicates::Sym2<double>& M = metrics_[static_cast<std::size_t>(k)];
-    const double ux = u.x - p.x, uy = u.y - p.y, wx = w.x - p.x, wy = w.y - p.y;
-    sharp_[static_cast<std::size_t>(k)] = predicates::bilinear_form(M.m11, M.m12, M.m22, ux, uy, wx, wy) >
-                                          0.5 * std::sqrt(predicates::quadratic_form(M, ux, uy) * predicates::quadratic_form(M, wx, wy));
-    if (sharp_[static_cast<std::size_t>(k)]) sharp_list_.push_back(k);
+    : domain_(domain), metrics_(std::move(metrics)), sharp_(domain.vertices().size(), 0) {
+  std::vector<std::vector<int>> ends(domain.vertices().size());
+  for (std::size_t e = 0; e < domain.segment_count(); ++e) {
+    const auto [a, b] = domain.segment_ends(e);
+    ends[static_cast<std::size_t>(a)].push_back(b), ends[static_cast<std::size_t>(b)].push_back(a);
+  }
+  const auto& at = domain.vertices();
+  for (std::size_t c = 0; c < ends.size(); ++c) {
+    Apex apex{static_cast<int>(c), ends[c], {}};
+    for (std::size_t i = 0; i < ends[c].size(); ++i)
+      for (std::size_t j = i + 1; j < ends[c].size(); ++j)
+        if (narrow(metrics_[c], at[c], at[static_cast<std::size_t>(ends[c][i])], at[static_cast<std::size_t>(ends[c][j])]))
+          apex.narrow.push_back({ends[c][i], ends[c][j]});
+    if (apex.narrow.empty()) continue;
+    sharp_[c] = 1;
+    apexes_.push_back(std::move(apex));
   }
 }
 
 double CornerShells::distance(int c, const Point2<double>& p) const {
-  const Point2<double>& q = domain_.corners()[static_cast<std::size_t>(c)];
+  const Point2<double>& q = domain_.vertices()[static_cast<std::size_t>(c)];
   return std::sqrt(predicates::quadratic_form(metrics_[static_cast<std::size_t>(c)], p.x - q.x, p.y - q.y));
 }
 
@@ -53,35 +65,37 @@ std::optional<double> CornerShells::parameter(int a, int b, const std::vector<Po
 }
 
 std::vector<CornerShells::Shell> CornerShells::first() const {
-  const int n = static_cast<int>(domain_.size());
+  const auto& at = domain_.vertices();
   std::vector<Shell> out;
-  for (int c : sharp_list_) {
-    const int u = (c + n - 1) % n, w = (c + 1) % n;
-    const auto& corners = domain_.corners();
-    const double Lu = distance(c, corners[static_cast<std::size_t>(u)]), Lw = distance(c, corners[static_cast<std::size_t>(w)]);
-    const double d = std::exp2(std::floor(std::log2(std::min(Lu, Lw) / 2)));
-    for (const auto& [o, L] : {std::pair<int, double>{w, Lw}, std::pair<int, double>{u, Lu}})
-      if (d > 0 && d < L) out.push_back({c, o, d / L});
+  for (const Apex& apex : apexes_) {
+    double shortest = INFINITY;
+    for (int o : apex.ends) shortest = std::min(shortest, distance(apex.c, at[static_cast<std::size_t>(o)]));
+    const double d = std::exp2(std::floor(std::log2(shortest / 2)));
+    for (int o : apex.ends)
+      if (const double L = distance(apex.c, at[static_cast<std::size_t>(o)]); d > 0 && d < L) out.push_back({apex.c, o, d / L});
   }
   return out;
 }
 
 bool CornerShells::exempt(const std::array<int, 3>& t, const std::vector<Point2<double>>& points) const {
-  const int n = static_cast<int>(domain_.size());
-  const auto& corners = domain_.corners();
-  const auto at = [&](int k) -> const Point2<double>& { return points[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])]; };
-  for (int c : sharp_list_) {
-    const Point2<double>&pc = corners[static_cast<std::size_t>(c)], &pu = corners[static_cast<std::size_t>((c + n - 1) % n)],
-                         &pw = corners[static_cast<std::size_t>((c + 1) % n)];
-    const predicates::Sym2<double>& M = metrics_[static_cast<std::size_t>(c)];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        if (i == j || t[static_cast<std::size_t>(i)] == c || t[static_cast<std::size_t>(j)] == c) continue;
-        const Point2<double>&p = at(i), &q = at(j), &r = at(3 - i - j);
-        if (!on_edge(pc, pu, p) || !on_edge(pc, pw, q)) continue;
-        const Rational pq = squared(M, p, q), dp = squared(M, pc, p), dq = squared(M, pc, q);
-        if (pq <= squared(M, p, r) && pq <= squared(M, q, r) && dp <= 2 * dq && dq <= 2 * dp) return true;
-      }
+  const int vertices = static_cast<int>(domain_.vertices().size());
+  if (std::count_if(t.begin(), t.end(), [&](int k) { return k >= vertices; }) < 2) return false;
+  const auto& at = domain_.vertices();
+  const Rational within(1, 1024);
+  for (const Apex& apex : apexes_) {
+    const Point2<double>& pc = at[static_cast<std::size_t>(apex.c)];
+    const predicates::Sym2<double>& M = metrics_[static_cast<std::size_t>(apex.c)];
+    for (const auto& [u, w] : apex.narrow)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>(j)];
+          if (i == j || a < vertices || b < vertices) continue;
+          const Point2<double>&p = points[static_cast<std::size_t>(a)], &q = points[static_cast<std::size_t>(b)],
+                               &r = points[static_cast<std::size_t>(t[static_cast<std::size_t>(3 - i - j)])];
+          if (!inside_segment(pc, at[static_cast<std::size_t>(u)], p) || !inside_segment(pc, at[static_cast<std::size_t>(w)], q)) continue;
+          const Rational pq = squared(M, p, q), dp = squared(M, pc, p), dq = squared(M, pc, q);
+          if (pq <= squared(M, p, r) && pq <= squared(M, q, r) && abs(dp - dq) <= within * std::min(dp, dq)) return true;
+        }
   }
   return false;
 }

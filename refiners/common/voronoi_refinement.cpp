@@ -70,7 +70,7 @@ void VoronoiRefinement::start() {
     const auto [a, b] = domain_.segment_ends(e);
     subsegments_.add(a, b, static_cast<int>(e));
   }
-  corners_.emplace(domain_, std::vector(sites_.metrics.begin(), sites_.metrics.begin() + static_cast<std::ptrdiff_t>(domain_.size())));
+  corners_.emplace(domain_, std::vector(sites_.metrics.begin(), sites_.metrics.begin() + static_cast<std::ptrdiff_t>(domain_.vertices().size())));
   for (const CornerShells::Shell& sh : corners_->first()) lopping_.push_back(sh);
 }
 

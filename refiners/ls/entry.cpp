@@ -56,9 +56,9 @@ std::vector<std::string> report(const LsResult& r, const LsParameters& p, const 
   lines.push_back(o.str());
   lines.push_back(common::rule_counts_line(r));
   if (r.exempt_left > 0)
-    lines.push_back("  left with a poor angle at sharp corners: " + std::to_string(r.exempt_left) +
-                    " triangles whose shortest edge joins the two edges of a corner of less than 60° in its metric (rule 3 leaves "
-                    "them; docs/refiners.md § Concentric shells at sharp corners)");
+    lines.push_back("  left with a poor angle at small input angles: " + std::to_string(r.exempt_left) +
+                    " triangles across two segments that meet at less than 60° in the metric (their shortest edge joins the "
+                    "two on one shell; rule 3 leaves them: docs/refiners.md § Concentric shells at sharp corners)");
   lines.push_back(!one_metric ? "  angles checked in the metrics of the triangle's three vertices and of the field at its Voronoi vertex rounded to doubles "
                                    "(LS: every point of the triangle)"
                                  : "  angles checked in the metric of the triangle's vertices and of its Voronoi vertex (one metric: LS checks every point of the triangle)");

@@ -45,7 +45,7 @@ class LsRefinement {
         sites_(domain, p.normalized_metric ? fields::normalized(field) : field),
         metric_(sites_.field.at(domain.corners()[0].x, domain.corners()[0].y)),
         size_metric_(field.at(domain.corners()[0].x, domain.corners()[0].y)),
-        corners_(domain, std::vector(domain.size(), metric_)),
+        corners_(domain, std::vector(domain.vertices().size(), metric_)),
         diagram_(metric_, domain.bounding_box()),
         s2_(sin2_above(p.theta_bound)),
         t11_(theorem11_conditions(domain, std::vector(domain.vertices().size(), metric_), p.theta_bound)),

@@ -7,9 +7,9 @@
 //     subsegment is split in the cell the violator would have had ("A new site is never permitted
 //     to encroach upon a segment");
 //   3 poor angle: a Voronoi vertex in Ω whose dual triangle has an angle below θ_bound in the
-//     metric gets a site, unless a sharp corner of Ω makes the triangle skinny (its shortest edge
-//     joins the corner's two edges on one shell: Shewchuk's small-angle exemption,
-//     common/corner_shells.hpp; the report counts those left);
+//     metric gets a site, unless the triangle lies across a small input angle (its shortest edge
+//     joins two segments that meet at less than 60°, on one shell: common/corner_shells.hpp; the
+//     report counts those left);
 //   4 too large: likewise when the triangle's circumradius in the metric exceeds `size`;
 //   5 inverted: a Voronoi vertex in Ω whose dual triangle is inverted (its sites' order around the
 //     vertex the reverse of their order around the triangle) gets a site (before rules 3 and 4);
@@ -21,10 +21,10 @@
 //     metrics, which symmetric fields give: its dual is no triangle), a site, before the other
 //     violators. Not LS §9's rule; ties among sites of one metric are kept exactly instead
 //     (exact_tie.hpp) and judged by rules 3 and 4.
-//   9 corner shell: before every other rule, each corner of Ω whose edges meet at less than 60° in
-//     its metric gets a site on both its subsegments at the same power-of-two distance in that
+//   9 corner shell: before every other rule, each vertex of X where two segments meet at less than
+//     60° in its metric gets a site on all its subsegments at one power-of-two distance in that
 //     metric (Ruppert's corner lopping, common/corner_shells.hpp, on both paths); later splits of a
-//     subsegment with one end at such a corner go on the next shell, in whichever cell.
+//     subsegment with one end at such a vertex go on the next shell, in whichever cell.
 // Rules 5 to 8 cannot fire while every site has one metric (delaunay_in_metric.hpp): every arc
 // lies in its wedge, and the dual of every Voronoi vertex is a counter-clockwise triangle, or a
 // convex polygon of cocircular sites split into such triangles.
