@@ -78,9 +78,11 @@ std::vector<CornerShells::Shell> CornerShells::first() const {
 }
 
 bool CornerShells::exempt(const std::array<int, 3>& t, const std::vector<Point2<double>>& points) const {
-  const int vertices = static_cast<int>(domain_.vertices().size());
-  if (std::count_if(t.begin(), t.end(), [&](int k) { return k >= vertices; }) < 2) return false;
+  // Two of the sites must be split sites (sites 0 … V − 1 are X's vertices, which lie inside no
+  // segment): a filter, the test below says the same.
   const auto& at = domain_.vertices();
+  const int vertices = static_cast<int>(at.size());
+  if (std::count_if(t.begin(), t.end(), [&](int k) { return k >= vertices; }) < 2) return false;
   const Rational within(1, 1024);
   for (const Apex& apex : apexes_) {
     const Point2<double>& pc = at[static_cast<std::size_t>(apex.c)];
@@ -89,7 +91,7 @@ bool CornerShells::exempt(const std::array<int, 3>& t, const std::vector<Point2<
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
           const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>(j)];
-          if (i == j || a < vertices || b < vertices) continue;
+          if (i == j) continue;
           const Point2<double>&p = points[static_cast<std::size_t>(a)], &q = points[static_cast<std::size_t>(b)],
                                &r = points[static_cast<std::size_t>(t[static_cast<std::size_t>(3 - i - j)])];
           if (!inside_segment(pc, at[static_cast<std::size_t>(u)], p) || !inside_segment(pc, at[static_cast<std::size_t>(w)], q)) continue;

@@ -29,7 +29,7 @@ namespace anisocert::refiners::common {
 
 class CornerShells {
  public:
-  // metrics[k]: the metric of X's vertex k, which is site k of the refiner.
+  // metrics[k]: the metric of X's vertex k, which is site k of the refiner. Keeps a reference to domain.
   CornerShells(const Domain& domain, std::vector<predicates::Sym2<double>> metrics);
 
   bool sharp(int k) const { return k >= 0 && k < static_cast<int>(sharp_.size()) && sharp_[static_cast<std::size_t>(k)]; }
