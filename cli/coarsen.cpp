@@ -4,6 +4,7 @@
 #include "cli/output.hpp"
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <set>
 #include <utility>
@@ -14,16 +15,33 @@ namespace {
 
 using geometry::Mesh;
 
-// m without the sites `gone`, judged (dual_trial.hpp), the oracle's named failures as sites of m.
-Trial without(const Mesh<double>& m, const std::vector<int>& gone, std::size_t& diagrams) {
+// A removal: site v goes; with w ≥ 0 (an edge collapse), w moves to the midpoint of vw.
+struct Removal {
+  int v, w;
+};
+
+// m without the removed sites (and the collapsed ones moved), judged (dual_trial.hpp), the oracle's
+// named failures as sites of m.
+Trial without(const Mesh<double>& m, const std::vector<Removal>& gone, const fields::MetricField& field, std::size_t& diagrams) {
   Mesh<double> rest;
   std::vector<int> index(m.sites.size(), 0), origin;
-  for (int g : gone) index[static_cast<std::size_t>(g)] = -1;
+  std::vector<int> to(m.sites.size(), -1);
+  for (const Removal& g : gone) {
+    index[static_cast<std::size_t>(g.v)] = -1;
+    if (g.w >= 0) to[static_cast<std::size_t>(g.w)] = g.v;
+  }
   for (std::size_t k = 0; k < m.sites.size(); ++k)
     if (index[k] == 0) {
       index[k] = static_cast<int>(origin.size());
       origin.push_back(static_cast<int>(k));
-      rest.sites.push_back(m.sites[k]), rest.metrics.push_back(m.metrics[k]);
+      if (to[k] < 0) {
+        rest.sites.push_back(m.sites[k]), rest.metrics.push_back(m.metrics[k]);
+      } else {
+        const auto& a = m.sites[k];
+        const auto& b = m.sites[static_cast<std::size_t>(to[k])];
+        const predicates::Point2<double> mid{a.x / 2 + b.x / 2, a.y / 2 + b.y / 2};
+        rest.sites.push_back(mid), rest.metrics.push_back(field.at(mid.x, mid.y));
+      }
     }
   rest.domain = m.domain;
   for (const auto& [a, b] : m.segments) rest.segments.push_back({index[static_cast<std::size_t>(a)], index[static_cast<std::size_t>(b)]});
@@ -36,7 +54,7 @@ Trial without(const Mesh<double>& m, const std::vector<int>& gone, std::size_t& 
 
 }  // namespace
 
-Coarsened coarsen(const Mesh<double>& m, bool quiet) {
+Coarsened coarsen(const Mesh<double>& m, const fields::MetricField& field, bool collapse, bool quiet) {
   Coarsened c{m, 0, 0};
   const auto progress = progress_printer(quiet);
   std::vector<int> origin(m.sites.size());  // each current site's index in m
@@ -45,35 +63,44 @@ Coarsened coarsen(const Mesh<double>& m, bool quiet) {
   // the vertices on segments, never removed.
   constexpr int tries = 3;
   std::vector<int> refused(m.sites.size(), 0);
-  for (const auto& [a, b] : m.segments) refused[static_cast<std::size_t>(a)] = refused[static_cast<std::size_t>(b)] = tries;
+  std::vector<char> fixed(m.sites.size(), 0);  // on a segment: never removed nor moved
+  for (const auto& [a, b] : m.segments) {
+    refused[static_cast<std::size_t>(a)] = refused[static_cast<std::size_t>(b)] = tries;
+    fixed[static_cast<std::size_t>(a)] = fixed[static_cast<std::size_t>(b)] = 1;
+  }
   double share = edge_measures(m).unit_share;
   for (int round = 1;; ++round) {
     const Mesh<double>& cur = c.mesh;
     const auto n = neighbours(cur);
-    std::vector<std::pair<double, int>> candidates;  // (shortest mean length, site)
+    std::vector<std::tuple<double, int, int>> candidates;  // (shortest mean length, site, its nearest neighbour)
     for (std::size_t v = 0; v < n.size(); ++v) {
       if (refused[static_cast<std::size_t>(origin[v])] >= tries || n[v].empty()) continue;
       double shortest = INFINITY, longest = 0;
+      int nearest = -1;
       for (int w : n[v]) {
         const double l = mean_length(cur, static_cast<int>(v), w);
-        shortest = std::min(shortest, l), longest = std::max(longest, l);
+        if (l < shortest) shortest = l, nearest = w;
+        longest = std::max(longest, l);
       }
-      if (shortest < std::sqrt(0.5) && longest <= std::sqrt(2.0)) candidates.push_back({shortest, static_cast<int>(v)});
+      if (shortest < std::sqrt(0.5) && longest <= std::sqrt(2.0)) candidates.push_back({shortest, static_cast<int>(v), nearest});
     }
     std::sort(candidates.begin(), candidates.end());
     std::vector<char> blocked(n.size(), 0);
-    std::vector<int> batch;
-    for (const auto& [l, v] : candidates) {
+    std::vector<Removal> batch;
+    for (const auto& [l, v, nearest] : candidates) {
       if (blocked[static_cast<std::size_t>(v)]) continue;
-      batch.push_back(v);
+      const bool moves = collapse && !fixed[static_cast<std::size_t>(origin[static_cast<std::size_t>(nearest)])] && !blocked[static_cast<std::size_t>(nearest)];
+      batch.push_back({v, moves ? nearest : -1});
       blocked[static_cast<std::size_t>(v)] = 1;
       for (int w : n[static_cast<std::size_t>(v)]) blocked[static_cast<std::size_t>(w)] = 1;
+      if (moves)
+        for (int w : n[static_cast<std::size_t>(nearest)]) blocked[static_cast<std::size_t>(w)] = 1;
     }
     if (batch.empty()) break;
-    const std::vector<int> tried = batch;
+    const std::vector<Removal> tried = batch;
     std::size_t kept = 0;
     auto kept_batch = keep_certified(
-        batch, n, [](int v) { return v; }, [&](const std::vector<int>& gone) { return without(cur, gone, c.diagrams); },
+        batch, n, [](const Removal& r) { return r.v; }, [&](const std::vector<Removal>& gone) { return without(cur, gone, field, c.diagrams); },
         [&](const Trial& t) {
           const double s = edge_measures(t.mesh).unit_share;
           return s > share ? (share = s, true) : false;  // kept only when better, so `share` is the kept mesh's
@@ -81,8 +108,9 @@ Coarsened coarsen(const Mesh<double>& m, bool quiet) {
         [&](int v) { ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])]; });
     if (kept_batch) {
       kept = kept_batch->batch.size(), c.removed += kept;
+      for (const Removal& r : kept_batch->batch) c.collapsed += r.w >= 0;
       std::vector<char> gone(origin.size(), 0);
-      for (int v : kept_batch->batch) gone[static_cast<std::size_t>(v)] = 1;
+      for (const Removal& r : kept_batch->batch) gone[static_cast<std::size_t>(r.v)] = 1;
       std::vector<int> next;
       for (std::size_t k = 0; k < origin.size(); ++k)
         if (!gone[k]) next.push_back(origin[k]);
@@ -93,7 +121,7 @@ Coarsened coarsen(const Mesh<double>& m, bool quiet) {
       progress("refine --coarsen: round " + std::to_string(round) + ": " + std::to_string(kept) + " of " + std::to_string(tried.size()) +
                " vertices removed (" + std::to_string(c.removed) + " in all, " + std::to_string(c.diagrams) + " exact diagrams)");
     if (kept == 0)  // every round removes vertices or counts a refusal of each it tried, so coarsening ends
-      for (int v : tried) ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])];
+      for (const Removal& r : tried) ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(r.v)])];
   }
   return c;
 }

@@ -48,7 +48,7 @@ struct RefineOptions {
   CLI::Option* field_option = nullptr;
   CLI::Option* domain_option = nullptr;
   MeshInput from;  // --from MESH: its path, format, metric file (refine_from.hpp)
-  bool exact_sites = false, coarsen = false, relocate = false;
+  bool exact_sites = false, coarsen = false, collapse = false, relocate = false;
   int threads = 0;
   std::vector<std::string> params;
   std::map<std::string, double> values;            // every refiner parameter's default
@@ -252,12 +252,12 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
   // --coarsen and --relocate, in turn while a turn changes the mesh (at most 4 turns): a move can
   // make a removal certifiable, and a removal leaves room to move. A stopped run is neither (said).
   geometry::Mesh<double> m = run.result.mesh;
-  std::size_t removed = 0, coarsen_diagrams = 0, moves = 0, relocate_diagrams = 0;
+  std::size_t removed = 0, collapsed = 0, coarsen_diagrams = 0, moves = 0, relocate_diagrams = 0;
   for (int turn = 0; turn < 4 && run.result.consistent && (o.coarsen || o.relocate); ++turn) {
     const std::size_t removed_before = removed, moves_before = moves;
     if (o.coarsen) {
-      Coarsened c = coarsen(m, o.quiet);
-      removed += c.removed, coarsen_diagrams += c.diagrams, m = std::move(c.mesh);
+      Coarsened c = coarsen(m, start.field, o.collapse, o.quiet);
+      removed += c.removed, collapsed += c.collapsed, coarsen_diagrams += c.diagrams, m = std::move(c.mesh);
     }
     if (o.relocate) {
       Relocated r = relocate(m, start.field, o.quiet);
@@ -278,8 +278,9 @@ int run_refine_from(const RefineOptions& o, const refiners::RefinerEntry& entry,
                      std::to_string(start.boundary_vertices) + " on the boundary, " + std::to_string(start.rounded) +
                      " rounded to the nearest doubles), " + std::to_string(start.interior_segments) + " interior segments; metric " +
                      start.metric_source + "\n" + report_text(run) + (o.coarsen && !run.result.consistent ? "  not coarsened: the refiner stopped early\n"
-                     : o.coarsen ? "  coarsened: " + std::to_string(removed) + " vertices removed, each kept out only when the oracle certified the rest (" +
-                                      std::to_string(coarsen_diagrams) + " exact diagrams)\n"
+                     : o.coarsen ? "  coarsened: " + std::to_string(removed) + " vertices removed" +
+                                      (o.collapse ? " (" + std::to_string(collapsed) + " by an edge collapse: the edge's other end moved to its midpoint)" : "") +
+                                      ", each kept out only when the oracle certified the rest (" + std::to_string(coarsen_diagrams) + " exact diagrams)\n"
                                 : "") +
                      (o.relocate && !run.result.consistent ? "  not relocated: the refiner stopped early\n"
                       : o.relocate ? "  relocated: " + std::to_string(moves) + " moves of a vertex, each kept only when the oracle certified the moved vertices (" +
@@ -319,8 +320,9 @@ int run_refine(const RefineOptions& o) {
   }
   check_outputs({o.output, o.svg, o.json});
   if (o.from.path.empty() && (!o.from.metric.empty() || !o.from.format.empty() || !o.from.metric_format.empty() || o.exact_sites || o.coarsen ||
-                              o.relocate))
-    throw UsageError("--metric, --from-format, --metric-format, --exact-sites, --coarsen and --relocate go with --from MESH");
+                              o.collapse || o.relocate))
+    throw UsageError("--metric, --from-format, --metric-format, --exact-sites, --coarsen, --collapse and --relocate go with --from MESH");
+  if (o.collapse && !o.coarsen) throw UsageError("--collapse: it says how --coarsen removes vertices; give --coarsen too");
   if (!o.from.path.empty()) {
     if (!o.json.empty()) throw UsageError("--json: the certificate of a 3D run (a 2D run's mesh is certified by anisocert certify --json)");
     return run_refine_from(o, *entry, values, budget, format);
@@ -440,6 +442,9 @@ void add_refine(CLI::App& app, int& exit_code) {
   c->add_flag("--coarsen", o->coarsen,
               "--from: then remove vertices where that brings edges nearer unit length, each removal kept only when the oracle\n"
               "certifies the rest (the dual of the exact D|Ω of the remaining vertices is a triangulation; --algo " + refiners_where(true) + ")");
+  c->add_flag("--collapse", o->collapse,
+              "--from --coarsen: remove a vertex by collapsing its shortest edge, the other end moved to the edge's midpoint in the\n"
+              "same trial, when that end is free to move (more removals are certified)");
   c->add_flag("--relocate", o->relocate,
               "--from: then move interior vertices toward unit edges (with --coarsen, the two in turn), each move kept only\n"
               "when the oracle certifies the moved vertices (the dual of their exact D|Ω is a triangulation; --algo " + refiners_where(true) + ")");

@@ -273,8 +273,8 @@ class BwyRefinement : public common::VoronoiRefinement {
       default: return false;
     }
   }
-  // Rule 3 leaves alone a triangle that a sharp corner of Ω makes skinny (corner_shells.hpp: the
-  // small-angle exemption); the report counts those left badly shaped.
+  // Rule 3 leaves alone a triangle across a small input angle (corner_shells.hpp); the report
+  // counts those left badly shaped.
   bool exempt(int q) const { return corners_->exempt(diagram_.vertices()[static_cast<std::size_t>(q)].sites, sites_.points); }
   // Rule 3: r(v)² > B² δ(t_v)², i.e. r(v)² > B² d_p(p, q)² for one of the triangle's edges pq and one
   // of its ends p (δ is the least of these six lengths).

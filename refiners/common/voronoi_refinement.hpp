@@ -45,7 +45,7 @@ struct VoronoiRules {
   int split_instead;  // a subsegment split instead of inserting a point that would encroach it
   int unresolved;     // a site where the diagram is unresolved
   int island;         // a site on the bisector of a site whose cell holds no Voronoi vertex
-  int corner_shell;   // a sharp corner's first shell (CornerShells::first), before any other split
+  int corner_shell;   // an apex's first shell (CornerShells::first), before any other split
   std::vector<common::RuleName> by_priority;
   std::string name(int rule) const;
 };
@@ -131,7 +131,7 @@ class VoronoiRefinement {
   std::pair<Point2<double>, double> rounded_vertex(int q) const;
   // A rational point rounded to doubles, within an ulp per coordinate, with its displacement.
   static std::pair<Point2<double>, double> rounded(const Point2<Rational>& c);
-  // Ω's sharp corners (corner_shells.hpp), known once the corners are sites (start); the first
+  // The apexes of small angles (corner_shells.hpp), known once X's vertices are sites (start); the first
   // shells still to split, one a step before any encroached subsegment (split_encroached).
   std::optional<CornerShells> corners_;
   std::deque<CornerShells::Shell> lopping_;

@@ -137,8 +137,8 @@ class LsRefinement {
 
   // Rule 3 or 4 for the Voronoi vertex dual to triangle t, or none (a vertex outside closed Ω is
   // no violator: LS §9 "q ∈ Ω"). The filtered predicates and boxes decide; rationals when they
-  // cannot. Rule 3 leaves alone a triangle that a sharp corner of Ω makes skinny (corner_shells.hpp:
-  // the small-angle exemption), and says so in `exempted` when the vertex is in Ω.
+  // cannot. Rule 3 leaves alone a triangle across a small input angle (corner_shells.hpp), and says
+  // so in `exempted` when the vertex is in Ω.
   Rule violation(int t, bool* exempted = nullptr) const {
     if (!diagram_.real(t)) return Rule::none;
     const auto& v = diagram_.triangle(t).v;
@@ -224,7 +224,7 @@ class LsRefinement {
 
   // LS §9: s is split in one of the cells `in`, the one nearest its midpoint (one that meets s in
   // more than a point when there is one), as near the midpoint as a double exactly on s allows; at
-  // a sharp corner, its shell instead of the midpoint (corner_shells.hpp).
+  // the apex of a small angle, its shell instead of the midpoint (corner_shells.hpp).
   // cause: rule 1, or the rule of the violator whose site would encroach s (the split is rule 2's).
   void split(int s, const std::vector<CellOnSegment>& in, Rule cause) {
     const auto [a, b] = subsegments_.ends(s);

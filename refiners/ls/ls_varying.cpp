@@ -112,8 +112,8 @@ class LsVaryingRefinement : public VoronoiRefinement {
 
  private:
   // Rules 5, 3, 4 at vertex q, or none (a vertex outside closed Ω is no violator: LS §9 "q ∈ Ω").
-  // Sets stalled_ when a decision is undecided. Rule 3 leaves alone a triangle that a sharp corner
-  // of Ω makes skinny (corner_shells.hpp: the small-angle exemption), and says so in `exempted`.
+  // Sets stalled_ when a decision is undecided. Rule 3 leaves alone a triangle across a small input
+  // angle (corner_shells.hpp), and says so in `exempted`.
   Rule violation(int q, bool* exempted = nullptr) {
     const auto& v = diagram_.vertices()[static_cast<std::size_t>(q)];
     const CertifiedPoint P = point(q);
