@@ -84,6 +84,31 @@ std::array<std::size_t, 3> counts(const std::string& report) {
   return {std::stoul(m[1]), std::stoul(m[2]), std::stoul(m[3])};
 }
 
+// FreeFem's coarse L-shape refined (`before`) and then changed by a post-pass (`after`): the sites
+// of `after` that are not `before`'s lie strictly inside the L-shape (0 < x, y < 1, not in
+// [1/2, 1]²), and there are some; every vertex of `before` on ∂Ω (BWY's boundary splits too) is in
+// `after`; each site of `after` has the field's metric at its place (`metric --at`, a second
+// command, evaluates the field there).
+void expect_moves_inside_with_the_fields_metric(const fs::path& d, const std::string& before_mesh, const std::string& after_mesh) {
+  const auto before = sites_of(before_mesh), after = sites_of(after_mesh);
+  std::size_t moved = 0;
+  for (const auto& [x, y] : after)
+    if (!before.count({x, y})) {
+      ++moved;
+      EXPECT_TRUE(x > 0 && y > 0 && x < 1 && y < 1 && !(x >= 0.5 && y >= 0.5)) << x << ", " << y;
+    }
+  EXPECT_GT(moved, 0u);
+  for (const auto& [x, y] : before)
+    if (x == 0 || y == 0 || x == 1 || y == 1 || (x == 0.5 && y >= 0.5) || (y == 0.5 && x >= 0.5)) {
+      EXPECT_TRUE(after.count({x, y})) << x << ", " << y;
+    }
+  const std::string field_mesh = (d / "field.json").string();
+  ASSERT_EQ(run("metric --field shock --param h=0.1 --at " + after_mesh + " -o " + field_mesh).exit_code, 0);
+  const auto ours = nlohmann::json::parse(read(after_mesh))["sites"], field = nlohmann::json::parse(read(field_mesh))["sites"];
+  ASSERT_EQ(ours.size(), field.size());
+  for (std::size_t k = 0; k < ours.size(); ++k) EXPECT_EQ(ours[k]["metric"], field[k]["metric"]) << "site " << k;
+}
+
 TEST(RefineFrom, FreeFemsLShapeBecomesACertifiedDualKeepingEveryVertex) {
   const fs::path d = fresh("freefem");
   const Outcome r = run("refine --quiet --algo bwy --from " + freefem_l + shock_coarse + " -o " + (d / "out.json").string());
@@ -145,7 +170,9 @@ TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
     EXPECT_TRUE(std::regex_search(report, s, std::regex("after: .*unit edges ([0-9.]+)%"))) << report;
     return s.size() > 1 ? std::stod(s[1]) : 0.0;
   };
-  const Outcome plain = run("refine --quiet --algo bwy --from " + freefem_l + shock_coarse);
+  const std::string plain_mesh = (d / "plain.json").string();
+  const Outcome plain = run("refine --quiet --algo bwy --from " + freefem_l + shock_coarse + " -o " + plain_mesh);
+  ASSERT_EQ(plain.exit_code, 0) << plain.out << plain.err;
   EXPECT_GT(share(r.out), share(plain.out)) << r.out << plain.out;
 
   // --collapse: a removal may move the other end of the vertex's shortest edge to the edge's
@@ -153,7 +180,7 @@ TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
   // deterministic; a collapse that never moved, or moved a vertex the oracle then refused, fails
   // it); `dual` certifies the file; ∂Ω's vertices stay; the sites that are not the plain run's lie
   // strictly inside the L-shape, each with the field's metric there (`metric --at`).
-  const std::string collapsed_mesh = (d / "collapsed.json").string(), plain_mesh = (d / "plain.json").string();
+  const std::string collapsed_mesh = (d / "collapsed.json").string();
   const Outcome c = run("refine --quiet --algo bwy --coarsen --collapse --from " + freefem_l + shock_coarse + " -o " + collapsed_mesh);
   ASSERT_EQ(c.exit_code, 0) << c.out << c.err;
   EXPECT_EQ(run("dual --quiet " + collapsed_mesh).exit_code, 0);
@@ -161,24 +188,7 @@ TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
   EXPECT_EQ(std::stoul(m[1]), counts(c.out)[2]);
   EXPECT_GT(std::stoul(m[1]), removed) << c.out << r.out;
   EXPECT_GT(std::stoul(m[2]), 0u) << c.out;
-  ASSERT_EQ(run("refine --quiet --algo bwy --from " + freefem_l + shock_coarse + " -o " + plain_mesh).exit_code, 0);
-  const auto uncoarsened = sites_of(plain_mesh), collapsed = sites_of(collapsed_mesh);
-  std::size_t moved = 0;
-  for (const auto& [x, y] : collapsed)
-    if (!uncoarsened.count({x, y})) {
-      ++moved;
-      EXPECT_TRUE(x > 0 && y > 0 && x < 1 && y < 1 && !(x >= 0.5 && y >= 0.5)) << x << ", " << y;
-    }
-  EXPECT_GT(moved, 0u);
-  for (const auto& [x, y] : uncoarsened)
-    if (x == 0 || y == 0 || x == 1 || y == 1 || (x == 0.5 && y >= 0.5) || (y == 0.5 && x >= 0.5)) {
-      EXPECT_TRUE(collapsed.count({x, y})) << x << ", " << y;
-    }
-  const std::string field_mesh = (d / "field.json").string();
-  ASSERT_EQ(run("metric --field shock --param h=0.1 --at " + collapsed_mesh + " -o " + field_mesh).exit_code, 0);
-  const auto ours = nlohmann::json::parse(read(collapsed_mesh))["sites"], field = nlohmann::json::parse(read(field_mesh))["sites"];
-  ASSERT_EQ(ours.size(), field.size());
-  for (std::size_t k = 0; k < ours.size(); ++k) EXPECT_EQ(ours[k]["metric"], field[k]["metric"]) << "site " << k;
+  expect_moves_inside_with_the_fields_metric(d, plain_mesh, collapsed_mesh);
 }
 
 // --relocate moves interior vertices only, never adds or removes one, and keeps the certificate:
@@ -198,26 +208,9 @@ TEST(RefineFrom, RelocateMovesInteriorVerticesOnlyAndKeepsTheCertificate) {
   std::smatch m;
   ASSERT_TRUE(std::regex_search(r.out, m, std::regex("relocated: ([0-9]+) moves of a vertex"))) << r.out;
   EXPECT_GT(std::stoul(m[1]), 0u) << r.out;
-  // The same number of sites as the run it moved; the ones that moved lie strictly inside the
-  // L-shape (0 < x, y < 1, not in [1/2, 1]²), and every vertex on ∂Ω stayed.
-  const auto before = sites_of(plain_mesh), after = sites_of(moved_mesh);
-  EXPECT_EQ(after.size(), before.size());
-  std::size_t moved = 0;
-  for (const auto& [x, y] : after)
-    if (!before.count({x, y})) {
-      ++moved;
-      EXPECT_TRUE(x > 0 && y > 0 && x < 1 && y < 1 && !(x >= 0.5 && y >= 0.5)) << x << ", " << y;
-    }
-  EXPECT_GT(moved, 0u);
-  for (const auto& [x, y] : before)  // BWY's boundary splits too
-    if (x == 0 || y == 0 || x == 1 || y == 1 || (x == 0.5 && y >= 0.5) || (y == 0.5 && x >= 0.5)) {
-      EXPECT_TRUE(after.count({x, y})) << x << ", " << y;
-    }
-  const std::string field_mesh = (d / "field.json").string();
-  ASSERT_EQ(run("metric --field shock --param h=0.1 --at " + moved_mesh + " -o " + field_mesh).exit_code, 0);
-  const auto ours = nlohmann::json::parse(read(moved_mesh))["sites"], field = nlohmann::json::parse(read(field_mesh))["sites"];
-  ASSERT_EQ(ours.size(), field.size());
-  for (std::size_t k = 0; k < ours.size(); ++k) EXPECT_EQ(ours[k]["metric"], field[k]["metric"]) << "site " << k;
+  // The same number of sites as the run it moved.
+  EXPECT_EQ(sites_of(moved_mesh).size(), sites_of(plain_mesh).size());
+  expect_moves_inside_with_the_fields_metric(d, plain_mesh, moved_mesh);
   const auto share = [](const std::string& report) {
     std::smatch s;
     EXPECT_TRUE(std::regex_search(report, s, std::regex("after: .*unit edges ([0-9.]+)%"))) << report;
