@@ -4,9 +4,9 @@
 #include "cli/output.hpp"
 
 #include <algorithm>
-#include <tuple>
 #include <cmath>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 

@@ -1,6 +1,7 @@
 #include "refiners/common/corner_shells.hpp"
 
 #include "predicates/orientation.hpp"
+#include "refiners/common/segment_cells.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +48,7 @@ CornerShells::CornerShells(const Domain& domain, std::vector<predicates::Sym2<do
     sharp_[c] = 1;
     apexes_.push_back(std::move(apex));
   }
+  for (const Shell& sh : first()) lopping_.push_back(sh);
 }
 
 double CornerShells::distance(int c, const Point2<double>& p) const {
@@ -75,6 +77,29 @@ std::vector<CornerShells::Shell> CornerShells::first() const {
       if (const double L = distance(apex.c, at[static_cast<std::size_t>(o)]); d > 0 && d < L) out.push_back({apex.c, o, d / L});
   }
   return out;
+}
+
+std::optional<CornerShells::Split> CornerShells::next_first_shell(const Subsegments& subsegments, const std::vector<Point2<double>>& points) {
+  while (!lopping_.empty()) {
+    const Shell sh = lopping_.front();
+    lopping_.pop_front();
+    const auto s = subsegments.find(sh.c, sh.o);
+    if (!s) continue;  // split already, or no segment
+    const auto [a, b] = subsegments.ends(*s);
+    const auto z = coarse_split_point(points[static_cast<std::size_t>(a)], points[static_cast<std::size_t>(b)], Rational(0), Rational(1),
+                                      Rational(a == sh.c ? sh.t : 1 - sh.t), slack());
+    if (z) return Split{*s, *z};
+  }
+  return std::nullopt;
+}
+
+std::optional<Point2<double>> CornerShells::shell_point(const Subsegments& subsegments, int s, const std::vector<Point2<double>>& points) const {
+  const auto [a, b] = subsegments.ends(s);
+  const std::optional<double> t = parameter(a, b, points);
+  if (!t) return std::nullopt;
+  const auto [c0, c1] = subsegments.edge_ends(domain_, s);
+  const Rational ua = edge_parameter(c0, c1, points[static_cast<std::size_t>(a)]), L = edge_parameter(c0, c1, points[static_cast<std::size_t>(b)]) - ua;
+  return coarse_split_point(c0, c1, std::min(ua, ua + L), std::max(ua, ua + L), ua + Rational(*t) * L, abs(L) * slack());
 }
 
 bool CornerShells::exempt(const std::array<int, 3>& t, const std::vector<Point2<double>>& points) const {

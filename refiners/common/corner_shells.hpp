@@ -20,8 +20,10 @@
 // LS (on Del_M and on the true diagram) and BWY use them. Which vertices are apexes and where a
 // shell lies are choices in doubles; the exemption is decided exactly.
 #include "refiners/common/domain.hpp"
+#include "refiners/common/subsegments.hpp"
 
 #include <array>
+#include <deque>
 #include <optional>
 #include <vector>
 
@@ -43,6 +45,20 @@ class CornerShells {
     double t;
   };
   std::vector<Shell> first() const;
+  // The next first shell still to split, in first()'s order: its subsegment and its point, within
+  // slack() of the subsegment of the shell, the coarsest double of its grid (coarse_split_point).
+  // A shell whose subsegment is split already, or holds no such double, is passed over; nothing
+  // when none is left.
+  struct Split {
+    int s;
+    Point2<double> z;
+  };
+  std::optional<Split> next_first_shell(const Subsegments& subsegments, const std::vector<Point2<double>>& points);
+  // The point of a split of subsegment s on its shell, when one end is an apex (parameter()):
+  // within slack() of the subsegment of the shell, the coarsest double of its segment's grid, in
+  // whichever cell it falls (so that later splits stay exact); nothing otherwise, or when the grid
+  // has no double there.
+  std::optional<Point2<double>> shell_point(const Subsegments& subsegments, int s, const std::vector<Point2<double>>& points) const;
   // How near its shell a split lies, as a share of the subsegment. Equal shells on two segments at
   // an angle θ in the metric keep clear of each other's subsegments by about θ²/2 of their distance
   // (3.4·10⁻³ at 4.8°: √(5/4 − cos θ) − ½); within 1/64, and moved into an encroacher's cell, the
@@ -67,6 +83,7 @@ class CornerShells {
   std::vector<predicates::Sym2<double>> metrics_;
   std::vector<char> sharp_;
   std::vector<Apex> apexes_;
+  std::deque<Shell> lopping_;  // the first shells still to split
 };
 
 }  // namespace anisocert::refiners::common

@@ -71,7 +71,6 @@ void VoronoiRefinement::start() {
     subsegments_.add(a, b, static_cast<int>(e));
   }
   corners_.emplace(domain_, std::vector(sites_.metrics.begin(), sites_.metrics.begin() + static_cast<std::ptrdiff_t>(domain_.vertices().size())));
-  for (const CornerShells::Shell& sh : corners_->first()) lopping_.push_back(sh);
 }
 
 bool VoronoiRefinement::split_encroached() {
@@ -261,24 +260,14 @@ std::vector<int> VoronoiRefinement::encroachers(int s) const {
 }
 
 bool VoronoiRefinement::split_corner_shell() {
-  while (!lopping_.empty()) {
-    const CornerShells::Shell sh = lopping_.front();
-    lopping_.pop_front();
-    const auto s = subsegments_.find(sh.c, sh.o);
-    if (!s) continue;  // split already, or no segment
-    const auto [a, b] = subsegments_.ends(*s);
-    const Rational t(a == sh.c ? sh.t : 1 - sh.t);
-    const Point2<double>&pa = sites_.points[static_cast<std::size_t>(a)], &pb = sites_.points[static_cast<std::size_t>(b)];
-    const auto z = coarse_split_point(pa, pb, Rational(0), Rational(1), t, CornerShells::slack());
-    if (!z) continue;
-    const MetricSite Z{*z, sites_.field.at(z->x, z->y)};
-    const int k = insert(Z, rules_.corner_shell, 0, 0, 0);
-    if (k < 0) return true;
-    queue_reached(k, Z);
-    subsegments_.split(*s, k);
-    return true;
-  }
-  return false;
+  const auto sh = corners_->next_first_shell(subsegments_, sites_.points);
+  if (!sh) return false;
+  const MetricSite Z{sh->z, sites_.field.at(sh->z.x, sh->z.y)};
+  const int k = insert(Z, rules_.corner_shell, 0, 0, 0);
+  if (k < 0) return true;
+  queue_reached(k, Z);
+  subsegments_.split(sh->s, k);
+  return true;
 }
 
 // LS §9: s is split at a point z in the closed cell of one of `in` among `near` (every site that
@@ -308,7 +297,7 @@ void VoronoiRefinement::split(int s, const std::vector<MetricSite>& in, const st
     const Rational e0 = ua + lo * L, e1 = ua + hi * L;
     return coarse_split_point(c0, c1, std::min(e0, e1), std::max(e0, e1), ua + target * L, within * abs(L));
   };
-  std::optional<Point2<double>> z = on_edge(0, 1, Rational(tm), slack);
+  std::optional<Point2<double>> z = shell ? corners_->shell_point(subsegments_, s, sites_.points) : on_edge(0, 1, Rational(tm), slack);
   // A shell's split stays on its shell, in whichever cell it falls (Ruppert's modified segment
   // splitting). LS §9 asks for an encroacher's cell for Theorem 11's insertion radii, which a sharp
   // corner voids anyway; moved off its shell into that cell, the two edges' shells drift apart

@@ -131,10 +131,9 @@ class VoronoiRefinement {
   std::pair<Point2<double>, double> rounded_vertex(int q) const;
   // A rational point rounded to doubles, within an ulp per coordinate, with its displacement.
   static std::pair<Point2<double>, double> rounded(const Point2<Rational>& c);
-  // The apexes of small angles (corner_shells.hpp), known once X's vertices are sites (start); the first
-  // shells still to split, one a step before any encroached subsegment (split_encroached).
+  // The apexes of small angles (corner_shells.hpp), known once X's vertices are sites (start); their
+  // first shells are split one a step before any encroached subsegment (split_encroached).
   std::optional<CornerShells> corners_;
-  std::deque<CornerShells::Shell> lopping_;
   bool split_corner_shell();
   // Every site that can be nearest somewhere on subsegment s.
   std::vector<common::MetricSite> near(int s) const;

@@ -67,7 +67,6 @@ class LsRefinement {
     }
     for (std::size_t t = 0; t < diagram_.slots(); ++t)
       if (diagram_.triangle(static_cast<int>(t)).alive) queue_if_violator(static_cast<int>(t));
-    for (const common::CornerShells::Shell& sh : corners_.first()) lopping_.push_back(sh);
   }
 
   std::size_t vertices() const { return sites_.size(); }
@@ -237,15 +236,9 @@ class LsRefinement {
     const CellOnSegment* best = &in.front();
     for (const CellOnSegment& c : in)
       if (better(c, *best)) best = &c;
-    std::optional<Point2<double>> z;
-    // A shell's split: near the shell (CornerShells::slack), in whichever cell it falls, the coarsest
-    // point of the edge's grid, so that later splits stay exact (voronoi_refinement.cpp's split says
-    // why not in an encroacher's cell).
-    if (shell) {
-      const auto [c0, c1] = subsegments_.edge_ends(domain_, s);
-      const Rational ua = common::edge_parameter(c0, c1, sites_.points[a]), L = common::edge_parameter(c0, c1, sites_.points[b]) - ua;
-      z = common::coarse_split_point(c0, c1, std::min(ua, ua + L), std::max(ua, ua + L), ua + target * L, abs(L) * common::CornerShells::slack());
-    }
+    // A shell's split lies on its shell in whichever cell it falls (voronoi_refinement.cpp's split
+    // says why not in an encroacher's cell).
+    std::optional<Point2<double>> z = corners_.shell_point(subsegments_, s, sites_.points);
     if (!z) z = split_point(sites_.points[a], sites_.points[b], best->lo, best->hi, target);
     if (!z) {
       stalled_ = "subsegment " + point_text(sites_.points[a]) + " – " + point_text(sites_.points[b]) +
@@ -263,23 +256,15 @@ class LsRefinement {
 
   // The corner lopping (corner_shells.hpp), one shell a step before any encroached subsegment.
   bool split_corner_shell() {
-    while (!lopping_.empty()) {
-      const common::CornerShells::Shell sh = lopping_.front();
-      lopping_.pop_front();
-      const auto s = subsegments_.find(sh.c, sh.o);
-      if (!s) continue;  // split already, or no segment
-      const auto [a, b] = subsegments_.ends(*s);
-      const auto z = common::coarse_split_point(sites_.points[a], sites_.points[b], Rational(0), Rational(1), Rational(a == sh.c ? sh.t : 1 - sh.t),
-                                                common::CornerShells::slack());
-      if (!z) continue;
-      const int k = insert(*z, Rule::corner_shell, 0);
-      if (k < 0) return true;
-      const int kb = subsegments_.split(*s, k);
-      boxes_.set(*s, near_segment(sites_.points[a], sites_.points[k], metric_), sites_.grid);
-      boxes_.set(kb, near_segment(sites_.points[k], sites_.points[b], metric_), sites_.grid);
-      return true;
-    }
-    return false;
+    const auto sh = corners_.next_first_shell(subsegments_, sites_.points);
+    if (!sh) return false;
+    const auto [a, b] = subsegments_.ends(sh->s);
+    const int k = insert(sh->z, Rule::corner_shell, 0);
+    if (k < 0) return true;
+    const int kb = subsegments_.split(sh->s, k);
+    boxes_.set(sh->s, near_segment(sites_.points[a], sites_.points[k], metric_), sites_.grid);
+    boxes_.set(kb, near_segment(sites_.points[k], sites_.points[b], metric_), sites_.grid);
+    return true;
   }
 
   // Inserts q as a site; its index, or −1 when the run stalls.
@@ -306,7 +291,6 @@ class LsRefinement {
   Sym2<double> metric_;       // the diagram's (M′ with normalized_metric)
   Sym2<double> size_metric_;  // the field's, for the size rule
   common::CornerShells corners_;
-  std::deque<common::CornerShells::Shell> lopping_;  // the first shells still to split
   DelaunayInMetric diagram_;
   double s2_;
   Theorem11Conditions t11_;
