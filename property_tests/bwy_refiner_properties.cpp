@@ -115,7 +115,7 @@ RC_GTEST_PROP(BWY_R, FinishedRunsAreTheExactDualAndNoRuleApplies, ()) {
   for (const auto& n : d.nodes)
     if (n.kind == oracle::Node::Kind::voronoi && n.sites.size() == 3) RC_ASSERT(++owners[n.sites] == 1);
   const Rational B2 = Rational(p.shape_bound) * Rational(p.shape_bound), size2 = Rational(p.size) * Rational(p.size);
-  std::size_t exempt = 0;  // badly shaped at a sharp corner, which rule 3 leaves (corner_shells.hpp)
+  std::size_t exempt = 0;  // badly shaped across a small input angle, which rule 3 leaves (corner_shells.hpp)
   for (const auto& t : r.mesh.triangles) {
     const oracle::Node& n = node_of(d, t);
     bool bad = false;

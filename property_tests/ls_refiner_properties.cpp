@@ -556,7 +556,7 @@ RC_GTEST_PROP(LS_S9, FinishedRunsAreTheDualOfTheExactDiagram, ()) {
   const auto& M = m.metrics[0];
   const Rational s2 = gen::sin2_above(run.p.theta_bound), size2 = rational_from_double(run.p.size) * rational_from_double(run.p.size);
   const Rational det = M.m11 * M.m22 - M.m12 * M.m12;
-  std::size_t exempt = 0;  // below θ_bound at a sharp corner, which rule 3 leaves (corner_shells.hpp)
+  std::size_t exempt = 0;  // below θ_bound across a small input angle, which rule 3 leaves (corner_shells.hpp)
   for (const auto& t : r.mesh.triangles) {
     const auto &a = m.sites[t[0]], &b = m.sites[t[1]], &c = m.sites[t[2]];
     bool poor = false;

@@ -96,7 +96,7 @@ RC_GTEST_PROP(LS_S9, VaryingFieldRunsAreTheDualOfTheExactDiagram, ()) {
           RC_ASSERT(node.at.sign_of(oracle::shear_conic(beyond_size(m.sites[k], f.at(r.mesh.sites[k].x, r.mesh.sites[k].y), p.size),
                                                         -certified->diagram.shear)) != Sign::positive);
 
-  // Every angle is at least θ_bound, but in the triangles a sharp corner makes skinny, which rule 3
+  // Every angle is at least θ_bound, but in the triangles across a small input angle, which rule 3
   // leaves (corner_shells.hpp) and the run counts.
   const Rational s2 = gen::sin2_above(p.theta_bound);
   std::size_t exempt = 0;
