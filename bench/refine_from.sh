@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # refine --from (issue 41) side by side: from bamg's mesh of the default shock field (the issue's
 # headline case, made by scripts/validate) and FreeFem's kept L-shape (tests/peers/fixtures), each
-# with BWY, BWY --off-centres, BWY --coarsen, both, the two with --relocate, LS and star, and
+# with BWY, BWY --off-centres, BWY --coarsen, both, the two with --relocate, and with --collapse
+# too, LS and star, and
 # FreeFem's and bamg's meshes of the rotated constant metric (tests/peers/fixtures) with star, one
 # run each: wall time, vertices (×
 # the input's), the certifier's unit-edge share and smallest angle after, and the certificate:
@@ -36,7 +37,7 @@ for case in "bamg shock (default)|$work/bamg/mesh.msh|--field shock" \
             "freefem L-shape shock h=0.1|tests/peers/fixtures/freefem-lshape-shock-coarse.msh|--field shock --param h=0.1"; do
   IFS='|' read -r name mesh field <<<"$case"
   # shellcheck disable=SC2086
-  for algo in "--algo bwy" "--algo bwy --off-centres" "--algo bwy --coarsen" "--algo bwy --off-centres --coarsen" "--algo bwy --off-centres --coarsen --relocate" "--algo ls" "--algo star"; do row "$name" "$mesh" $field -- $algo; done
+  for algo in "--algo bwy" "--algo bwy --off-centres" "--algo bwy --coarsen" "--algo bwy --off-centres --coarsen" "--algo bwy --off-centres --coarsen --relocate" "--algo bwy --off-centres --coarsen --collapse --relocate" "--algo ls" "--algo star"; do row "$name" "$mesh" $field -- $algo; done
 done
 rotated="--field constant --param m11=1258.0800065610586 --param m12=-3181.7986679483697 --param m22=8841.9199934389417"
 for peer in freefem bamg; do

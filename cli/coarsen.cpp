@@ -85,27 +85,24 @@ Coarsened coarsen(const Mesh<double>& m, const fields::MetricField& field, bool 
       if (shortest < std::sqrt(0.5) && longest <= std::sqrt(2.0)) candidates.push_back({shortest, static_cast<int>(v), nearest});
     }
     std::sort(candidates.begin(), candidates.end());
-    std::vector<char> blocked(n.size(), 0);
+    DisjointNeighbourhoods apart(n);
     std::vector<Removal> batch;
-    for (const auto& [l, v, nearest] : candidates) {
-      if (blocked[static_cast<std::size_t>(v)]) continue;
-      const bool moves = collapse && !fixed[static_cast<std::size_t>(origin[static_cast<std::size_t>(nearest)])] && !blocked[static_cast<std::size_t>(nearest)];
-      batch.push_back({v, moves ? nearest : -1});
-      blocked[static_cast<std::size_t>(v)] = 1;
-      for (int w : n[static_cast<std::size_t>(v)]) blocked[static_cast<std::size_t>(w)] = 1;
-      if (moves)
-        for (int w : n[static_cast<std::size_t>(nearest)]) blocked[static_cast<std::size_t>(w)] = 1;
-    }
+    for (const auto& [l, v, nearest] : candidates)
+      if (collapse && !fixed[static_cast<std::size_t>(origin[static_cast<std::size_t>(nearest)])] && apart.admit({v, nearest}))
+        batch.push_back({v, nearest});
+      else if (apart.admit({v}))
+        batch.push_back({v, -1});
     if (batch.empty()) break;
     const std::vector<Removal> tried = batch;
     std::size_t kept = 0;
     auto kept_batch = keep_certified(
-        batch, n, [](const Removal& r) { return r.v; }, [&](const std::vector<Removal>& gone) { return without(cur, gone, field, c.diagrams); },
+        batch, n, [](const Removal& r) { return r.w >= 0 ? std::vector<int>{r.v, r.w} : std::vector<int>{r.v}; },
+        [&](const std::vector<Removal>& gone) { return without(cur, gone, field, c.diagrams); },
         [&](const Trial& t) {
           const double s = edge_measures(t.mesh).unit_share;
           return s > share ? (share = s, true) : false;  // kept only when better, so `share` is the kept mesh's
         },
-        [&](int v) { ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(v)])]; });
+        [&](const Removal& r) { ++refused[static_cast<std::size_t>(origin[static_cast<std::size_t>(r.v)])]; });
     if (kept_batch) {
       kept = kept_batch->batch.size(), c.removed += kept;
       for (const Removal& r : kept_batch->batch) c.collapsed += r.w >= 0;

@@ -6,19 +6,20 @@
 //
 // Where to remove is a choice in doubles (it never makes a verdict): an interior vertex (on no
 // segment) with an edge shorter than 1/√2 and none longer than √2 in the geometric mean of its
-// ends' lengths, shortest first; no two removed at once are neighbours. A round removes such a
-// set; the oracle then judges the remaining vertices: the removals next to the cells its check
-// names are put back, and the rest tried again; a round whose certified mesh has no larger share
+// ends' lengths, shortest first; the removals of a round have disjoint closed neighbourhoods
+// (DisjointNeighbourhoods, dual_trial.hpp). A round removes such a set; the oracle then judges the
+// remaining vertices: the removals next to the cells its check names are put back, and the rest
+// tried again; a round whose certified mesh has no larger share
 // of unit edges (both lengths in [1/√2, √2], in doubles) tries the better half. A vertex put back
 // three times is not tried again, so coarsening ends; it ends when a round removes nothing and no
 // vertex is left to try. Only a dual_of_diagram refiner's output is coarsened (its certificate is
 // the dual; a star refiner's, local uniformity, would need the stars rebuilt).
 //
 // With `--collapse` a removal is an edge collapse: the vertex's nearest neighbour (the other end of
-// its shortest edge), when it is on no segment and not next to another change of the round, moves
-// to the midpoint of their edge and takes the field's metric there, in the same trial. The dual
-// after a removal near BWY's rule 4 and 5 sites is often no triangulation; with the neighbour
-// moved into the gap it often is (FreeFem's coarse shock mesh: 346 removals instead of 190).
+// its shortest edge), when it is on no segment and its closed neighbourhood meets no other
+// change's, moves to the midpoint of their edge and takes the field's metric there, in the same
+// trial; a failure next to either end puts the collapse back. The dual after a removal near BWY's
+// rule 4 and 5 sites is often no triangulation; with the neighbour moved into the gap it often is.
 #include "fields/metric_field.hpp"
 #include "geometry/mesh.hpp"
 

@@ -112,21 +112,16 @@ Relocated relocate(const Mesh<double>& m, const fields::MetricField& field, bool
     std::stable_sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
       return a.first.unit != b.first.unit ? a.first.unit > b.first.unit : a.first.energy > b.first.energy;
     });
-    std::vector<char> blocked(n.size(), 0);
+    DisjointNeighbourhoods apart(n);
     std::vector<Move> batch;
-    for (const auto& [gain, move] : candidates) {
-      const auto v = static_cast<std::size_t>(move.site);
-      if (blocked[v]) continue;
-      batch.push_back(move);
-      blocked[v] = 1;
-      for (int w : n[v]) blocked[static_cast<std::size_t>(w)] = 1;
-    }
+    for (const auto& [gain, move] : candidates)
+      if (apart.admit({move.site})) batch.push_back(move);
     if (batch.empty()) break;
     std::vector<int> tried;
     for (const Move& mv : batch) tried.push_back(mv.site);
     std::size_t kept = 0;
     auto kept_batch = keep_certified(
-        batch, n, [](const Move& mv) { return mv.site; },
+        batch, n, [](const Move& mv) { return std::vector<int>{mv.site}; },
         [&](const std::vector<Move>& moves) {
           Mesh<double> moved = cur;
           for (const Move& mv : moves)
@@ -139,7 +134,7 @@ Relocated relocate(const Mesh<double>& m, const fields::MetricField& field, bool
           if (better) now = e;
           return better;
         },
-        [&](int v) { ++refused[static_cast<std::size_t>(v)]; });
+        [&](const Move& mv) { ++refused[static_cast<std::size_t>(mv.site)]; });
     if (kept_batch) {
       kept = kept_batch->batch.size(), r.moves += kept;
       r.mesh = std::move(kept_batch->trial.mesh);

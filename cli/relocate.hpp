@@ -11,8 +11,9 @@
 // the proposals' mean, half or a quarter of it, each step taken only when it lands strictly inside
 // one of v's triangles (so v stays inside Ω and off every other site); the step kept is the one
 // that makes v's own edges best: more of them unit (both lengths in [1/√2, √2]), or as many and
-// Σ (log ℓ)² lower by a tenth. A vertex with such a step is a candidate; no two moved at once are
-// neighbours, best gain first (unit edges gained, then Σ (log ℓ)² lost). The oracle then judges
+// Σ (log ℓ)² lower by a tenth. A vertex with such a step is a candidate; the vertices moved at once
+// have disjoint closed neighbourhoods (DisjointNeighbourhoods, dual_trial.hpp), best gain first
+// (unit edges gained, then Σ (log ℓ)² lost). The oracle then judges
 // the moved set (keep_certified, dual_trial.hpp): the moves next to what its check names are
 // undone and the rest tried again; a certified mesh with a smaller share of unit edges, or the
 // same share and no lower mean (log ℓ)², tries the better half. A vertex undone three times is not
