@@ -444,7 +444,7 @@ void add_refine(CLI::App& app, int& exit_code) {
               "certifies the rest (the dual of the exact D|Ω of the remaining vertices is a triangulation; --algo " + refiners_where(true) + ")");
   c->add_flag("--collapse", o->collapse,
               "--from --coarsen: remove a vertex by collapsing its shortest edge, the other end moved to the edge's midpoint in the\n"
-              "same trial, when that end is free to move (more removals are certified)");
+              "same trial, when that end is free to move (what it changes: docs/refiners.md § Coarsening)");
   c->add_flag("--relocate", o->relocate,
               "--from: then move interior vertices toward unit edges (with --coarsen, the two in turn), each move kept only\n"
               "when the oracle certifies the moved vertices (the dual of their exact D|Ω is a triangulation; --algo " + refiners_where(true) + ")");
