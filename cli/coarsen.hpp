@@ -16,9 +16,10 @@
 // the dual; a star refiner's, local uniformity, would need the stars rebuilt).
 //
 // With `--collapse` a removal is an edge collapse: the vertex's nearest neighbour (the other end of
-// its shortest edge), when it is on no segment and its closed neighbourhood meets no other
-// change's, moves to the midpoint of their edge and takes the field's metric there, in the same
-// trial; a failure next to either end puts the collapse back. The dual after a removal near BWY's
+// its shortest edge), when it is on no segment and the closed neighbourhoods of both ends meet no
+// other change's, moves to the midpoint of their edge and takes the field's metric there, in the
+// same trial (otherwise the removal is a plain one, when v's own neighbourhood is free); a
+// failure next to either end puts the collapse back. The dual after a removal near BWY's
 // rule 4 and 5 sites is often no triangulation; with the neighbour moved into the gap it often is.
 #include "fields/metric_field.hpp"
 #include "geometry/mesh.hpp"

@@ -176,8 +176,8 @@ TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
   EXPECT_GT(share(r.out), share(plain.out)) << r.out << plain.out;
 
   // --collapse: a removal may move the other end of the vertex's shortest edge to the edge's
-  // midpoint, in the same trial. Some removals are collapses, and the report's count is the
-  // output's; `dual` certifies the file; ∂Ω's vertices stay; the sites that are not the plain
+  // midpoint, in the same trial. Some removals are collapses, the report's two counts of removals
+  // agree and the output has as many sites as they say; `dual` certifies the file; ∂Ω's vertices stay; the sites that are not the plain
   // run's lie strictly inside the L-shape, each with the field's metric there (`metric --at`).
   const std::string collapsed_mesh = (d / "collapsed.json").string();
   const Outcome c = run("refine --quiet --algo bwy --coarsen --collapse --from " + freefem_l + shock_coarse + " -o " + collapsed_mesh);
@@ -185,6 +185,7 @@ TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
   EXPECT_EQ(run("dual --quiet " + collapsed_mesh).exit_code, 0);
   ASSERT_TRUE(std::regex_search(c.out, m, std::regex("coarsened: ([0-9]+) vertices removed \\(([0-9]+) by an edge collapse"))) << c.out;
   EXPECT_EQ(std::stoul(m[1]), counts(c.out)[2]);
+  EXPECT_EQ(counts(c.out)[0] + counts(c.out)[1] - counts(c.out)[2], sites_of(collapsed_mesh).size());
   EXPECT_GT(std::stoul(m[2]), 0u) << c.out;
   expect_moves_inside_with_the_fields_metric(d, plain_mesh, collapsed_mesh);
 }
