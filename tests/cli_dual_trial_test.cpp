@@ -34,6 +34,8 @@ struct Change {
   std::vector<int> sites;
 };
 
+std::vector<int> touched(const Change& c) { return c.sites; }
+
 TEST(KeepCertified, AFailureIsChargedToTheChangesNextToANamedSiteAndTheRestIsKept) {
   const auto n = path(12);
   // Changes at 1, 4 (a collapse with 5) and 9: apart, as DisjointNeighbourhoods admits them.
@@ -41,7 +43,7 @@ TEST(KeepCertified, AFailureIsChargedToTheChangesNextToANamedSiteAndTheRestIsKep
   std::vector<std::size_t> tried;
   std::vector<int> refused;
   const auto kept = keep_certified(
-      batch, n, [](const Change& c) { return c.sites; },
+      batch, n, touched,
       [&](const std::vector<Change>& b) {
         tried.push_back(b.size());
         Trial t;
@@ -64,7 +66,7 @@ TEST(KeepCertified, AFailureNamingNoChangesNeighbourhoodOrAWorseMeshTriesTheEarl
   std::vector<std::size_t> tried;
   int refusals = 0;
   const auto kept = keep_certified(
-      batch, n, [](const Change& c) { return c.sites; },
+      batch, n, touched,
       [&](const std::vector<Change>& b) {
         tried.push_back(b.size());
         Trial t;
@@ -86,7 +88,7 @@ TEST(KeepCertified, GivesUpAfterEightTrials) {
   std::vector<Change> batch(300, Change{{0}});
   int trials = 0;
   const auto kept = keep_certified(
-      batch, n, [](const Change& c) { return c.sites; },
+      batch, n, touched,
       [&](const std::vector<Change>&) {
         ++trials;
         return Trial{};  // never certified, nothing named

@@ -84,6 +84,13 @@ std::array<std::size_t, 3> counts(const std::string& report) {
   return {std::stoul(m[1]), std::stoul(m[2]), std::stoul(m[3])};
 }
 
+// The certifier's unit-edge share after the run, from the report's "after:" line (in %).
+double unit_share_after(const std::string& report) {
+  std::smatch s;
+  EXPECT_TRUE(std::regex_search(report, s, std::regex("after: .*unit edges ([0-9.]+)%"))) << report;
+  return s.size() > 1 ? std::stod(s[1]) : 0.0;
+}
+
 // FreeFem's coarse L-shape refined (`before`) and then changed by a post-pass (`after`): the sites
 // of `after` that are not `before`'s lie strictly inside the L-shape (0 < x, y < 1, not in
 // [1/2, 1]²), and there are some; every vertex of `before` on ∂Ω (BWY's boundary splits too) is in
@@ -165,20 +172,16 @@ TEST(RefineFrom, CoarsenRemovesInteriorVerticesOnlyAndKeepsTheCertificate) {
     }
   }
   // Its unit share is the certifier's: no lower than without --coarsen.
-  const auto share = [](const std::string& report) {
-    std::smatch s;
-    EXPECT_TRUE(std::regex_search(report, s, std::regex("after: .*unit edges ([0-9.]+)%"))) << report;
-    return s.size() > 1 ? std::stod(s[1]) : 0.0;
-  };
   const std::string plain_mesh = (d / "plain.json").string();
   const Outcome plain = run("refine --quiet --algo bwy --from " + freefem_l + shock_coarse + " -o " + plain_mesh);
   ASSERT_EQ(plain.exit_code, 0) << plain.out << plain.err;
-  EXPECT_GT(share(r.out), share(plain.out)) << r.out << plain.out;
+  EXPECT_GT(unit_share_after(r.out), unit_share_after(plain.out)) << r.out << plain.out;
 
   // --collapse: a removal may move the other end of the vertex's shortest edge to the edge's
   // midpoint, in the same trial. Some removals are collapses, the report's two counts of removals
-  // agree and the output has as many sites as they say; `dual` certifies the file; ∂Ω's vertices stay; the sites that are not the plain
-  // run's lie strictly inside the L-shape, each with the field's metric there (`metric --at`).
+  // agree and the output has as many sites as they say; `dual` certifies the file; ∂Ω's vertices
+  // stay; the sites that are not the plain run's lie strictly inside the L-shape, each with the
+  // field's metric there (`metric --at`).
   const std::string collapsed_mesh = (d / "collapsed.json").string();
   const Outcome c = run("refine --quiet --algo bwy --coarsen --collapse --from " + freefem_l + shock_coarse + " -o " + collapsed_mesh);
   ASSERT_EQ(c.exit_code, 0) << c.out << c.err;
@@ -210,14 +213,9 @@ TEST(RefineFrom, RelocateMovesInteriorVerticesOnlyAndKeepsTheCertificate) {
   // The same number of sites as the run it moved.
   EXPECT_EQ(sites_of(moved_mesh).size(), sites_of(plain_mesh).size());
   expect_moves_inside_with_the_fields_metric(d, plain_mesh, moved_mesh);
-  const auto share = [](const std::string& report) {
-    std::smatch s;
-    EXPECT_TRUE(std::regex_search(report, s, std::regex("after: .*unit edges ([0-9.]+)%"))) << report;
-    return s.size() > 1 ? std::stod(s[1]) : 0.0;
-  };
   // A round keeps a batch only when the share does not drop; that it rises here (the run is
   // deterministic) is measured: a relocation that never kept a move, or kept the wrong ones, fails.
-  EXPECT_GT(share(r.out), share(plain.out)) << r.out << plain.out;
+  EXPECT_GT(unit_share_after(r.out), unit_share_after(plain.out)) << r.out << plain.out;
 }
 
 TEST(RefineFrom, OffCentresMoveBwysInsertionsAndKeepTheCertificate) {
