@@ -60,6 +60,27 @@ TEST(KeepCertified, AFailureIsChargedToTheChangesNextToANamedSiteAndTheRestIsKep
   EXPECT_EQ(kept->batch[1].sites, std::vector<int>{9});
 }
 
+TEST(KeepCertified, AFailureNamingAChangesOwnSiteIsChargedToThatChangeAlone) {
+  const auto n = path(12);
+  const std::vector<Change> batch{{{1}}, {{4, 5}}, {{9}}};
+  std::vector<int> refused;
+  for (const int named : {1, 5, 9}) {  // v of a removal, a collapse's moved w, and a lone site at the path's far end
+    refused.clear();
+    const auto kept = keep_certified(
+        batch, n, touched,
+        [&](const std::vector<Change>& b) {
+          Trial t;
+          t.certified = b.size() < 3;
+          if (!t.certified) t.near_failures = {named};
+          return t;
+        },
+        [](const Trial&) { return true; }, [&](const Change& c) { refused.push_back(c.sites[0]); });
+    ASSERT_TRUE(kept);
+    EXPECT_EQ(kept->batch.size(), 2u) << named;
+    EXPECT_EQ(refused, std::vector<int>{named == 5 ? 4 : named}) << named;
+  }
+}
+
 TEST(KeepCertified, AFailureNamingNoChangesNeighbourhoodOrAWorseMeshTriesTheEarlierHalfAndRefusesNothing) {
   const auto n = path(20);
   const std::vector<Change> batch{{{1}}, {{4}}, {{7}}, {{10}}, {{13}}, {{16}}};
